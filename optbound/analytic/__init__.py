@@ -1,0 +1,1 @@
+"""optbound.analytic (in progress)."""

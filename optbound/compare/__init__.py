@@ -1,0 +1,1 @@
+"""optbound.compare (in progress)."""

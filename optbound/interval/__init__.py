@@ -1,0 +1,1 @@
+"""optbound.interval (in progress)."""

@@ -1,0 +1,1 @@
+"""optbound.optimal (in progress)."""

@@ -1,0 +1,1 @@
+"""optbound.report (in progress)."""

@@ -1,0 +1,12 @@
+"""Set representations: the common interface and the concrete types.
+
+``Ellipsoid``, ``Strip``, ``Halfspace`` and ``Box`` validate their input on construction and
+are immutable afterwards, so a set that exists is always a valid set.
+"""
+
+from optbound.sets.base import ConvexSet
+from optbound.sets.box import Box
+from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.strip import Halfspace, Strip
+
+__all__ = ["Box", "ConvexSet", "Ellipsoid", "Halfspace", "Strip"]

@@ -1,0 +1,104 @@
+"""Input validation shared by the set types.
+
+Every failure is a ``ValueError`` that names the offending argument, so a user who passes a
+NaN or a non-PD matrix learns which argument was wrong instead of getting a NaN bound later.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+# Relative asymmetry below which a matrix is treated as symmetric up to rounding.
+SYMMETRY_RTOL = 1e-9
+
+
+def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
+    """Return ``value`` as a finite float64 1-D array (a scalar becomes length 1)."""
+    arr = np.atleast_1d(np.asarray(value, dtype=float))
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D vector, got shape {arr.shape}")
+    if arr.size == 0:
+        raise ValueError(f"{name} must not be empty")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite, got {arr}")
+    if dim is not None and arr.shape[0] != dim:
+        raise ValueError(f"{name} must have length {dim}, got {arr.shape[0]}")
+    return arr
+
+
+def finite_scalar(name: str, value) -> float:
+    """Return ``value`` as a finite Python float."""
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
+    if not np.isfinite(arr):
+        raise ValueError(f"{name} must be finite, got {float(arr)}")
+    return float(arr)
+
+
+def finite_matrix(
+    name: str, value, shape: tuple[int | None, int | None] = (None, None)
+) -> np.ndarray:
+    """Return ``value`` as a finite float64 2-D array, optionally of a given shape."""
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim != 2:
+        raise ValueError(f"{name} must be a 2-D matrix, got shape {arr.shape}")
+    for axis, want in enumerate(shape):
+        if want is not None and arr.shape[axis] != want:
+            raise ValueError(f"{name} must have shape {shape}, got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    return arr
+
+
+def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Validate a symmetric positive-definite matrix; return it and its Cholesky factor.
+
+    Asymmetry at rounding level (relative ``SYMMETRY_RTOL``) is removed by symmetrizing;
+    larger asymmetry is an error, because it signals a wrong matrix rather than round-off.
+    """
+    arr = finite_matrix(name, value, (dim, dim))
+    if arr.shape[0] != arr.shape[1]:
+        raise ValueError(f"{name} must be square, got shape {arr.shape}")
+    scale = np.max(np.abs(arr))
+    if np.max(np.abs(arr - arr.T)) > SYMMETRY_RTOL * max(scale, np.finfo(float).tiny):
+        raise ValueError(f"{name} must be symmetric")
+    arr = 0.5 * (arr + arr.T)
+    try:
+        chol = np.linalg.cholesky(arr)
+    except np.linalg.LinAlgError:
+        raise ValueError(f"{name} must be positive definite") from None
+    if not np.all(np.isfinite(chol)) or np.min(np.diag(chol)) <= 0.0:
+        raise ValueError(f"{name} must be positive definite")
+    return arr, chol
+
+
+def points(name: str, value, dim: int) -> tuple[np.ndarray, bool]:
+    """Return ``value`` as an (m, dim) array and whether a single point (dim,) was given."""
+    arr = np.asarray(value, dtype=float)
+    single = arr.ndim == 1
+    arr = np.atleast_2d(arr)
+    if arr.ndim != 2 or arr.shape[1] != dim:
+        raise ValueError(f"{name} must have shape (m, {dim}) or ({dim},), got {np.shape(value)}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    return arr, single
+
+
+def dims_index(name: str, dims, dim: int) -> np.ndarray:
+    """Validate a list of distinct coordinate indices into a ``dim``-dimensional space."""
+    idx = np.atleast_1d(np.asarray(dims))
+    if idx.ndim != 1 or idx.size == 0 or not np.issubdtype(idx.dtype, np.integer):
+        raise ValueError(f"{name} must be a non-empty sequence of integer coordinates, got {dims}")
+    if np.any(idx < 0) or np.any(idx >= dim) or len(set(idx.tolist())) != idx.size:
+        raise ValueError(f"{name} must be distinct coordinates in [0, {dim}), got {dims}")
+    return idx
+
+
+def rng_of(rng) -> np.random.Generator:
+    """Accept a Generator or a seed; refuse the implicit global state (results must be seeded)."""
+    if isinstance(rng, np.random.Generator):
+        return rng
+    if rng is None:
+        raise ValueError("rng must be a numpy Generator or an integer seed (seeded randomness)")
+    return np.random.default_rng(rng)

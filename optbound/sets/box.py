@@ -1,0 +1,105 @@
+"""Axis-aligned boxes ``{x : lo <= x <= hi}``; bounds may be infinite (e.g. SIVIA's Y)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from optbound.sets import _validate as v
+from optbound.sets.base import ConvexSet
+
+
+class Box(ConvexSet):
+    """Axis-aligned box with lower corner ``lo`` and upper corner ``hi`` (``lo <= hi``).
+
+    Infinite bounds are allowed (an unbounded box); NaN is not.
+    """
+
+    def __init__(self, lo, hi):
+        lo = np.atleast_1d(np.asarray(lo, dtype=float))
+        hi = np.atleast_1d(np.asarray(hi, dtype=float))
+        for name, arr in (("lo", lo), ("hi", hi)):
+            if arr.ndim != 1 or arr.size == 0:
+                raise ValueError(f"{name} must be a non-empty 1-D vector, got shape {arr.shape}")
+            if np.any(np.isnan(arr)):
+                raise ValueError(f"{name} must not contain NaN")
+        if lo.shape != hi.shape:
+            raise ValueError(f"lo and hi must have the same length, got {lo.shape} and {hi.shape}")
+        if np.any(lo > hi):
+            raise ValueError(f"lo must be <= hi componentwise, got lo={lo}, hi={hi}")
+        if np.any(lo == np.inf) or np.any(hi == -np.inf):
+            raise ValueError("lo must not be +inf and hi must not be -inf")
+        self._lo, self._hi = lo, hi
+        lo.setflags(write=False)
+        hi.setflags(write=False)
+
+    @classmethod
+    def from_array(cls, rows) -> Box:
+        """Build from an (n, 2) array of ``[lo, hi]`` rows."""
+        arr = np.asarray(rows, dtype=float)
+        if arr.ndim != 2 or arr.shape[1] != 2:
+            raise ValueError(f"rows must have shape (n, 2), got {arr.shape}")
+        return cls(arr[:, 0], arr[:, 1])
+
+    @property
+    def lo(self) -> np.ndarray:
+        return self._lo
+
+    @property
+    def hi(self) -> np.ndarray:
+        return self._hi
+
+    @property
+    def dim(self) -> int:
+        return self._lo.shape[0]
+
+    @property
+    def is_bounded(self) -> bool:
+        return bool(np.all(np.isfinite(self._lo)) and np.all(np.isfinite(self._hi)))
+
+    @property
+    def center(self) -> np.ndarray:
+        return 0.5 * (self._lo + self._hi)
+
+    @property
+    def widths(self) -> np.ndarray:
+        return self._hi - self._lo
+
+    def as_array(self) -> np.ndarray:
+        """The (n, 2) array of ``[lo, hi]`` rows."""
+        return np.column_stack([self._lo, self._hi])
+
+    def __repr__(self) -> str:
+        return f"Box(lo={self._lo.tolist()}, hi={self._hi.tolist()})"
+
+    def volume(self) -> float:
+        return float(np.prod(self.widths))
+
+    def log_volume(self) -> float:
+        with np.errstate(divide="ignore"):
+            return float(np.sum(np.log(self.widths)))
+
+    def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        pts, single = v.points("X", X, self.dim)
+        slack = tol * np.maximum(1.0, np.where(np.isfinite(self.widths), self.widths, 1.0))
+        inside = np.all((pts >= self._lo - slack) & (pts <= self._hi + slack), axis=1)
+        return bool(inside[0]) if single else inside
+
+    def support(self, d) -> np.ndarray | float:
+        dirs, single = v.points("d", d, self.dim)
+        # Pick the corner coordinate that maximises each term; 0 * inf counts as 0.
+        corner = np.where(dirs >= 0, self._hi, self._lo)
+        with np.errstate(invalid="ignore"):
+            terms = np.where(dirs == 0, 0.0, dirs * corner)
+        h = terms.sum(axis=1)
+        return float(h[0]) if single else h
+
+    def project(self, dims) -> Box:
+        idx = v.dims_index("dims", dims, self.dim)
+        return Box(self._lo[idx], self._hi[idx])
+
+    def sample(self, m: int, rng) -> np.ndarray:
+        """``m`` points uniform in the box (bounded boxes only)."""
+        if not self.is_bounded:
+            raise ValueError("cannot sample an unbounded box")
+        gen = v.rng_of(rng)
+        return self._lo + gen.random((m, self.dim)) * self.widths

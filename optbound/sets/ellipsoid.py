@@ -1,0 +1,161 @@
+"""Ellipsoids ``{x : (x - c)^T Q^{-1} (x - c) <= 1}`` with symmetric positive-definite Q.
+
+The convention matches [HS96, eq. (7)] and [BH, eq. (4)]: ``shape`` is the matrix C (not its
+inverse), so semi-axes are the square roots of its eigenvalues and the support function is
+``c^T d + sqrt(d^T C d)``.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+from math import lgamma, log, pi
+
+import numpy as np
+from scipy.linalg import solve_triangular
+
+from optbound.sets import _validate as v
+from optbound.sets.base import ConvexSet
+from optbound.sets.box import Box
+
+
+class Ellipsoid(ConvexSet):
+    """Ellipsoid with centre ``center`` (n,) and shape matrix ``shape`` (n, n), SPD.
+
+    Parameters
+    ----------
+    center : array_like, shape (n,)
+        Centre c.
+    shape : array_like, shape (n, n)
+        Symmetric positive-definite shape matrix C. Asymmetry at rounding level is removed.
+
+    Raises
+    ------
+    ValueError
+        If either argument is non-finite, the dimensions disagree, or ``shape`` is not
+        symmetric positive definite.
+    """
+
+    def __init__(self, center, shape):
+        self._center = v.finite_vector("center", center)
+        self._shape, self._chol = v.spd_matrix("shape", shape, self._center.shape[0])
+        for arr in (self._center, self._shape, self._chol):
+            arr.setflags(write=False)
+
+    # ----------------------------------------------------------------- basic attributes
+    @property
+    def center(self) -> np.ndarray:
+        return self._center
+
+    @property
+    def shape(self) -> np.ndarray:
+        return self._shape
+
+    @property
+    def chol(self) -> np.ndarray:
+        """Lower Cholesky factor L with ``shape = L L^T`` (maps the unit ball onto the set)."""
+        return self._chol
+
+    @property
+    def dim(self) -> int:
+        return self._center.shape[0]
+
+    @cached_property
+    def shape_inv(self) -> np.ndarray:
+        """Inverse shape matrix ``C^{-1}`` (the quadratic form's matrix)."""
+        eye = np.eye(self.dim)
+        linv = solve_triangular(self._chol, eye, lower=True)
+        return linv.T @ linv
+
+    def __repr__(self) -> str:
+        return f"Ellipsoid(center={self._center.tolist()}, shape={self._shape.tolist()})"
+
+    # ----------------------------------------------------------------------- size
+    def log_volume(self) -> float:
+        """Natural log of the n-dimensional volume (stable for tiny or huge ellipsoids)."""
+        n = self.dim
+        log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
+        return log_unit_ball + float(np.sum(np.log(np.diag(self._chol))))
+
+    def volume(self) -> float:
+        """n-dimensional volume ``vol(unit ball) * sqrt(det C)``."""
+        return float(np.exp(self.log_volume()))
+
+    def semi_axes(self) -> np.ndarray:
+        """Semi-axis lengths in ascending order (square roots of the eigenvalues of C)."""
+        return np.sqrt(np.linalg.eigvalsh(self._shape))
+
+    # ----------------------------------------------------------------- membership
+    def level(self, X) -> np.ndarray | float:
+        """Quadratic form ``(x - c)^T C^{-1} (x - c)`` per row of X (<= 1 means inside)."""
+        pts, single = v.points("X", X, self.dim)
+        w = solve_triangular(self._chol, (pts - self._center).T, lower=True)
+        q = np.einsum("ij,ij->j", w, w)
+        return float(q[0]) if single else q
+
+    def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        q = self.level(X)
+        inside = np.asarray(q) <= 1.0 + tol
+        return bool(inside) if np.ndim(q) == 0 else inside
+
+    def support(self, d) -> np.ndarray | float:
+        dirs, single = v.points("d", d, self.dim)
+        h = dirs @ self._center + np.sqrt(np.einsum("ij,jk,ik->i", dirs, self._shape, dirs))
+        return float(h[0]) if single else h
+
+    # ---------------------------------------------------------------- operations
+    def project(self, dims) -> Ellipsoid:
+        """Orthogonal projection onto the coordinates ``dims`` (a sub-block of C)."""
+        idx = v.dims_index("dims", dims, self.dim)
+        return Ellipsoid(self._center[idx], self._shape[np.ix_(idx, idx)])
+
+    def affine_map(self, A, t=None) -> Ellipsoid:
+        """Image ``{A x + t}``; A must have full row rank so that the image is an ellipsoid."""
+        A = v.finite_matrix("A", A, (None, self.dim))
+        t = np.zeros(A.shape[0]) if t is None else v.finite_vector("t", t, A.shape[0])
+        shape = A @ self._shape @ A.T
+        try:
+            return Ellipsoid(A @ self._center + t, shape)
+        except ValueError:
+            raise ValueError(
+                "A must have full row rank: the image is a degenerate ellipsoid"
+            ) from None
+
+    def scaled(self, factor: float) -> Ellipsoid:
+        """Same centre, every semi-axis multiplied by ``factor`` > 0."""
+        factor = v.finite_scalar("factor", factor)
+        if factor <= 0:
+            raise ValueError(f"factor must be positive, got {factor}")
+        return Ellipsoid(self._center, self._shape * factor**2)
+
+    def bounding_box(self) -> Box:
+        """Tightest axis-aligned box: half-widths ``sqrt(diag C)``."""
+        half = np.sqrt(np.diag(self._shape))
+        return Box(self._center - half, self._center + half)
+
+    # ------------------------------------------------------------------- points
+    def sample(self, m: int, rng) -> np.ndarray:
+        """``m`` points uniformly distributed in the ellipsoid, shape (m, n).
+
+        Uniform in the unit ball (Gaussian direction, radius ``U^{1/n}``), mapped by L.
+        """
+        gen = v.rng_of(rng)
+        n = self.dim
+        g = gen.standard_normal((m, n))
+        g /= np.linalg.norm(g, axis=1, keepdims=True)
+        r = gen.random(m) ** (1.0 / n)
+        return self._center + (g * r[:, None]) @ self._chol.T
+
+    def sample_boundary(self, m: int, rng) -> np.ndarray:
+        """``m`` points on the boundary surface (uniform on the unit sphere, then mapped)."""
+        gen = v.rng_of(rng)
+        g = gen.standard_normal((m, self.dim))
+        g /= np.linalg.norm(g, axis=1, keepdims=True)
+        return self._center + g @ self._chol.T
+
+    def boundary(self, m: int = 200) -> np.ndarray:
+        """``m`` points tracing the boundary of a 2-D ellipse in order (for plotting)."""
+        if self.dim != 2:
+            raise ValueError(f"boundary() is for 2-D ellipsoids, this one has dim {self.dim}")
+        t = np.linspace(0.0, 2.0 * np.pi, m)
+        circle = np.column_stack([np.cos(t), np.sin(t)])
+        return self._center + circle @ self._chol.T
