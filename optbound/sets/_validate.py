@@ -10,6 +10,8 @@ import numpy as np
 
 # Relative asymmetry below which a matrix is treated as symmetric up to rounding.
 SYMMETRY_RTOL = 1e-9
+# Smallest Cholesky pivot, relative to the largest diagonal entry, still counted as definite.
+SINGULAR_RTOL = 1e-13
 
 
 def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
@@ -68,8 +70,10 @@ def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np
         chol = np.linalg.cholesky(arr)
     except np.linalg.LinAlgError:
         raise ValueError(f"{name} must be positive definite") from None
-    if not np.all(np.isfinite(chol)) or np.min(np.diag(chol)) <= 0.0:
-        raise ValueError(f"{name} must be positive definite")
+    # A pivot at rounding level of the largest diagonal entry means singular, not PD.
+    pivots = np.diag(chol) ** 2
+    if not np.all(np.isfinite(chol)) or np.min(pivots) <= SINGULAR_RTOL * np.max(np.diag(arr)):
+        raise ValueError(f"{name} must be positive definite (it is singular or nearly so)")
     return arr, chol
 
 
