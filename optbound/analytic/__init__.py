@@ -1,1 +1,36 @@
-"""optbound.analytic (in progress)."""
+"""Closed-form ellipsoid calculus [HS96], [BH]: Minkowski sums, strip fusion, bounding updates.
+
+Every function returns a guaranteed outer bound: each member of the families used (Schweppe's
+kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-ellipsoid filter
+[BH, eq. (7)]) contains the true set; the criteria only choose the member. Batched variants take
+a leading batch axis and are fully vectorized.
+"""
+
+from optbound.analytic.bounding_update import BoundingUpdate, bounding_update
+from optbound.analytic.minkowski import (
+    MinkowskiBatch,
+    MinkowskiResult,
+    minkowski_sum,
+    minkowski_sum_batch,
+)
+from optbound.analytic.strip_fusion import (
+    CASES,
+    StripFusion,
+    StripFusionBatch,
+    intersect_strip,
+    intersect_strip_batch,
+)
+
+__all__ = [
+    "CASES",
+    "BoundingUpdate",
+    "MinkowskiBatch",
+    "MinkowskiResult",
+    "StripFusion",
+    "StripFusionBatch",
+    "bounding_update",
+    "intersect_strip",
+    "intersect_strip_batch",
+    "minkowski_sum",
+    "minkowski_sum_batch",
+]
