@@ -1,0 +1,75 @@
+"""Relaxed intersection [KJWM00]: one outlier among range measurements."""
+
+import numpy as np
+import pytest
+
+from optbound import interval as iv
+
+LANDMARKS = np.array([[0.0, 0.0], [10.0, 0.0], [0.0, 10.0], [10.0, 10.0], [5.0, -4.0]])
+TRUTH = np.array([3.0, 4.0])
+REL_ERR = 0.02  # [d (1 - a), d (1 + a)] intervals as in KJWM00 Sect. 2.1
+X0 = [[-5.0, 15.0], [-5.0, 15.0]]
+
+
+def _range_tests(ranges):
+    tests = []
+    for (lx, ly), d in zip(LANDMARKS, ranges, strict=True):
+        lo, hi = (d * (1 - REL_ERR)) ** 2, (d * (1 + REL_ERR)) ** 2
+        tests.append(
+            iv.constraint(lambda x, y, lx=lx, ly=ly: (x - lx) ** 2 + (y - ly) ** 2, [[lo, hi]])
+        )
+    return tests
+
+
+def _measurements():
+    ranges = np.linalg.norm(LANDMARKS - TRUTH, axis=1)
+    ranges[2] *= 1.5  # sensor 2 is an outlier (e.g. a reflection)
+    return ranges
+
+
+def _covers(paving, point):
+    boxes = paving.outer()
+    return bool(np.any(np.all((boxes[:, :, 0] <= point) & (point <= boxes[:, :, 1]), axis=1)))
+
+
+def test_one_outlier_breaks_the_intersection_but_not_the_relaxed_one():
+    tests = _range_tests(_measurements())
+    plain = iv.pave(iv.relaxed_test(tests, 0), X0, 0.05)
+    assert plain.is_empty or not _covers(plain, TRUTH)
+    relaxed = iv.pave(iv.relaxed_test(tests, 1), X0, 0.05)
+    assert _covers(relaxed, TRUTH)
+    # The q = 1 set is small: the four consistent ranges pin the position down.
+    h = relaxed.components()[0].hull()
+    assert h.contains(TRUTH) and np.all(h.widths < 1.0)
+
+
+def test_min_outliers_raises_q_until_non_empty():
+    q, paving = iv.min_outliers(_range_tests(_measurements()), X0, 0.05)
+    assert q == 1 and _covers(paving, TRUTH)
+    q0, _ = iv.min_outliers(_range_tests(np.linalg.norm(LANDMARKS - TRUTH, axis=1)), X0, 0.05)
+    assert q0 == 0
+
+
+def test_relaxed_tri_logic():
+    T, U, F = iv.Tri.TRUE, iv.Tri.UNKNOWN, iv.Tri.FALSE
+    values = np.array([[T, T, F, F], [T, U, F, U], [F, F, U, T]], dtype=np.int8)
+    tests = [lambda row=row: row for row in values]
+    assert iv.relaxed_test(tests, 0)().tolist() == [F, F, F, F]
+    assert iv.relaxed_test(tests, 1)().tolist() == [T, U, F, U]
+    assert iv.relaxed_test(tests, 2)().tolist() == [T, T, U, T]
+    assert iv.relaxed_test(tests, 3)().tolist() == [T, T, T, T]
+
+
+def test_bad_relaxed_input():
+    tests = _range_tests(_measurements())
+    with pytest.raises(ValueError, match="q must be"):
+        iv.relaxed_test(tests, 6)
+    with pytest.raises(ValueError, match="q must be"):
+        iv.relaxed_test(tests, 1.5)
+    with pytest.raises(ValueError, match="non-empty sequence"):
+        iv.relaxed_test([], 0)
+    with pytest.raises(ValueError, match="q_max"):
+        iv.min_outliers(tests, X0, 0.1, q_max=-1)
+    far = [iv.constraint(lambda x, y: x, [[100.0, 101.0]])] * 2
+    with pytest.raises(ValueError, match="empty for every q"):
+        iv.min_outliers(far, X0, 0.5, q_max=1)
