@@ -5,8 +5,16 @@ Analytic ellipsoid updates (``optbound.analytic``), certified SDP references
 the same instances (``optbound.compare``). Importing this package does not import cvxpy.
 """
 
-from optbound.sets import Box, ConvexSet, Ellipsoid, Halfspace, Strip
+from optbound.sets import Box, ConvexSet, Ellipsoid, Halfspace, QuadraticSet, Strip
 
 __version__ = "0.1.0"
 
-__all__ = ["Box", "ConvexSet", "Ellipsoid", "Halfspace", "Strip", "__version__"]
+__all__ = [
+    "Box",
+    "ConvexSet",
+    "Ellipsoid",
+    "Halfspace",
+    "QuadraticSet",
+    "Strip",
+    "__version__",
+]

@@ -1,1 +1,26 @@
-"""optbound.optimal (in progress)."""
+"""Certified SDP reference solvers (cvxpy + Clarabel): the best ellipsoids that exist.
+
+- ``outer_ellipsoid``: minimum-volume / -trace / -projection ellipsoid containing an
+  intersection of ellipsoids, strips, half-spaces, boxes and quadratic sets (S-procedure);
+- ``minkowski_outer``: the same for a Minkowski sum of ellipsoids;
+- ``mvee``: minimum-volume ellipsoid enclosing a point set.
+
+Every answer is certified in float64 and inflated if needed (``certify``), and comes as an
+``OuterResult``. This is the only subpackage that imports cvxpy.
+"""
+
+from optbound.optimal.enclosing import mvee
+from optbound.optimal.errors import CertificationError, EmptyIntersectionError, SolverError
+from optbound.optimal.intersection import outer_ellipsoid
+from optbound.optimal.minkowski import minkowski_outer
+from optbound.optimal.result import OuterResult
+
+__all__ = [
+    "CertificationError",
+    "EmptyIntersectionError",
+    "OuterResult",
+    "SolverError",
+    "minkowski_outer",
+    "mvee",
+    "outer_ellipsoid",
+]

@@ -7,6 +7,7 @@ are immutable afterwards, so a set that exists is always a valid set.
 from optbound.sets.base import ConvexSet
 from optbound.sets.box import Box
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.quadratic import QuadraticSet
 from optbound.sets.strip import Halfspace, Strip
 
-__all__ = ["Box", "ConvexSet", "Ellipsoid", "Halfspace", "Strip"]
+__all__ = ["Box", "ConvexSet", "Ellipsoid", "Halfspace", "QuadraticSet", "Strip"]

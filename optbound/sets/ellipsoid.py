@@ -60,11 +60,14 @@ class Ellipsoid(ConvexSet):
         return self._center.shape[0]
 
     @cached_property
+    def chol_inv(self) -> np.ndarray:
+        """``L^{-1}``: maps the set onto the unit ball (computed once, then reused)."""
+        return solve_triangular(self._chol, np.eye(self.dim), lower=True)
+
+    @cached_property
     def shape_inv(self) -> np.ndarray:
         """Inverse shape matrix ``C^{-1}`` (the quadratic form's matrix)."""
-        eye = np.eye(self.dim)
-        linv = solve_triangular(self._chol, eye, lower=True)
-        return linv.T @ linv
+        return self.chol_inv.T @ self.chol_inv
 
     def __repr__(self) -> str:
         return f"Ellipsoid(center={self._center.tolist()}, shape={self._shape.tolist()})"
@@ -88,7 +91,9 @@ class Ellipsoid(ConvexSet):
     def level(self, X) -> np.ndarray | float:
         """Quadratic form ``(x - c)^T C^{-1} (x - c)`` per row of X (<= 1 means inside)."""
         pts, single = v.points("X", X, self.dim)
-        w = solve_triangular(self._chol, (pts - self._center).T, lower=True)
+        # One cached triangular inverse, then a plain product: a LAPACK call per query costs
+        # more than the arithmetic for the small dimensions used here.
+        w = self.chol_inv @ (pts - self._center).T
         q = np.einsum("ij,ij->j", w, w)
         return float(q[0]) if single else q
 

@@ -1,0 +1,18 @@
+"""Accept an ``Ellipsoid`` or any result object carrying one in ``.ellipsoid``."""
+
+from __future__ import annotations
+
+from optbound.sets import Ellipsoid
+
+
+def as_ellipsoid(name: str, bound) -> Ellipsoid:
+    """The ellipsoid of ``bound`` (an Ellipsoid, OuterResult, analytic result ...)."""
+    ellipsoid = getattr(bound, "ellipsoid", bound)
+    if not isinstance(ellipsoid, Ellipsoid):
+        raise ValueError(f"{name} must be an Ellipsoid or carry one in .ellipsoid, got {bound!r}")
+    return ellipsoid
+
+
+def same_dim(A: Ellipsoid, B: Ellipsoid) -> None:
+    if A.dim != B.dim:
+        raise ValueError(f"the two bounds have different dimensions, {A.dim} and {B.dim}")

@@ -1,0 +1,25 @@
+"""Small cvxpy helpers shared by the problem templates."""
+
+from __future__ import annotations
+
+import cvxpy as cp
+
+
+def psd(expr: cp.Expression) -> cp.Constraint:
+    """``expr >= 0`` in the PSD order for an expression that is symmetric by construction.
+
+    Symmetrizing explicitly tells cvxpy so, instead of letting it add equality constraints.
+    """
+    return 0.5 * (expr + expr.T) >> 0
+
+
+def column(vec: cp.Expression) -> cp.Expression:
+    """A length-n expression as an (n, 1) column, for ``cp.bmat``."""
+    return cp.reshape(vec, (vec.shape[0], 1), order="F")
+
+
+def require_dpp(problem: cp.Problem) -> cp.Problem:
+    """Refuse a template that cvxpy cannot re-solve by only updating parameters."""
+    if not problem.is_dpp():
+        raise RuntimeError("internal error: problem template is not DPP-compliant")
+    return problem

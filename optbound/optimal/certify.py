@@ -1,0 +1,138 @@
+"""Certification of SDP answers in float64, with the smallest inflation that makes them hold.
+
+A solver returns numbers that satisfy its constraints only up to its tolerance (~1e-8), so an
+outer ellipsoid straight from the solver may miss the set by that much. Every answer is
+re-checked here from the returned ellipsoid and multipliers alone:
+
+- S-procedure answers: the certificate is a matrix inequality ``P(E) / alpha^2 <= G`` where
+  ``P(E)`` is positive semidefinite and built from the ellipsoid, and ``G`` from the
+  multipliers. It holds when the largest eigenvalue of ``P / alpha^2 - G`` is below ``-delta``,
+  ``delta`` a bound on the floating-point error of forming and diagonalising the matrix (plus
+  any error the caller made in forming the inputs, ``uncertainty``). The smallest ``alpha`` is
+  a generalized eigenvalue, ``alpha^2 = lambda_max(P, G - delta I)`` (see ``certify_lmi`` for
+  the multiplier scaling that keeps ``G`` definite). Callers pass the matrices in a
+  well-conditioned frame (a congruence ``T^T (.) T`` with T invertible preserves the sign of a
+  matrix inequality), so that ``delta`` is small relative to every eigenvalue.
+- point sets: each point's level ``(p - c)^T C^{-1} (p - c)`` must be below 1 with margin.
+
+Scaling an ellipsoid by ``alpha`` about its centre divides ``C^{-1}`` by ``alpha^2``, which is
+why ``alpha`` enters as ``1 / alpha^2``. The inflated ellipsoid is always re-checked from its own
+matrices; if that fails a few times, ``CertificationError`` is raised.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from optbound.optimal.errors import CertificationError
+from optbound.sets import Ellipsoid
+
+EPS = np.finfo(float).eps
+_RETRIES = 8
+_BETAS = (1.0, *(1.0 - 10.0**-j for j in range(14, 0, -1)))
+
+
+def rounding_bound(size: int, magnitude: float) -> float:
+    """Error bound ``16 size eps magnitude`` for forming or diagonalising a matrix."""
+    return 16.0 * size * EPS * magnitude
+
+
+def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
+    return float(np.linalg.eigvalsh(P - G)[-1])
+
+
+def certify_lmi(
+    ellipsoid: Ellipsoid,
+    form: Callable[[Ellipsoid], np.ndarray],
+    fixed: np.ndarray,
+    terms: Sequence[tuple[float, np.ndarray]],
+    uncertainty: float = 0.0,
+) -> tuple[Ellipsoid, float, float]:
+    """Certify ``form(E) <= G0 + beta sum_j tau_j M_j``; inflate E by the smallest factor.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        The solver's candidate.
+    form : callable
+        ``E -> P(E)``, positive semidefinite, proportional to ``C^{-1}``.
+    fixed : ndarray
+        ``G0``, the part of the right-hand side that does not carry multipliers.
+    terms : sequence of (tau_j, M_j)
+        The multiplier terms (``tau_j >= 0``).
+    uncertainty : float
+        Bound on the spectral-norm error of the supplied ``M_j`` terms (weighted by ``tau_j``),
+        added to the margin.
+
+    Returns
+    -------
+    (Ellipsoid, float, float)
+        The certified ellipsoid, the inflation ``alpha >= 1`` applied to its semi-axes, and the
+        factor ``beta`` in (0, 1] by which the multipliers must be scaled for the certificate.
+
+    Notes
+    -----
+    At an S-procedure optimum ``G0 + S`` is typically singular exactly where ``P`` is (the
+    lifted centre ``[c; 1]``), and no inflation gives a strict margin there. Scaling the
+    multipliers by ``beta < 1`` restores it, so ``alpha`` is minimised over
+    ``beta in {1} U {1 - 10^-j : j = 1..14}``; for each, the smallest ``alpha`` is the
+    generalized eigenvalue ``lambda_max(P, G0 + beta S - delta I)``.
+
+    Raises
+    ------
+    CertificationError
+        If no ``beta`` makes the right-hand side positive definite with margin, or the
+        inflated ellipsoid still fails the re-check.
+    """
+    S = sum(w * M for w, M in terms)
+    size = fixed.shape[0]
+    g_scale = float(np.linalg.norm(fixed) + sum(abs(w) * np.linalg.norm(M) for w, M in terms))
+
+    def margin(P: np.ndarray) -> float:
+        return rounding_bound(size, float(np.linalg.norm(P, 2)) + g_scale) + uncertainty
+
+    P = form(ellipsoid)
+    delta = margin(P)
+    if _worst_eig(P, fixed + S) <= -delta:
+        return ellipsoid, 1.0, 1.0
+    best = None
+    for beta in _BETAS:
+        try:
+            chol = np.linalg.cholesky(fixed + beta * S - delta * np.eye(size))
+        except np.linalg.LinAlgError:
+            continue
+        W = np.linalg.solve(chol, np.linalg.solve(chol, P).T)
+        alpha = max(1.0, float(np.sqrt(np.linalg.eigvalsh(0.5 * (W + W.T))[-1])))
+        if best is None or alpha < best[0]:
+            best = (alpha, beta)
+    if best is None:
+        raise CertificationError("the multipliers certify no inflation of the solver's ellipsoid")
+    alpha, beta = best
+    for attempt in range(_RETRIES):
+        candidate = ellipsoid.scaled(alpha)
+        P = form(candidate)
+        if _worst_eig(P, fixed + beta * S) <= -margin(P):
+            return candidate, alpha, beta
+        alpha *= 1.0 + 1e-13 * 4.0**attempt
+    raise CertificationError(f"inflation by {alpha} still fails the float64 certificate")
+
+
+def certify_points(ellipsoid: Ellipsoid, X: np.ndarray) -> tuple[Ellipsoid, float]:
+    """Certify that every row of ``X`` lies in the ellipsoid; inflate by the smallest factor.
+
+    The level of each point carries a relative rounding error of a few ``n eps``; points must
+    clear 1 by that margin.
+    """
+    slack = 1.0 - 16.0 * ellipsoid.dim * EPS
+    worst = float(np.max(ellipsoid.level(X)))
+    if worst <= slack:
+        return ellipsoid, 1.0
+    alpha = float(np.sqrt(worst / slack))
+    for attempt in range(_RETRIES):
+        candidate = ellipsoid.scaled(alpha)
+        if float(np.max(candidate.level(X))) <= slack:
+            return candidate, alpha
+        alpha *= 1.0 + 1e-13 * 4.0**attempt
+    raise CertificationError(f"inflation by {alpha} still leaves points outside")

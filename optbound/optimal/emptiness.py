@@ -1,0 +1,66 @@
+"""Certificates that an intersection of quadratic sets is empty (S-lemma, weak direction).
+
+If multipliers ``tau_i >= 0`` make ``sum_i tau_i F_i`` positive definite, no x can satisfy
+every ``[x; 1]^T F_i [x; 1] <= 0``: summing the inequalities would give a non-positive value of
+a positive definite form at ``[x; 1] != 0``. The check is done in float64 with a margin for the
+rounding of forming the (normalised, frame-transformed) ``F_i`` and of the eigenvalues, so it
+never fires for a non-empty intersection.
+
+For an empty intersection the volume objective of the outer-ellipsoid SDP is unbounded: the
+solver either stops at a vanishing ellipsoid (its multipliers then pass this check) or fails
+numerically; in the latter case a second, small SDP looks for such multipliers.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from functools import lru_cache
+
+import cvxpy as cp
+import numpy as np
+
+from optbound.optimal import _cvx
+from optbound.optimal.certify import rounding_bound
+from optbound.optimal.errors import EmptyIntersectionError, SolverError
+from optbound.optimal.solver import solve
+
+
+@lru_cache(maxsize=32)
+def emptiness_template(n: int, k: int) -> tuple[cp.Problem, tuple[cp.Parameter, ...], cp.Variable]:
+    """Find ``tau >= 0`` with ``sum tau_i F_i >= I`` for ``k`` forms in R^n (built once)."""
+    forms = tuple(cp.Parameter((n + 1, n + 1), symmetric=True) for _ in range(k))
+    tau = cp.Variable(k, nonneg=True)
+    S = sum(tau[i] * forms[i] for i in range(k))
+    problem = cp.Problem(cp.Minimize(cp.sum(tau)), [_cvx.psd(S - np.eye(n + 1))])
+    return _cvx.require_dpp(problem), forms, tau
+
+
+def refuse_empty(forms: Sequence[np.ndarray], errors: np.ndarray, tau: np.ndarray) -> None:
+    """Raise ``EmptyIntersectionError`` if ``sum tau_i F_i`` is positive definite with margin.
+
+    ``errors[i]`` bounds the spectral-norm error of ``forms[i]``.
+    """
+    tau = np.maximum(tau, 0.0)
+    S = sum(t * F for t, F in zip(tau, forms, strict=True))
+    magnitude = float(sum(t * np.linalg.norm(F, 2) for t, F in zip(tau, forms, strict=True)))
+    margin = rounding_bound(S.shape[0], magnitude) + float(tau @ errors)
+    if np.linalg.eigvalsh(S)[0] > margin:
+        raise EmptyIntersectionError(
+            "the intersection is empty (certified: sum_i tau_i F_i is positive definite)"
+        )
+
+
+def explain_failure(
+    forms: Sequence[np.ndarray], errors: np.ndarray, solver: str, err: SolverError
+) -> None:
+    """After a failed solve: raise ``EmptyIntersectionError`` if emptiness can be certified,
+    else re-raise ``err``."""
+    problem, params, tau = emptiness_template(forms[0].shape[0] - 1, len(forms))
+    for param, F in zip(params, forms, strict=True):
+        param.value = F
+    try:
+        solve(problem, solver)
+    except SolverError:
+        raise err from None
+    refuse_empty(forms, errors, tau.value)
+    raise err

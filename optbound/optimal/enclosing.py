@@ -1,0 +1,100 @@
+"""The minimum-volume ellipsoid enclosing a finite point set (MVEE), as an SDP.
+
+[Boyd & Vandenberghe 2004, Sect. 8.4.1]: with ``E = {x : ||A x + b|| <= 1}``, maximise
+``log det A`` subject to ``||A p_i + b|| <= 1`` for every point (second-order cones); the centre
+is ``-A^{-1} b`` and the shape ``A^{-2}``. Points are translated to their mean and scaled to
+the unit ball before solving; the problem is cached per (number of points, dimension) and
+re-solved by setting the points.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import cvxpy as cp
+import numpy as np
+
+from optbound.optimal import _cvx
+from optbound.optimal.certify import certify_points
+from optbound.optimal.result import OuterResult
+from optbound.optimal.solver import solve
+from optbound.sets import Ellipsoid
+from optbound.sets import _validate as v
+
+# Relative singular value below which a point cloud counts as flat (no enclosing ellipsoid).
+_FLAT_RTOL = 1e-10
+
+
+@dataclass(frozen=True)
+class _Template:
+    problem: cp.Problem
+    points: cp.Parameter
+    A: cp.Variable
+    b: cp.Variable
+
+
+@lru_cache(maxsize=32)
+def mvee_template(m: int, n: int) -> _Template:
+    """The MVEE problem for ``m`` points in R^n (built once per shape)."""
+    points = cp.Parameter((n, m))
+    A = cp.Variable((n, n), symmetric=True)
+    b = cp.Variable(n)
+    images = A @ points + _cvx.column(b) @ np.ones((1, m))
+    problem = cp.Problem(cp.Maximize(cp.log_det(A)), [cp.norm(images, 2, axis=0) <= 1])
+    return _Template(_cvx.require_dpp(problem), points, A, b)
+
+
+def validated_points(points) -> np.ndarray:
+    """An (m, n) finite array whose affine hull is all of R^n (else no ellipsoid encloses it)."""
+    X = v.finite_matrix("points", points)
+    m, n = X.shape
+    if m < n + 1:
+        raise ValueError(f"points must hold at least n + 1 = {n + 1} points, got {m}")
+    sv = np.linalg.svd(X - X.mean(axis=0), compute_uv=False)
+    if sv[-1] <= _FLAT_RTOL * sv[0]:
+        raise ValueError("points lie in a lower-dimensional affine subspace: no ellipsoid fits")
+    return X
+
+
+def mvee(points, solver: str = "CLARABEL") -> OuterResult:
+    """Certified minimum-volume ellipsoid enclosing a point set.
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n)
+        At least n + 1 finite points not all in one hyperplane.
+    solver : {"CLARABEL", "SCS"}
+
+    Returns
+    -------
+    OuterResult
+        ``objective`` is the volume; ``multipliers`` is empty; every point is checked in
+        float64 and the ellipsoid inflated by the smallest factor if one lies outside.
+
+    Raises
+    ------
+    ValueError
+        For non-finite, too few or flat point sets.
+    SolverError
+        If the solve is not accurately optimal.
+    """
+    X = validated_points(points)
+    m, n = X.shape
+    center = X.mean(axis=0)
+    scale = float(np.max(np.linalg.norm(X - center, axis=1)))
+    template = mvee_template(m, n)
+    template.points.value = ((X - center) / scale).T
+    solve_time = solve(template.problem, solver)
+    A_inv = np.linalg.inv(template.A.value)
+    candidate = Ellipsoid(center - scale * A_inv @ template.b.value, scale**2 * A_inv @ A_inv.T)
+    ellipsoid, inflation = certify_points(candidate, X)
+    return OuterResult(
+        ellipsoid=ellipsoid,
+        objective=ellipsoid.volume(),
+        status=template.problem.status,
+        solve_time=solve_time,
+        multipliers=np.empty(0),
+        certified=True,
+        inflation=inflation,
+    )

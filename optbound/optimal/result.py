@@ -1,0 +1,54 @@
+"""The result object every reference solver returns, and the objective values it reports."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from optbound.sets import Ellipsoid
+
+
+@dataclass(frozen=True)
+class OuterResult:
+    """A certified outer ellipsoid and how it was obtained.
+
+    Attributes
+    ----------
+    ellipsoid : Ellipsoid
+        The outer bound, certified in float64 (already inflated by ``inflation``).
+    objective : float
+        The objective evaluated on ``ellipsoid``: volume, trace of the shape matrix, or
+        volume of the projection onto ``dims``, depending on the objective asked for.
+    status : str
+        The solver status (always "optimal": anything else raises ``SolverError``).
+    solve_time : float
+        Wall time of the conic solve in seconds (cvxpy parameter update + solver).
+    multipliers : np.ndarray
+        The S-procedure multipliers, one per quadratic inequality used (empty for ``mvee``).
+    certified : bool
+        True: the float64 certificate holds (results that fail are never returned).
+    inflation : float
+        Factor >= 1 applied to the solver's semi-axes to make the certificate hold.
+    lower_bound : float or None
+        When requested, a lower bound on the true minimum of the objective over *all*
+        ellipsoids containing the set (so the reference's own gap is known).
+    """
+
+    ellipsoid: Ellipsoid
+    objective: float
+    status: str
+    solve_time: float
+    multipliers: np.ndarray
+    certified: bool
+    inflation: float
+    lower_bound: float | None = None
+
+
+def objective_value(ellipsoid: Ellipsoid, objective: str, dims: tuple[int, ...] | None) -> float:
+    """Volume, trace of the shape, or volume of the projection on ``dims``."""
+    if objective == "volume":
+        return ellipsoid.volume()
+    if objective == "trace":
+        return float(np.trace(ellipsoid.shape))
+    return ellipsoid.project(dims).volume()

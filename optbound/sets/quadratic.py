@@ -1,0 +1,213 @@
+"""Quadratic sets ``{x : [x; 1]^T F [x; 1] <= 0}`` with F symmetric (n + 1) x (n + 1).
+
+One quadratic inequality describes an ellipsoid, a strip, a half-space, the outside of a ball
+(rings are the intersection of a ball with such an outside [BH, eqs. (20)-(21)]) and many more;
+it is the common currency of the S-procedure [Boyd, El Ghaoui, Feron & Balakrishnan 1994,
+Sect. 2.6.3]. Writing ``F = [[A, b], [b^T, c]]`` the inequality reads
+``q(x) = x^T A x + 2 b^T x + c <= 0``.
+
+The set need not be convex (``A`` may be indefinite), so this class offers the ``ConvexSet``
+methods (``dim``, ``contains``, ``support``, ``extent``) without claiming convexity: its
+``support`` is the support function of the closed convex hull.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from optbound.sets import _validate as v
+from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.strip import Halfspace, Strip
+
+# Eigenvalues of A below this fraction of its largest magnitude count as zero.
+_EIG_RTOL = 1e-12
+
+
+class QuadraticSet:
+    """The set ``{x : [x; 1]^T F [x; 1] <= 0}`` for a symmetric, non-zero F.
+
+    Parameters
+    ----------
+    F : array_like, shape (n + 1, n + 1)
+        Symmetric matrix ``[[A, b], [b^T, c]]``; asymmetry at rounding level is removed.
+
+    Raises
+    ------
+    ValueError
+        If ``F`` is non-finite, not square, smaller than 2 x 2, not symmetric, or zero.
+    """
+
+    def __init__(self, F):
+        F = v.finite_matrix("F", F)
+        if F.shape[0] != F.shape[1] or F.shape[0] < 2:
+            raise ValueError(f"F must be square of size n + 1 >= 2, got shape {F.shape}")
+        scale = float(np.max(np.abs(F)))
+        if scale == 0.0:
+            raise ValueError("F must not be zero")
+        if np.max(np.abs(F - F.T)) > v.SYMMETRY_RTOL * scale:
+            raise ValueError("F must be symmetric")
+        self._F = 0.5 * (F + F.T)
+        self._F.setflags(write=False)
+
+    # ------------------------------------------------------------------ constructors
+    @classmethod
+    def from_parts(cls, A, b, c: float) -> QuadraticSet:
+        """Assemble ``F = [[A, b], [b^T, c]]``, i.e. ``x^T A x + 2 b^T x + c <= 0``."""
+        A = np.asarray(A, dtype=float)
+        b = np.asarray(b, dtype=float)
+        return cls(np.block([[A, b[:, None]], [b[None, :], np.array([[float(c)]])]]))
+
+    @classmethod
+    def from_ellipsoid(cls, E: Ellipsoid) -> QuadraticSet:
+        """``(x - c)^T C^{-1} (x - c) - 1 <= 0``."""
+        # numpy's inverse, not E.shape_inv: scipy's threaded triangular solve is slow under load.
+        P = np.linalg.inv(E.shape)
+        P = 0.5 * (P + P.T)
+        Pc = P @ E.center
+        return cls.from_parts(P, -Pc, E.center @ Pc - 1.0)
+
+    @classmethod
+    def from_bounds(cls, a, lo: float, hi: float) -> QuadraticSet:
+        """Product form ``(a^T x - lo)(a^T x - hi) <= 0`` of ``lo <= a^T x <= hi``.
+
+        For ``Strip(a, b)`` (lo, hi = b -+ 1) this is the same polynomial as
+        ``(a^T x - b)^2 - 1 <= 0`` [HS96, eq. (23)], so the two forms are one quadratic.
+        """
+        a = v.finite_vector("a", a)
+        lo, hi = v.finite_scalar("lo", lo), v.finite_scalar("hi", hi)
+        if not lo <= hi:
+            raise ValueError(f"lo must be <= hi, got lo={lo}, hi={hi}")
+        if not np.any(a):
+            raise ValueError("a must be a non-zero vector")
+        return cls.from_parts(np.outer(a, a), -0.5 * (lo + hi) * a, lo * hi)
+
+    @classmethod
+    def from_strip(cls, S: Strip) -> QuadraticSet:
+        """``(a^T x - b)^2 - 1 <= 0`` [HS96, eq. (23)]."""
+        return cls.from_bounds(S.a, S.b - 1.0, S.b + 1.0)
+
+    @classmethod
+    def from_halfspace(cls, H: Halfspace) -> QuadraticSet:
+        """The affine form ``a^T x - b <= 0`` (A = 0)."""
+        return cls.from_parts(np.zeros((H.dim, H.dim)), 0.5 * H.a, -H.b)
+
+    # --------------------------------------------------------------------- attributes
+    @property
+    def F(self) -> np.ndarray:
+        return self._F
+
+    @property
+    def dim(self) -> int:
+        return self._F.shape[0] - 1
+
+    @property
+    def A(self) -> np.ndarray:
+        return self._F[:-1, :-1]
+
+    @property
+    def b(self) -> np.ndarray:
+        return self._F[:-1, -1]
+
+    @property
+    def c(self) -> float:
+        return float(self._F[-1, -1])
+
+    def __repr__(self) -> str:
+        return f"QuadraticSet(F={self._F.tolist()})"
+
+    # --------------------------------------------------------------------- membership
+    def value(self, X) -> np.ndarray | float:
+        """``q(x) = [x; 1]^T F [x; 1]`` per row of X (<= 0 means inside)."""
+        pts, single = v.points("X", X, self.dim)
+        q = np.einsum("ij,jk,ik->i", pts, self.A, pts) + 2.0 * pts @ self.b + self.c
+        return float(q[0]) if single else q
+
+    def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        """Membership per row; ``tol`` is relative to ``|[x;1]|^T |F| |[x;1]|``."""
+        pts, single = v.points("X", X, self.dim)
+        lifted = np.abs(np.column_stack([pts, np.ones(pts.shape[0])]))
+        scale = np.einsum("ij,jk,ik->i", lifted, np.abs(self._F), lifted)
+        inside = np.asarray(self.value(pts)) <= tol * scale
+        return bool(inside[0]) if single else inside
+
+    # --------------------------------------------------------------------- geometry
+    def as_ellipsoid(self) -> Ellipsoid | None:
+        """The set as an ``Ellipsoid`` when A is positive definite (None if it is empty).
+
+        ``q(x) = (x - x0)^T A (x - x0) - r`` with ``x0 = -A^{-1} b`` and
+        ``r = b^T A^{-1} b - c``, so the shape matrix is ``r A^{-1}``.
+
+        Raises
+        ------
+        ValueError
+            If A is not positive definite or the set is a single point (r = 0).
+        """
+        _, chol = v.spd_matrix("A (quadratic part of F)", self.A)
+        x0 = -np.linalg.solve(self.A, self.b)
+        w = np.linalg.solve(chol, self.b)
+        r = float(w @ w - self.c)
+        if r < 0:
+            return None
+        if r == 0:
+            raise ValueError(
+                "the quadratic set is a single point, not a full-dimensional ellipsoid"
+            )
+        return Ellipsoid(x0, r * np.linalg.inv(self.A))
+
+    def support(self, d) -> np.ndarray | float:
+        """Support function of the set's closed convex hull, ``max {d^T x : q(x) <= 0}``.
+
+        One quadratic constraint has no duality gap (S-lemma, Slater point assumed; Boyd &
+        Vandenberghe, App. B.1), so ``h(d) = min_{mu >= 0} g(mu)`` with the dual function
+        ``g(mu) = sup_x d^T x - mu q(x)``. In the eigenbasis ``A = V diag(w) V^T``
+        (``e = V^T d``, ``f = V^T b``) it separates:
+        ``g(mu) = sum_{w_j > 0} (e_j - 2 mu f_j)^2 / (4 mu w_j) - mu c``, finite only if
+        ``e_j = 2 mu f_j`` wherever ``w_j = 0`` and no ``w_j`` is negative.
+
+        - any ``w_j < 0``: the set is unbounded along that eigenvector in both senses, and
+          the convex hull is all of R^n: ``+inf``;
+        - ``f_j = 0`` on the zero eigenvalues (ellipsoid, cylinder, strip): ``d`` must vanish
+          there, then ``g = alpha / mu - beta + gamma mu`` is minimised in closed form;
+        - otherwise (paraboloid, half-space) ``mu`` is pinned to ``e_j / (2 f_j)``.
+
+        An empty set gives ``-inf``.
+        """
+        dirs, single = v.points("d", d, self.dim)
+        w, V = np.linalg.eigh(self.A)
+        tol = _EIG_RTOL * max(float(np.max(np.abs(w))), float(np.max(np.abs(self._F))))
+        E, f = dirs @ V, V.T @ self.b
+        h = np.array([self._support_eig(e, w, f, tol) for e in E])
+        return float(h[0]) if single else h
+
+    def _support_eig(self, e: np.ndarray, w: np.ndarray, f: np.ndarray, tol: float) -> float:
+        """``h(d)`` for one direction in A's eigenbasis (see ``support``)."""
+        if np.any(w < -tol):
+            return np.inf
+        pos, zero = w > tol, w <= tol
+        dtol = tol * max(1.0, float(np.max(np.abs(e))))
+        if np.all(np.abs(f[zero]) <= tol):
+            if np.any(np.abs(e[zero]) > dtol):
+                return np.inf
+            alpha = float(np.sum(e[pos] ** 2 / (4.0 * w[pos])))
+            beta = float(np.sum(e[pos] * f[pos] / w[pos]))
+            gamma = float(np.sum(f[pos] ** 2 / w[pos])) - self.c
+            if gamma < 0:
+                return -np.inf
+            return 2.0 * np.sqrt(alpha * gamma) - beta
+        # Zero eigen-directions with a linear term pin the multiplier: e_Z = 2 mu f_Z.
+        fz, ez = f[zero], e[zero]
+        k = int(np.argmax(np.abs(fz)))
+        mu = ez[k] / (2.0 * fz[k])
+        if mu <= 0 or np.any(np.abs(ez - 2.0 * mu * fz) > dtol):
+            return np.inf
+        return float(np.sum((e[pos] - 2.0 * mu * f[pos]) ** 2 / (4.0 * mu * w[pos])) - mu * self.c)
+
+    def extent(self, a) -> tuple[float, float]:
+        """Range ``[min a^T x, max a^T x]`` of the linear functional ``a`` over the set."""
+        a = np.asarray(a, dtype=float)
+        return -float(self.support(-a)), float(self.support(a))
+
+    @property
+    def is_bounded(self) -> bool:
+        """True when A is positive definite (then the set is an ellipsoid, a point or empty)."""
+        return bool(np.linalg.eigvalsh(self.A)[0] > _EIG_RTOL * np.max(np.abs(self._F)))

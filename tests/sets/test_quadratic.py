@@ -1,0 +1,100 @@
+"""QuadraticSet: conversions agree with the source sets; support function; bad input."""
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from optbound import Ellipsoid, Halfspace, QuadraticSet, Strip
+
+
+def _ellipsoid(seed: int, n: int = 3) -> Ellipsoid:
+    rng = np.random.default_rng(seed)
+    A = rng.standard_normal((n, n))
+    return Ellipsoid(rng.standard_normal(n), A @ A.T + 0.1 * np.eye(n))
+
+
+@given(st.integers(0, 10_000))
+def test_from_ellipsoid_membership_and_support_agree(seed):
+    E = _ellipsoid(seed)
+    Q = QuadraticSet.from_ellipsoid(E)
+    rng = np.random.default_rng(seed)
+    X = E.center + 3.0 * rng.standard_normal((500, 3))
+    level = E.level(X)
+    clear = np.abs(level - 1.0) > 1e-6  # away from the boundary, both must agree exactly
+    assert np.array_equal(Q.contains(X)[clear], E.contains(X)[clear])
+    D = rng.standard_normal((20, 3))
+    np.testing.assert_allclose(Q.support(D), E.support(D), rtol=1e-10, atol=1e-10)
+
+
+def test_as_ellipsoid_round_trip():
+    E = _ellipsoid(1)
+    back = QuadraticSet.from_ellipsoid(E).as_ellipsoid()
+    np.testing.assert_allclose(back.center, E.center, atol=1e-12)
+    np.testing.assert_allclose(back.shape, E.shape, rtol=1e-10, atol=1e-12)
+
+
+def test_empty_bounded_quadratic_gives_none_and_minus_inf():
+    Q = QuadraticSet.from_parts(np.eye(2), [0.0, 0.0], 1.0)  # |x|^2 + 1 <= 0
+    assert Q.is_bounded
+    assert Q.as_ellipsoid() is None
+    assert Q.support([1.0, 0.0]) == -np.inf
+
+
+def test_strip_product_form_is_the_squared_form():
+    S = Strip([1.0, 2.0], 0.5)
+    F = QuadraticSet.from_strip(S).F
+    a, b = S.a, S.b
+    squared = QuadraticSet.from_parts(np.outer(a, a), -b * a, b * b - 1.0).F
+    np.testing.assert_allclose(F, squared, atol=1e-15)
+
+
+def test_strip_and_halfspace_support_and_membership():
+    S = Strip([1.0, 1.0], 0.5)
+    QS = QuadraticSet.from_strip(S)
+    assert QS.support([1.0, 1.0]) == pytest.approx(1.5)
+    assert QS.support([-2.0, -2.0]) == pytest.approx(1.0)
+    assert QS.support([1.0, 0.0]) == np.inf
+    H = Halfspace([1.0, 2.0], 3.0)
+    QH = QuadraticSet.from_halfspace(H)
+    D = np.array([[1.0, 2.0], [2.0, 4.0], [-1.0, -2.0], [1.0, 0.0]])
+    np.testing.assert_array_equal(QH.support(D), H.support(D))
+    X = np.random.default_rng(0).standard_normal((200, 2)) * 3
+    np.testing.assert_array_equal(QH.contains(X, tol=0.0), H.contains(X, tol=0.0))
+    np.testing.assert_array_equal(QS.contains(X, tol=0.0), S.contains(X, tol=0.0))
+
+
+def test_paraboloid_support_closed_form():
+    P = QuadraticSet([[1.0, 0.0, 0.0], [0.0, 0.0, -0.5], [0.0, -0.5, 0.0]])  # y >= x^2
+    # max -y = 0; max x - y = 1/4 at x = 1/2; max x unbounded.
+    np.testing.assert_allclose(P.support([[0.0, -1.0], [1.0, -1.0]]), [0.0, 0.25], atol=1e-12)
+    assert P.support([1.0, 0.0]) == np.inf
+    assert P.extent([1.0, -1.0]) == (-np.inf, pytest.approx(0.25))
+
+
+def test_outside_of_ball_is_unbounded_and_nonconvex():
+    R = QuadraticSet.from_parts(-np.eye(2), [0.0, 0.0], 1.0)  # |x| >= 1
+    assert not R.is_bounded
+    assert R.support([0.3, -1.0]) == np.inf
+    assert R.contains([[2.0, 0.0], [-2.0, 0.0], [0.0, 0.0]]).tolist() == [True, True, False]
+
+
+@pytest.mark.parametrize(
+    "F, word",
+    [
+        (np.ones((2, 3)), "square"),
+        (np.ones((1, 1)), "square"),
+        (np.array([[1.0, 2.0], [0.0, 1.0]]), "symmetric"),
+        (np.zeros((3, 3)), "zero"),
+        (np.array([[np.nan, 0.0], [0.0, 1.0]]), "finite"),
+    ],
+)
+def test_bad_matrix_is_rejected_naming_F(F, word):
+    with pytest.raises(ValueError, match="F") as err:
+        QuadraticSet(F)
+    assert word in str(err.value)
+
+
+def test_as_ellipsoid_refuses_unbounded():
+    with pytest.raises(ValueError, match="positive definite"):
+        QuadraticSet.from_strip(Strip([1.0, 0.0], 0.0)).as_ellipsoid()
