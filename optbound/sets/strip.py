@@ -16,7 +16,47 @@ def _normal(name: str, a) -> np.ndarray:
     return a
 
 
-class Strip(ConvexSet):
+class _LinearSet(ConvexSet):
+    """Shared part of the sets bounded by hyperplanes with normal ``a`` and offset ``b``."""
+
+    def __init__(self, a, b):
+        self._a = _normal("a", a)
+        self._b = v.finite_scalar("b", b)
+
+    @property
+    def a(self) -> np.ndarray:
+        return self._a
+
+    @property
+    def b(self) -> float:
+        return self._b
+
+    @property
+    def dim(self) -> int:
+        return self._a.shape[0]
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(a={self._a.tolist()}, b={self._b})"
+
+    def _along_normal(self, d) -> tuple[np.ndarray, np.ndarray, bool]:
+        """Directions as ``s * a``: the factors s, which rows are parallel to a, single flag.
+
+        The support function of such a set is finite only along multiples of its normal.
+        """
+        dirs, single = v.points("d", d, self.dim)
+        s = dirs @ self._a / (self._a @ self._a)
+        parallel = np.all(np.isclose(dirs, np.outer(s, self._a), rtol=1e-12, atol=1e-15), axis=1)
+        return s, parallel, single
+
+    @staticmethod
+    def _finite_where(mask: np.ndarray, values: np.ndarray, single: bool):
+        """+inf except where ``mask``, which gets ``values``; a float for a single direction."""
+        out = np.full(mask.shape[0], np.inf)
+        out[mask] = values
+        return float(out[0]) if single else out
+
+
+class Strip(_LinearSet):
     """The slab between two parallel hyperplanes, ``{x : |a^T x - b| <= 1}`` [HS96, eq. (23)].
 
     Parameters
@@ -26,10 +66,6 @@ class Strip(ConvexSet):
     b : float
         Offset: the strip is ``b - 1 <= a^T x <= b + 1``.
     """
-
-    def __init__(self, a, b):
-        self._a = _normal("a", a)
-        self._b = v.finite_scalar("b", b)
 
     @classmethod
     def from_bounds(cls, a, lo: float, hi: float) -> Strip:
@@ -42,24 +78,9 @@ class Strip(ConvexSet):
         return cls(a / half, 0.5 * (hi + lo) / half)
 
     @property
-    def a(self) -> np.ndarray:
-        return self._a
-
-    @property
-    def b(self) -> float:
-        return self._b
-
-    @property
-    def dim(self) -> int:
-        return self._a.shape[0]
-
-    @property
     def width(self) -> float:
         """Euclidean distance between the two boundary planes."""
         return 2.0 / float(np.linalg.norm(self._a))
-
-    def __repr__(self) -> str:
-        return f"Strip(a={self._a.tolist()}, b={self._b})"
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         pts, single = v.points("X", X, self.dim)
@@ -67,38 +88,15 @@ class Strip(ConvexSet):
         return bool(inside[0]) if single else inside
 
     def support(self, d) -> np.ndarray | float:
-        dirs, single = v.points("d", d, self.dim)
-        h = np.full(dirs.shape[0], np.inf)
-        # Bounded only along +-a: d = s a gives s (b + 1) for s > 0 and s (b - 1) for s < 0.
-        s = dirs @ self._a / (self._a @ self._a)
-        parallel = np.all(np.isclose(dirs, np.outer(s, self._a), rtol=1e-12, atol=1e-15), axis=1)
-        h[parallel] = np.where(
-            s[parallel] >= 0, s[parallel] * (self._b + 1), s[parallel] * (self._b - 1)
-        )
-        return float(h[0]) if single else h
+        # d = s a gives s (b + 1) for s >= 0 and s (b - 1) for s < 0.
+        s, parallel, single = self._along_normal(d)
+        sp = s[parallel]
+        values = np.where(sp >= 0, sp * (self._b + 1), sp * (self._b - 1))
+        return self._finite_where(parallel, values, single)
 
 
-class Halfspace(ConvexSet):
+class Halfspace(_LinearSet):
     """The half-space ``{x : a^T x <= b}``."""
-
-    def __init__(self, a, b):
-        self._a = _normal("a", a)
-        self._b = v.finite_scalar("b", b)
-
-    @property
-    def a(self) -> np.ndarray:
-        return self._a
-
-    @property
-    def b(self) -> float:
-        return self._b
-
-    @property
-    def dim(self) -> int:
-        return self._a.shape[0]
-
-    def __repr__(self) -> str:
-        return f"Halfspace(a={self._a.tolist()}, b={self._b})"
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         pts, single = v.points("X", X, self.dim)
@@ -107,10 +105,7 @@ class Halfspace(ConvexSet):
         return bool(inside[0]) if single else inside
 
     def support(self, d) -> np.ndarray | float:
-        dirs, single = v.points("d", d, self.dim)
-        h = np.full(dirs.shape[0], np.inf)
-        s = dirs @ self._a / (self._a @ self._a)
-        parallel = np.all(np.isclose(dirs, np.outer(s, self._a), rtol=1e-12, atol=1e-15), axis=1)
+        # Bounded only along nonnegative multiples of a.
+        s, parallel, single = self._along_normal(d)
         bounded = parallel & (s >= 0)
-        h[bounded] = s[bounded] * self._b
-        return float(h[0]) if single else h
+        return self._finite_where(bounded, s[bounded] * self._b, single)
