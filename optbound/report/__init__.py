@@ -1,1 +1,23 @@
-"""optbound.report (in progress)."""
+"""Benchmark reports: results.json/CSV, Markdown tables, PNG figures, README headline.
+
+``write_report(results, out_dir)`` builds everything from the results dict that
+``optbound bench`` saves, so ``optbound report DIR`` can rebuild a report from
+``DIR/results.json`` alone.
+"""
+
+from optbound.report.document import REPORT_FILE, write_report
+from optbound.report.headline import headline_rows
+from optbound.report.readme import source_readme, update_readme
+from optbound.report.results import RESULTS_FILE, load_results, save_results, write_csv
+
+__all__ = [
+    "REPORT_FILE",
+    "RESULTS_FILE",
+    "headline_rows",
+    "load_results",
+    "save_results",
+    "source_readme",
+    "update_readme",
+    "write_csv",
+    "write_report",
+]

@@ -1,0 +1,99 @@
+"""Helpers that turn analytic-vs-SDP comparisons into flat, JSON-able records and figures."""
+
+from __future__ import annotations
+
+from optbound import Ellipsoid, Strip
+
+# The size measure each analytic criterion minimises, and hence the ratio it is judged by.
+METRIC_OF = {
+    "volume": "volume_ratio",
+    "robust": "volume_ratio",
+    "trace": "trace_ratio",
+    "projection": "projection_volume_ratio",
+    "bh_volume": "volume_ratio",
+    "bh_trace": "trace_ratio",
+}
+# The SDP objective that minimises each size measure.
+OBJECTIVE_OF = {
+    "volume_ratio": "volume",
+    "trace_ratio": "trace",
+    "projection_volume_ratio": "projection",
+}
+
+
+def ratio(metric: str, analytic: Ellipsoid, reference: Ellipsoid, dims=None) -> float:
+    """``size(analytic) / size(reference)`` for the named metric, via :mod:`optbound.compare`."""
+    from optbound import compare
+
+    if metric == "projection_volume_ratio":
+        return float(compare.projection_volume_ratio(analytic, reference, dims))
+    return float(getattr(compare, metric)(analytic, reference))
+
+
+def lower_ratio(analytic_size: float, result) -> float | None:
+    """``analytic_size / result.lower_bound``, or None when no lower bound was computed.
+
+    ``result.lower_bound`` bounds the true minimum of the SDP's objective (over all outer
+    ellipsoids) from below, so this ratio bounds the analytic method's true loss from above.
+    ``analytic_size`` must be measured in the same objective (e.g. the volume).
+    """
+    if result.lower_bound is None:
+        return None
+    return float(analytic_size / result.lower_bound)
+
+
+def reference(solve, *args, **kwargs) -> tuple[object | None, str]:
+    """Run an SDP reference solver; a refused solve gives ``(None, message)``.
+
+    An inaccurate or uncertifiable SDP (e.g. at condition number 1e6) is a finding about the
+    reference, reported per criterion, not a reason to drop the instance's other criteria.
+    """
+    from optbound.optimal import CertificationError, SolverError
+
+    try:
+        return solve(*args, **kwargs), ""
+    except (SolverError, CertificationError) as exc:
+        return None, f"{type(exc).__name__}: {exc}"
+
+
+def comparison(metric: str, analytic: Ellipsoid, result, error: str, dims=None) -> dict:
+    """The ratio fields of one analytic-vs-SDP record (ratio None when the SDP failed)."""
+    if result is None:
+        return {"metric": metric, "ratio": None, "sdp_status": "failed", "sdp_error": error}
+    return {
+        "metric": metric,
+        "ratio": ratio(metric, analytic, result.ellipsoid, dims),
+        "sdp_status": str(result.status),
+        "sdp_certified": bool(result.certified),
+        "sdp_inflation": float(result.inflation),
+        "sdp_s": float(result.solve_time),
+    }
+
+
+def ellipsoid_json(E: Ellipsoid) -> dict:
+    return {"center": E.center.tolist(), "shape": E.shape.tolist()}
+
+
+def strip_json(S: Strip) -> dict:
+    return {"a": S.a.tolist(), "b": S.b}
+
+
+def figure(title: str, seed: int, E: Ellipsoid, strips: list[Strip], bounds: dict) -> dict:
+    """A drawable 2-D instance: the exact set ``E ∩ strips`` and named bounding ellipses."""
+    return {
+        "title": title,
+        "seed": seed,
+        "ellipsoid": ellipsoid_json(E),
+        "strips": [strip_json(S) for S in strips],
+        "bounds": [{"label": k, **ellipsoid_json(v)} for k, v in bounds.items()],
+    }
+
+
+def sum_figure(title: str, seed: int, summands: list[Ellipsoid], bounds: dict) -> dict:
+    """A drawable 2-D instance: the exact Minkowski sum of ``summands`` and bounding ellipses."""
+    return {
+        "title": title,
+        "seed": seed,
+        "summands": [ellipsoid_json(E) for E in summands],
+        "bounds": [{"label": k, **ellipsoid_json(v)} for k, v in bounds.items()],
+    }

@@ -1,0 +1,249 @@
+"""report.md: the tables, figures and notes of one run, written from the results dict alone."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from optbound.report import figures
+from optbound.report.headline import HEADERS, headline_rows
+from optbound.report.results import write_csv
+from optbound.report.summary import group, ratio_stats, worst_label
+from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds, markdown_table
+
+REPORT_FILE = "report.md"
+MAX_ERRORS_SHOWN = 5
+
+REFERENCES_NOTE = """\
+Every ratio is size(analytic bound) / size(SDP reference) on the same instance, with the size
+measure the analytic criterion minimises (volume for `volume` and `robust`, trace for `trace`,
+volume of the projection for `projection`). An analytic bound is an outer bound, so a ratio
+>= 1 is expected wherever the reference is the true optimum:
+
+- one ellipsoid ∩ one strip, strip clipped to the ellipsoid: the S-procedure SDP is tight
+  (volume and projection), so the ratio is the analytic method's exact loss;
+- Minkowski sum of two ellipsoids: the best κ-family member is the true minimum (volume and
+  trace), so the ratio measures only how well κ was found;
+- **several strips at once** (the recursive family): the S-procedure SDP is only an **upper
+  bound** on the smallest outer ellipsoid, so a ratio below 1 is possible there and is not a
+  violation. The second table divides by a lower bound on the optimum instead (the
+  minimum-volume ellipsoid of points sampled in the set), which bounds the true loss from above;
+- the projection optimum is itself the best ellipse of the S-procedure family, which can be
+  a few percent above the smallest ellipse containing the projected set.
+
+Where the reference is the true optimum, a ratio below 1 can only come from the reference's
+own inaccuracy: an SDP answer is certified in float64 and inflated until it contains the set,
+and conic solvers lose accuracy at large condition numbers. "below 1" counts ratios under
+1 − 1e-6 and "lowest instance" shows where the worst one is; "SDP refused" counts instances
+whose SDP the reference solver refused as inaccurate (no ratio is computed for them). That the
+analytic bound itself is an outer bound is checked separately by sampling the exact set
+("sampled points outside")."""
+
+
+def write_report(results: dict, out_dir: str | Path) -> Path:
+    """Write report.md, the PNG figures and the CSV files of ``results`` into ``out_dir``.
+
+    Only the results dict is read, so ``optbound report DIR`` can rebuild everything from
+    ``DIR/results.json``. Returns the path of report.md.
+    """
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    write_csv(results, out)
+    parts = [_header(results), "## Headline", markdown_table(HEADERS, headline_rows(results))]
+    pictures = []
+    for name, fam in results["families"].items():
+        parts.append(f"## {fam['title']}")
+        parts.extend(_family_section(name, fam, out))
+        pictures.extend(fam["figures"])
+    if pictures:
+        figures.instance_pictures(pictures, out / "instances_2d.png")
+        parts += [
+            "## Pictures of 2-D instances",
+            "The exact set is shaded grey (prior ellipse ∩ strips, on a fine grid; or the "
+            "exact Minkowski sum, from the summands' support points); each bound is drawn over "
+            "it, the SDP optimum dashed.",
+            "![2-D instances](instances_2d.png)",
+        ]
+    parts += ["## About the references", REFERENCES_NOTE]
+    path = out / REPORT_FILE
+    path.write_text("\n\n".join(parts) + "\n")
+    return path
+
+
+def _header(results: dict) -> str:
+    m = results["meta"]
+    return (
+        "# optbound benchmark report\n\n"
+        f"Suite **{m['suite']}**, seed {m['seed']}, {m['jobs']} job(s), started {m['started']}, "
+        f"wall time {m['wall_time_s']:.1f} s (optbound {m['optbound']}, Python {m['python']}, "
+        f"numpy {m['numpy']}, {m['machine']}).\n\n"
+        f"Re-run with `optbound bench --suite {m['suite']} --seed {m['seed']}`; rebuild this "
+        "report from `results.json` with `optbound report DIR`. Every instance is rebuilt by "
+        "its family's `instance(task)` from the seed shown. Raw records: `tightness.csv`, "
+        "`speed.csv`."
+    )
+
+
+def _family_section(name: str, fam: dict, out: Path) -> list[str]:
+    if fam["status"] != "ok":
+        return [f"Skipped: {fam['reason']}."]
+    parts = []
+    if fam["records"]:
+        if fam["kind"] == "tightness":
+            parts += _tightness_section(name, fam["records"], out)
+        elif fam["kind"] == "recursive":
+            parts += _recursive_section(fam["records"], out)
+        else:
+            parts.append(_speed_table(fam["records"]))
+    parts += [f"> {note}" for note in fam["notes"]]
+    if fam["errors"]:
+        parts.append(_errors(fam["errors"]))
+    if fam.get("warnings"):
+        parts.append(_warnings(fam["warnings"]))
+    return parts
+
+
+def _tightness_section(name: str, records: list[dict], out: Path) -> list[str]:
+    checked = any("outside" in rec for rec in records)
+    rows = []
+    for (criterion, reference), recs in group(records, ("criterion", "reference")).items():
+        s = ratio_stats(recs)
+        if not s["n"]:
+            continue
+        matched = "" if recs[0].get("matched", True) else " (different measure)"
+        row = [
+            f"`{criterion}`",
+            reference + matched,
+            recs[0]["metric"],
+            s["n"],
+            fmt_ratio(s["min"]),
+            fmt_ratio(s["median"]),
+            fmt_ratio(s["max"]),
+            worst_label(s["worst"]),
+            s["below_one"],
+            worst_label(s["lowest"]) if s["below_one"] else "",
+            s["missing"],
+        ]
+        if checked:
+            row.append(sum(rec.get("outside", 0) for rec in recs))
+        rows.append(row)
+    headers = [
+        "criterion",
+        "reference",
+        "ratio",
+        "n",
+        "min",
+        "median",
+        "max",
+        "worst (max) instance",
+        "below 1",
+        "lowest instance",
+        "SDP refused",
+    ] + (["sampled points outside"] if checked else [])
+    png = figures.ratio_histograms(records, out / f"hist_{name}.png", f"{name}: ratio − 1")
+    parts = [markdown_table(headers, rows)]
+    if checked:
+        parts.append(
+            '"sampled points outside": points drawn uniformly in the exact set that the '
+            "analytic bound misses, summed over the instances; a guaranteed outer bound gives 0."
+        )
+    return [
+        *parts,
+        "Median (max) ratio by variant:",
+        _matrix(records, "variant"),
+        "Median (max) ratio by dimension:",
+        _matrix(records, "dim", prefix="n = "),
+        f"![{name} ratio histograms]({png.name})",
+    ]
+
+
+def _matrix(records: list[dict], column: str, prefix: str = "") -> str:
+    """Criteria as rows, the values of ``column`` as columns, cells ``median (max)``."""
+    columns = list(group(records, (column,)))
+    rows = []
+    for (criterion,), recs in group(records, ("criterion",)).items():
+        cells = group(recs, (column,))
+        row = [f"`{criterion}`"]
+        for key in columns:
+            s = ratio_stats(cells.get(key, []))
+            row.append(f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–")
+        rows.append(row)
+    return markdown_table(["criterion"] + [f"{prefix}{key[0]}" for key in columns], rows)
+
+
+def _recursive_section(records: list[dict], out: Path) -> list[str]:
+    png = figures.recursive_plot(records, out / "recursive.png")
+    parts = [
+        "Volume of the recursive analytic filter (one strip at a time, minimum-volume λ "
+        "[HS96, eq. (26)]) divided by the volume of the batch SDP over the prior and all k "
+        "strips at once. With several strips the S-procedure SDP is only an upper bound on "
+        "the smallest outer ellipsoid, so a ratio below 1 means the SDP relaxation is looser "
+        "than the recursion, not that the recursion is invalid.",
+        _k_table(records, "ratio"),
+    ]
+    if any(rec.get("lower_ratio") is not None for rec in records):
+        parts += [
+            "The same volumes divided by a lower bound on the smallest outer ellipsoid (the "
+            "minimum-volume ellipsoid of points sampled in the exact set): an upper bound on "
+            "the recursion's true loss, which lies between the two tables.",
+            _k_table(records, "lower_ratio"),
+        ]
+    return [*parts, f"![recursive tightness]({png.name})"]
+
+
+def _k_table(records: list[dict], field: str) -> str:
+    """Rows (strip width, k), one ``median (max)`` column per dimension, then the extremes."""
+    dims = sorted({rec["dim"] for rec in records})
+    rows = []
+    for (variant, k), recs in sorted(group(records, ("variant", "k")).items()):
+        by_dim = group(recs, ("dim",))
+        cells = []
+        for dim in dims:
+            s = ratio_stats(by_dim.get((dim,), []), field)
+            cells.append(f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–")
+        s = ratio_stats(recs, field)
+        rows.append(
+            [
+                variant,
+                k,
+                *cells,
+                s.get("below_one", 0),
+                s["missing"],
+                worst_label(s["worst"]) if s["n"] else "–",
+            ]
+        )
+    missing = "SDP refused" if field == "ratio" else "no lower bound"
+    headers = [
+        "strips",
+        "k",
+        *[f"n = {d}: median (max)" for d in dims],
+        "below 1",
+        missing,
+        "worst (max) instance",
+    ]
+    return markdown_table(headers, rows)
+
+
+def _speed_table(records: list[dict]) -> str:
+    rows = []
+    for rec in records:
+        value = fmt_seconds(rec["value"]) + ("" if rec["unit"] == "s" else f" ({rec['unit']})")
+        if rec.get("throughput"):
+            value += f", {rec['throughput']:.3g} updates/s"
+        ratio = f"{fmt_factor(rec['ratio'])} {rec['ratio_label']}" if rec.get("ratio") else ""
+        rows.append([rec["name"], value, ratio])
+    return markdown_table(["measurement", "time", "ratio (same run)"], rows)
+
+
+def _warnings(messages: list[str]) -> str:
+    items = "\n".join(f"- `{m}`" for m in messages)
+    return (
+        f"<details><summary>{len(messages)} distinct warning(s) raised by the code under test"
+        f"</summary>\n\n{items}\n\n</details>"
+    )
+
+
+def _errors(errors: list[dict]) -> str:
+    lines = [f"**{len(errors)} task(s) failed** (first {MAX_ERRORS_SHOWN} shown):", ""]
+    for err in errors[:MAX_ERRORS_SHOWN]:
+        lines.append(f"- seed {err['task'].get('seed')}: `{err['error']}`")
+    return "\n".join(lines)

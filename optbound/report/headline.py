@@ -1,0 +1,70 @@
+"""The headline numbers of a run: one line per criterion, recursion depth and speed ratio.
+
+The same rows go to the top of report.md, to the terminal after ``optbound bench`` and into
+the README's bench section, so every number a reader sees first is computed here.
+"""
+
+from __future__ import annotations
+
+from optbound.report.summary import group, ratio_stats
+from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds
+
+HEADERS = ("measure", "value")
+
+
+def headline_rows(results: dict) -> list[tuple[str, str]]:
+    """``(measure, value)`` rows summarising ``results``."""
+    rows = []
+    for name, fam in results["families"].items():
+        if fam["status"] != "ok":
+            rows.append((fam["title"], f"skipped: {fam['reason']}"))
+        elif fam["kind"] == "tightness":
+            rows.extend(_tightness_rows(name, fam["records"]))
+        elif fam["kind"] == "recursive":
+            rows.extend(_recursive_rows(fam["records"]))
+        else:
+            rows.extend(_speed_rows(fam))
+    return rows
+
+
+def _tightness_rows(name: str, records: list[dict]) -> list[tuple[str, str]]:
+    rows = []
+    for (criterion, reference), recs in group(records, ("criterion", "reference")).items():
+        rows.append((f"{name} · analytic {criterion} / {reference}", stats_text(ratio_stats(recs))))
+    return rows
+
+
+def _recursive_rows(records: list[dict]) -> list[tuple[str, str]]:
+    if not records:
+        return []
+    ks = sorted({rec["k"] for rec in records})
+    rows = []
+    for k in sorted({ks[0], ks[len(ks) // 2], ks[-1]}):
+        at_k = [rec for rec in records if rec["k"] == k]
+        text = stats_text(ratio_stats(at_k))
+        low = ratio_stats(at_k, "lower_ratio")
+        if low["n"]:
+            text += f"; vs lower bound on the optimum: median {fmt_ratio(low['median'])}"
+        rows.append((f"recursive · analytic filter after k={k} strips / batch SDP", text))
+    return rows
+
+
+def stats_text(s: dict) -> str:
+    """``median …, max … (n=…)`` plus the number of refused SDP references, if any."""
+    if not s["n"]:
+        return f"no reference: all {s['missing']} SDP solves refused"
+    text = f"median {fmt_ratio(s['median'])}, max {fmt_ratio(s['max'])} (n={s['n']})"
+    return text + (f"; {s['missing']} SDP solves refused" if s["missing"] else "")
+
+
+def _speed_rows(fam: dict) -> list[tuple[str, str]]:
+    rows = [(note_title(fam), note) for note in fam["notes"]]
+    for rec in fam["records"]:
+        if rec.get("ratio") is not None:
+            value = f"{fmt_factor(rec['ratio'])} {rec['ratio_label']}"
+            rows.append((rec["name"], f"{fmt_seconds(rec['value'])}; {value}"))
+    return rows
+
+
+def note_title(fam: dict) -> str:
+    return fam["title"].removeprefix("Speed: ")

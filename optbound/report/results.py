@@ -1,0 +1,75 @@
+"""Reading and writing the benchmark results: ``results.json`` (the source of truth) and CSV."""
+
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+RESULTS_FILE = "results.json"
+SCHEMA = 1
+# Leading CSV columns, in this order; any other record keys follow alphabetically.
+CSV_FIRST = ("family", "variant", "dim", "cond", "k", "seed", "criterion", "metric", "ratio")
+
+
+def save_results(results: dict, out_dir: str | Path) -> Path:
+    """Write ``results`` to ``out_dir/results.json`` (strict JSON: no NaN or infinity)."""
+    path = Path(out_dir) / RESULTS_FILE
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(results, indent=1, allow_nan=False) + "\n")
+    return path
+
+
+def load_results(directory: str | Path) -> dict:
+    """Load ``directory/results.json`` written by ``optbound bench``.
+
+    Raises
+    ------
+    ValueError
+        If ``directory`` is not a directory, holds no results.json, or the file is not a
+        results file of this schema.
+    """
+    directory = Path(directory)
+    if not directory.is_dir():
+        raise ValueError(f"directory {str(directory)!r} does not exist or is not a directory")
+    path = directory / RESULTS_FILE
+    if not path.is_file():
+        raise ValueError(f"directory {str(directory)!r} has no {RESULTS_FILE} (run optbound bench)")
+    try:
+        results = json.loads(path.read_text())
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"{path} is not valid JSON: {exc}") from None
+    if not isinstance(results, dict) or results.get("schema") != SCHEMA:
+        raise ValueError(f"{path} is not an optbound results file of schema {SCHEMA}")
+    for key in ("meta", "families"):
+        if not isinstance(results.get(key), dict):
+            raise ValueError(f"{path} lacks the {key!r} section")
+    return results
+
+
+def records_of(results: dict, kinds: tuple[str, ...]) -> list[dict]:
+    """All records of the families whose kind is in ``kinds``, in report order."""
+    return [
+        rec
+        for fam in results["families"].values()
+        if fam["kind"] in kinds
+        for rec in fam["records"]
+    ]
+
+
+def write_csv(results: dict, out_dir: str | Path) -> list[Path]:
+    """Write ``tightness.csv`` (tightness and recursive records) and ``speed.csv``."""
+    written = []
+    for name, kinds in (("tightness", ("tightness", "recursive")), ("speed", ("speed",))):
+        rows = records_of(results, kinds)
+        if not rows:
+            continue
+        keys = {key for row in rows for key in row}
+        columns = [c for c in CSV_FIRST if c in keys] + sorted(keys - set(CSV_FIRST))
+        path = Path(out_dir) / f"{name}.csv"
+        with path.open("w", newline="") as fh:
+            writer = csv.DictWriter(fh, fieldnames=columns)
+            writer.writeheader()
+            writer.writerows(rows)
+        written.append(path)
+    return written

@@ -1,0 +1,50 @@
+from optbound.report import write_report
+from optbound.report.headline import headline_rows
+from tests.report.sample import sample_results
+
+
+def test_report_has_tables_figures_notes_and_errors(tmp_path):
+    path = write_report(sample_results(), tmp_path)
+    text = path.read_text()
+    assert "## Headline" in text
+    # volume: n=3, min 1, median 1.5, max 3 at seed 12, none below 1, 2 points outside
+    volume_row = "| `volume` | SDP volume | volume_ratio | 3 | 1.0000000 | 1.5 | 3 | seed 12, "
+    assert volume_row in text
+    assert "cond 1e+02 | 0 |  | 0 | 2 |" in text
+    # trace: one refused SDP reference
+    assert "| `trace` | SDP trace | trace_ratio | 2 | 1.1 | 1.15 | 1.2 | seed 13," in text
+    assert "cond 1e+02 | 0 |  | 1 | 0 |" in text
+    assert "![strip ratio histograms](hist_strip.png)" in text
+    assert "![recursive tightness](recursive.png)" in text
+    assert "![2-D instances](instances_2d.png)" in text
+    assert "> codac is not installed" in text
+    assert "**1 task(s) failed**" in text and "SolverError: inaccurate" in text
+    assert "Skipped: needs x." in text
+    for png in ("hist_strip.png", "recursive.png", "instances_2d.png"):
+        assert (tmp_path / png).stat().st_size > 10_000
+    assert (tmp_path / "tightness.csv").exists() and (tmp_path / "speed.csv").exists()
+
+
+def test_recursive_table_lists_each_k_with_dims():
+    rows = dict(headline_rows(sample_results()))
+    # k = 5: ratios 1 + 0.5 * dim for dim 2, 3 -> median 2.25, max 2.5; lower ratios + 0.1
+    assert rows["recursive · analytic filter after k=5 strips / batch SDP"] == (
+        "median 2.25, max 2.5 (n=2); vs lower bound on the optimum: median 2.35"
+    )
+
+
+def test_headline_counts_refused_sdp_references():
+    rows = dict(headline_rows(sample_results()))
+    text = rows["strip · analytic trace / SDP trace"]
+    assert text == "median 1.15, max 1.2 (n=2); 1 SDP solves refused"
+
+
+def test_speed_headline_has_the_ratio_and_the_codac_note():
+    rows = headline_rows(sample_results())
+    assert ("batch", "200 ns; 200× speed-up vs one call") in rows
+    assert ("analytic", "codac is not installed") in rows
+
+
+def test_rebuilding_gives_the_same_report(tmp_path):
+    first = write_report(sample_results(), tmp_path).read_text()
+    assert write_report(sample_results(), tmp_path).read_text() == first

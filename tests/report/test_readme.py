@@ -1,0 +1,48 @@
+from optbound.report.readme import BEGIN, END, headline_markdown, update_readme
+from tests.report.sample import sample_results
+
+README = f"""# title
+
+<!-- BEGIN bench -->
+intro
+{BEGIN}
+old numbers
+{END}
+guide
+<!-- END bench -->
+tail
+"""
+
+
+def test_update_replaces_only_between_the_markers(tmp_path):
+    path = tmp_path / "README.md"
+    path.write_text(README)
+    assert update_readme(path, sample_results())
+    text = path.read_text()
+    assert "old numbers" not in text
+    assert headline_markdown(sample_results()) in text
+    before, after = README.split("old numbers")
+    assert text.startswith(before.rstrip("\n"))
+    assert text.endswith(after.lstrip("\n"))
+
+
+def test_update_is_idempotent(tmp_path):
+    path = tmp_path / "README.md"
+    path.write_text(README)
+    update_readme(path, sample_results())
+    once = path.read_text()
+    update_readme(path, sample_results())
+    assert path.read_text() == once
+
+
+def test_readme_without_markers_is_left_alone(tmp_path):
+    path = tmp_path / "README.md"
+    path.write_text("# nothing here\n")
+    assert not update_readme(path, sample_results())
+    assert path.read_text() == "# nothing here\n"
+
+
+def test_headline_states_where_the_numbers_come_from():
+    text = headline_markdown(sample_results())
+    assert "optbound bench --suite quick --seed 0" in text
+    assert "median 1.5, max 3 (n=3)" in text

@@ -1,0 +1,134 @@
+"""``optbound bench`` and ``optbound report DIR`` end to end on the tiny suite.
+
+The tiny suite runs the same families through the same code path as quick, only smaller.
+"""
+
+import json
+
+import pytest
+
+from benchmarks.registry import families
+from benchmarks.runner import run_suite
+from optbound.cli import main
+from optbound.report import load_results
+
+TIGHTNESS = [f.name for f in families() if f.kind == "tightness"]
+
+
+@pytest.fixture(scope="module")
+def bench_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    argv = ["bench", "--suite", "tiny", "--out", str(out), "--jobs", "2", "--no-progress"]
+    assert main([*argv, "--no-readme"]) == 0
+    return out
+
+
+def test_bench_writes_a_complete_report(bench_dir, capsys):
+    results = load_results(bench_dir)
+    assert results["meta"]["suite"] == "tiny"
+    for name, fam in results["families"].items():
+        # codac is optional: its family may report a note instead of records
+        assert fam["status"] == "ok", (name, fam["reason"])
+        assert not fam["errors"], (name, fam["errors"])
+        assert fam["records"] or fam["notes"], name
+    text = (bench_dir / "report.md").read_text()
+    assert "## Headline" in text
+    for name in TIGHTNESS:
+        assert f"![{name} ratio histograms](hist_{name}.png)" in text
+        assert (bench_dir / f"hist_{name}.png").stat().st_size > 10_000
+    for png in ("recursive.png", "instances_2d.png"):
+        assert (bench_dir / png).stat().st_size > 10_000
+    assert (bench_dir / "tightness.csv").read_text().startswith("family,variant,dim")
+    assert (bench_dir / "speed.csv").exists()
+
+
+def test_tiny_ratios_are_outer_bounds_of_a_tight_reference(bench_dir):
+    """On one ellipsoid and one strip the clipped SDP is the true optimum, so volume ratios
+    must be >= 1 up to solver accuracy, and no analytic bound may miss a sampled point."""
+    strip = load_results(bench_dir)["families"]["strip"]["records"]
+    volume = [r["ratio"] for r in strip if r["criterion"] == "volume" and r["ratio"] is not None]
+    assert volume and min(volume) > 1 - 1e-4
+    assert sum(r["outside"] for r in strip) == 0
+
+
+def test_report_rebuilds_from_results_json_alone(bench_dir, capsys):
+    report = bench_dir / "report.md"
+    before = report.read_text()
+    report.unlink()
+    for png in bench_dir.glob("*.png"):
+        png.unlink()
+    assert main(["report", str(bench_dir)]) == 0
+    assert report.read_text() == before
+    assert (bench_dir / "instances_2d.png").exists()
+    assert "Report:" in capsys.readouterr().out
+
+
+def test_pool_and_serial_runs_give_the_same_ratios():
+    def ratios(jobs):
+        res = run_suite("tiny", seed=4, jobs=jobs, progress=False, names=["strip"])
+        return [
+            (r["seed"], r["criterion"], r["ratio"]) for r in res["families"]["strip"]["records"]
+        ]
+
+    assert ratios(1) == ratios(2)
+
+
+def test_seed_changes_the_instances():
+    def seeds(seed):
+        res = run_suite("tiny", seed=seed, jobs=1, progress=False, names=["minkowski"])
+        return {r["seed"] for r in res["families"]["minkowski"]["records"]}
+
+    assert seeds(0).isdisjoint(seeds(1))
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["bench", "--suite", "huge"], "invalid choice: 'huge'"),
+        (["bench", "--seed", "-1"], "seed must be >= 0"),
+        (["bench", "--seed", "x"], "seed must be an integer"),
+        (["bench", "--jobs", "0"], "jobs must be >= 1"),
+        (["bench", "--family", "nope"], "invalid choice: 'nope'"),
+        (["frobnicate"], "invalid choice: 'frobnicate'"),
+    ],
+)
+def test_bad_arguments_fail_with_a_clear_message(argv, message, capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    assert message in capsys.readouterr().err
+
+
+def test_report_of_a_missing_or_empty_directory_fails_clearly(tmp_path, capsys):
+    for target, message in ((tmp_path / "nowhere", "does not exist"), (tmp_path, "no results")):
+        with pytest.raises(SystemExit) as exc:
+            main(["report", str(target)])
+        assert exc.value.code == 2
+        assert message in capsys.readouterr().err
+
+
+def test_report_of_a_corrupt_results_file_fails_clearly(tmp_path, capsys):
+    (tmp_path / "results.json").write_text(json.dumps({"schema": 1}))
+    with pytest.raises(SystemExit):
+        main(["report", str(tmp_path)])
+    assert "lacks the 'meta' section" in capsys.readouterr().err
+
+
+def test_bench_out_must_be_a_directory(tmp_path, capsys):
+    target = tmp_path / "file.txt"
+    target.write_text("x")
+    with pytest.raises(SystemExit):
+        main(["bench", "--suite", "tiny", "--out", str(target)])
+    assert "is not a directory" in capsys.readouterr().err
+
+
+def test_no_command_prints_help(capsys):
+    assert main([]) == 0
+    assert "bench" in capsys.readouterr().out
+
+
+def test_bench_leaves_the_rounding_mode_alone(bench_dir):
+    """codac sets the FPU to round upward; the bench must not leak that into this process."""
+    one, half_ulp = 1.0, 2.0**-53
+    assert one + half_ulp == one  # ties to even under round-to-nearest; 1 + ulp when upward
+    assert float("1.2") == 1.2
