@@ -45,24 +45,23 @@ def from_masks(certainly_true: np.ndarray, certainly_false: np.ndarray) -> np.nd
     return np.add(certainly_true, ~certainly_false, dtype=TRI_DTYPE)
 
 
-def tri_and(*tests) -> np.ndarray:
-    """Conjunction: TRUE only if all are TRUE, FALSE if any is FALSE."""
+def _fold(ufunc, name: str, tests) -> np.ndarray:
     if not tests:
-        raise ValueError("tri_and needs at least one test")
+        raise ValueError(f"{name} needs at least one test")
     out = as_tri(tests[0])
     for t in tests[1:]:
-        out = np.minimum(out, as_tri(t))
+        out = ufunc(out, as_tri(t))
     return out
+
+
+def tri_and(*tests) -> np.ndarray:
+    """Conjunction: TRUE only if all are TRUE, FALSE if any is FALSE (FALSE < UNKNOWN < TRUE)."""
+    return _fold(np.minimum, "tri_and", tests)
 
 
 def tri_or(*tests) -> np.ndarray:
     """Disjunction: TRUE if any is TRUE, FALSE only if all are FALSE."""
-    if not tests:
-        raise ValueError("tri_or needs at least one test")
-    out = as_tri(tests[0])
-    for t in tests[1:]:
-        out = np.maximum(out, as_tri(t))
-    return out
+    return _fold(np.maximum, "tri_or", tests)
 
 
 def tri_not(t) -> np.ndarray:
