@@ -230,7 +230,8 @@ def outer_ellipsoid(
         Conic solver.
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
-        bound on dense samples of the set and its boundary; see ``optbound.optimal.lower``).
+        bound on points of the set pushed toward its extreme points; see
+        ``optbound.optimal.lower``).
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 

@@ -16,19 +16,31 @@ simplex, with ``mu = sum u_i p_i`` and ``Sigma = sum u_i (p_i - mu)(p_i - mu)^T`
   Frank-Wolfe steps;
 - projection onto ``dims``: the volume bound for the projected points.
 
-No solver is involved, so the bound holds up to float64 rounding. The points are
+No solver is involved, so the bound holds up to float64 rounding. The bound is only as good as
+the points: an enclosing ellipsoid is pinned by the set's extreme points (the corners, for an
+intersection of strips), which uniform samples and random rays almost never reach (a 5-D cube
+gave a volume bound 2.2 times too low that way). The points are:
 
-- uniform samples of the set, drawn inside a known outer ellipsoid and kept when they satisfy
-  every inequality;
-- boundary points: from one interior sample ``x0``, rays ``x0 + t d`` in random directions
-  (Gaussian, shaped by the outer ellipsoid) are followed to the first exit ``t*`` from the
-  intersection, the smallest positive root of the quadratics ``q_i(x0 + t d)`` (shortened by a
-  relative 1e-9 so the end stays inside under rounding). For a non-convex set this sees only
-  what is visible from ``x0``, which still gives a valid (if looser) bound.
+1. an interior point ``x0``: the deepest (shortest exit along the outer ellipsoid's axes) of
+   the outer ellipsoid's centre and uniform samples of the set drawn inside it;
+2. first exits: rays ``x0 + t d`` followed to the first exit ``t*`` from the intersection, the
+   smallest positive root of the quadratics ``q_i(x0 + t d)``; the directions are the axes and
+   random directions shaped first by the outer ellipsoid, then again by the exits' own rough
+   enclosing ellipsoid (the outer one can be far too long: the projection objective leaves
+   the other coordinates free);
+3. a climb toward the extreme points: ``_SEARCH_ROUNDS`` rounds, each trying for every point
+   (a) a walk along its active faces, uphill in the level of a rough enclosing ellipsoid of
+   the points (Khachiyan, refitted every ``_REFIT_EVERY`` rounds), to the first constraint
+   met (the level is convex, so the far end of the segment is the higher one; on a polytope
+   this reaches a vertex), and (b) a ray from ``x0`` past the point shifted uphill or at
+   random (for curved boundaries); a trial replaces the point when it lies farther out.
 
-In dimension <= 3 they are reduced to their convex hull's vertices; above, only the boundary
-points are kept. Either way they are subsampled if still too many (a subset still gives a
-valid bound).
+Every point is pulled back toward its start by a relative ``_SHRINK`` and kept only if every
+quadratic is negative there by more than a bound on its float64 rounding, so every point is in
+the set. For a non-convex set the rays see only what is visible from ``x0``, which still gives
+a valid (if looser) bound. Near-duplicates (rays that climbed to one vertex) are merged, and
+Khachiyan's weights are computed on a growing working set of the points farthest out (zero
+weight elsewhere), since it crawls on thousands of points near one boundary.
 """
 
 from __future__ import annotations
@@ -37,85 +49,263 @@ from collections.abc import Sequence
 from math import lgamma, log, pi
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
+from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
 from optbound.optimal.khachiyan import covariance, khachiyan_weights
 from optbound.sets import Ellipsoid, QuadraticSet
 from optbound.sets import _validate as v
 
 _SAMPLES = 20_000
-_RAYS_PER_DIM = 4_000
 _ROUNDS = 3
-_MAX_POINTS = 1_500
-_HULL_MAX_DIM = 3  # qhull is fast up to 3-D; above, its cost explodes
+_CANDIDATES = 200  # interior samples whose depth is compared when choosing x0
+_RAYS_PER_DIM = 300
+_SEARCH_ROUNDS = 20  # uphill moves along the boundary, alternating with random ones
+_FIRST_STEP = 0.3  # move length relative to the ray's length; doubled on success, else halved
+_REFIT_EVERY = 5  # rounds between refits of the enclosing ellipsoid that defines 'uphill'
+_WORKING_PER_DIM = 50  # initial working set of Khachiyan's weights, and its growth per round
+_WORKING_ROUNDS = 8
+_SHRINK = 1e-9
+_MERGE_RTOL = 1e-7
+_ACTIVE_RTOL = 1e-7
+_FACE_SWEEPS = 3
 _WEIGHT_TOL = 1e-6
 _WEIGHT_STEPS = 5_000  # any weights give a valid bound; more steps only tighten it
+_SEARCH_WEIGHT_STEPS = 500  # a rough enclosing ellipsoid is enough to rank points
 
 
-def _inside(quadratics: Sequence[QuadraticSet], X: np.ndarray) -> np.ndarray:
-    return np.all([np.asarray(q.value(X)) <= 0.0 for q in quadratics], axis=0)
+def _stack(quadratics: Sequence[QuadraticSet]) -> np.ndarray:
+    """The forms ``F_i`` stacked, shape (k, n + 1, n + 1): every query below is vectorized
+    over points and inequalities at once."""
+    return np.stack([q.F for q in quadratics])
 
 
-def _first_exit(quadratics: Sequence[QuadraticSet], x0: np.ndarray, D: np.ndarray) -> np.ndarray:
-    """Smallest ``t > 0`` with ``q_i(x0 + t d) = 0`` crossing upward, per direction (may be inf).
+def _lifted(X: np.ndarray) -> np.ndarray:
+    return np.hstack([X, np.ones((X.shape[0], 1))])
 
-    ``q(x0 + t d) = a t^2 + 2 b t + g`` with ``g = q(x0) <= 0``.
+
+def _forms(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
+    """``U_m^T F_k V_m`` for every row pair m and form k, shape (m, k)."""
+    return np.einsum("kmj,mj->mk", U @ F, V)  # U @ F broadcasts to (k, m, n + 1), on BLAS
+
+
+def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
+    """Rows of X where every ``q_i`` is negative by more than its float64 rounding bound."""
+    lifted = _lifted(X)
+    size = _forms(np.abs(lifted), np.abs(F), np.abs(lifted))
+    return np.all(_forms(lifted, F, lifted) < -4.0 * lifted.shape[1] * EPS * size, axis=1)
+
+
+def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
+    """Smallest ``t > 0`` with ``q_i(x0 + t d) = 0`` crossing upward, per row pair (may be inf).
+
+    ``X0`` is one point (n,) or one per direction (m, n). ``q(x0 + t d) = a t^2 + 2 b t + g``
+    with ``g = q(x0) <= 0``.
     """
-    t_star = np.full(D.shape[0], np.inf)
-    for q in quadratics:
-        a = np.einsum("ij,jk,ik->i", D, q.A, D)
-        b = D @ (q.A @ x0 + q.b)
-        g = float(q.value(x0))
-        disc = b * b - a * g
-        root = np.sqrt(np.maximum(disc, 0.0))
-        with np.errstate(divide="ignore", invalid="ignore"):
-            # a < 0: the concave q rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0.
-            concave = np.where((b > 0) & (disc >= 0), (b - root) / -a, np.inf)
-            quad = np.where(a > 0, (root - b) / a, concave)
-            t = np.where(a == 0, np.where(b > 0, -g / (2 * b), np.inf), quad)
-        t_star = np.minimum(t_star, np.where(t >= 0, t, np.inf))
-    return t_star
+    lifted = _lifted(np.broadcast_to(X0, D.shape))
+    D1 = np.hstack([D, np.zeros((D.shape[0], 1))])
+    a, b, g = _forms(D1, F, D1), _forms(D1, F, lifted), _forms(lifted, F, lifted)
+    disc = b * b - a * g
+    root = np.sqrt(np.maximum(disc, 0.0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # a < 0: the concave q rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0.
+        concave = np.where((b > 0) & (disc >= 0), (b - root) / -a, np.inf)
+        quad = np.where(a > 0, (root - b) / a, concave)
+        t = np.where(a == 0, np.where(b > 0, -g / (2 * b), np.inf), quad)
+    return np.min(np.where(t >= 0, t, np.inf), axis=1)
 
 
-def sample_set(quadratics: Sequence[QuadraticSet], outer: Ellipsoid, rng) -> np.ndarray:
-    """Points of the intersection (interior samples and boundary points), shape (m, n)."""
-    gen = v.rng_of(rng)
+def _interior_point(F: np.ndarray, outer: Ellipsoid, gen: np.random.Generator) -> np.ndarray:
+    """The deepest candidate for ``x0``.
+
+    Depth is the shortest exit along the outer ellipsoid's axes (in its own metric, so that
+    elongated sets are judged fairly); candidates are its centre and uniform samples.
+    """
     for attempt in range(_ROUNDS):
-        X = outer.sample(_SAMPLES * 4**attempt, gen)
-        inside = X[_inside(quadratics, X)]
-        if inside.shape[0] > outer.dim:
+        X = np.vstack([outer.center, outer.sample(_SAMPLES * 4**attempt, gen)])
+        inside = X[_inside(F, X)]
+        if inside.shape[0] > 0:
             break
     else:
-        raise ValueError("sampling found too few points of the set for a lower bound")
-    x0 = inside[np.argmin(np.linalg.norm(inside - inside.mean(axis=0), axis=1))]
-    # Directions shaped by the outer ellipsoid spread the exits evenly over elongated sets.
-    D = gen.standard_normal((_RAYS_PER_DIM * outer.dim, outer.dim)) @ outer.chol.T
-    t_star = _first_exit(quadratics, x0, D)
-    finite = np.isfinite(t_star)
-    boundary = x0 + (t_star[finite] * (1.0 - 1e-9))[:, None] * D[finite]
-    boundary = boundary[_inside(quadratics, boundary)]
-    if outer.dim > _HULL_MAX_DIM:
-        return boundary  # no hull reduction: interior samples would only dilute the bound
-    return np.vstack([inside, boundary])
+        raise ValueError("sampling found no point of the set for a lower bound")
+    candidates = inside[:_CANDIDATES]
+    axes = np.vstack([outer.chol.T, -outer.chol.T])
+    pairs = np.repeat(candidates, axes.shape[0], axis=0)
+    exits = _first_exit(F, pairs, np.tile(axes, (candidates.shape[0], 1)))
+    depth = exits.reshape(candidates.shape[0], -1).min(axis=1)
+    return candidates[int(np.argmax(depth))]
 
 
-def _reduce(points: np.ndarray, gen: np.random.Generator) -> np.ndarray:
-    if points.shape[1] <= _HULL_MAX_DIM:
-        try:
-            points = points[ConvexHull(points).vertices]
-        except QhullError:
-            pass  # flat or degenerate cloud: keep all points, validated_points will judge
-    if points.shape[0] > _MAX_POINTS:
-        points = points[gen.choice(points.shape[0], _MAX_POINTS, replace=False)]
-    return points
+def _cast(
+    F: np.ndarray, x0: np.ndarray, Z: np.ndarray, chol: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Exit points of the rays from x0 along ``chol z`` (z per row of Z), and the kept rows."""
+    D = Z @ chol.T
+    t_star = _first_exit(F, x0, D)
+    finite = np.flatnonzero(np.isfinite(t_star))
+    points = x0 + (t_star[finite] * (1.0 - _SHRINK))[:, None] * D[finite]
+    kept = _inside(F, points)
+    return points[kept], finite[kept]
+
+
+def _rough_fit(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Centre and weighted covariance of a rough minimum-volume ellipsoid around the points
+    (its shape is n times the covariance)."""
+    u, _ = khachiyan_weights(points, tol=1e-3, max_iter=_SEARCH_WEIGHT_STEPS)
+    return covariance(points, u)
+
+
+def _rough_mvee(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Centre and inverse covariance of ``_rough_fit``; its level is
+    ``(x - mean)^T inv (x - mean)`` up to a constant factor."""
+    mean, cov = _rough_fit(points)
+    return mean, np.linalg.inv(cov)
+
+
+def _level(X: np.ndarray, mean: np.ndarray, inv: np.ndarray) -> np.ndarray:
+    centered = X - mean
+    return np.einsum("ij,jk,ik->i", centered, inv, centered)
+
+
+def _unit_rows(Z: np.ndarray) -> np.ndarray:
+    return Z / np.linalg.norm(Z, axis=1, keepdims=True)
+
+
+def _distinct(points: np.ndarray) -> np.ndarray:
+    """One point of each cluster closer than ``_MERGE_RTOL`` (relative to the spread): rays
+    that climbed to one vertex nearly coincide, and make Khachiyan's matrix singular."""
+    spread = float(np.max(np.ptp(points, axis=0)))
+    keys = np.round((points - points.min(axis=0)) / (_MERGE_RTOL * spread))
+    _, first = np.unique(keys, axis=0, return_index=True)
+    return points[np.sort(first)]
+
+
+def _along_faces(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """``G`` (rows) with the outward part along the normal of each active constraint removed.
+
+    A constraint is active at a point when its first-order distance ``-q / |grad q|`` is below
+    ``_ACTIVE_RTOL`` times the point's norm scale; a few sweeps of projections approximate the
+    projection onto the faces' intersection (edges, then vertices).
+    """
+    lifted = _lifted(points)
+    normals = 2.0 * (lifted @ F[:, :, :-1])  # (k, m, n): the gradients 2 (A x + b)
+    norm2 = np.sum(normals * normals, axis=2).T
+    scale = 1.0 + np.linalg.norm(points, axis=1, keepdims=True)
+    active = -_forms(lifted, F, lifted) < _ACTIVE_RTOL * scale * np.sqrt(norm2)
+    inv_norm2 = np.where(active & (norm2 > 0), 1.0 / np.where(norm2 > 0, norm2, 1.0), 0.0)
+    for _ in range(_FACE_SWEEPS):
+        for i in range(F.shape[0]):
+            outward = np.maximum(np.sum(G * normals[i], axis=1), 0.0)
+            G = G - (outward * inv_norm2[:, i])[:, None] * normals[i]
+    return G
+
+
+def sample_set(
+    quadratics: Sequence[QuadraticSet],
+    outer: Ellipsoid,
+    rng,
+    dims: tuple[int, ...] | None = None,
+) -> np.ndarray:
+    """Points of the intersection: first exits and the points of the climb (module docstring).
+
+    ``outer`` is any ellipsoid containing the set; ``dims`` judges "farther out" by the
+    projection onto these coordinates (projection objective). Returns shape (m, n), distinct.
+    """
+    gen = v.rng_of(rng)
+    n = outer.dim
+    F = _stack(quadratics)
+    x0 = _interior_point(F, outer, gen)
+    Z = np.vstack([np.eye(n), -np.eye(n), _unit_rows(gen.standard_normal((_RAYS_PER_DIM * n, n)))])
+    first, _ = _cast(F, x0, Z, outer.chol)
+    # The outer ellipsoid can be far longer than the set (the projection objective leaves the
+    # other coordinates free): shape the rays again by the exits' own enclosing ellipsoid.
+    chol = np.linalg.cholesky(_rough_fit(validated_points(_distinct(first)))[1])
+    start = np.vstack([first, _cast(F, x0, Z, chol)[0]])
+    points = start.copy()
+    cols = list(dims) if dims else list(range(n))
+    embed = np.eye(n)[cols]
+    step = np.full(points.shape[0], _FIRST_STEP)
+    for round_ in range(_SEARCH_ROUNDS):
+        if round_ % _REFIT_EVERY == 0:
+            # With the first exits, so that it never collapses onto the few vertices reached.
+            fit = _distinct(np.vstack([start, points])[:, cols])
+            mean, inv = _rough_mvee(validated_points(fit))
+            level = _level(points[:, cols], mean, inv)
+        gradient = (points[:, cols] - mean) @ inv @ embed
+        index, new = _face_walk(F, points, _along_faces(F, points, gradient))
+        _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
+        shift = gradient @ chol if round_ % 2 == 0 else gen.standard_normal(points.shape)
+        index, new = _shifted_rays(F, x0, chol, points, shift, step)
+        success = _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
+        step = np.where(success, np.minimum(2.0 * step, 1.0), 0.5 * step)
+    return _distinct(np.vstack([start, points]))
+
+
+def _face_walk(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each point moved along its row of G to the first constraint met: (indices, new points)."""
+    t_star = _first_exit(F, points, G)
+    moving = np.flatnonzero(np.isfinite(t_star) & (t_star > 0))
+    new = points[moving] + (t_star[moving] * (1.0 - _SHRINK))[:, None] * G[moving]
+    ok = _inside(F, new)
+    return moving[ok], new[ok]
+
+
+def _shifted_rays(
+    F: np.ndarray,
+    x0: np.ndarray,
+    chol: np.ndarray,
+    points: np.ndarray,
+    shift: np.ndarray,
+    step: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Exits of the rays from x0 through each point shifted by ``step`` (relative) along its
+    row of ``shift``, in the whitened coordinates ``y = chol^{-1} (x - x0)``."""
+    Y = np.linalg.solve(chol, (points - x0).T).T
+    radius = np.linalg.norm(Y, axis=1, keepdims=True)
+    new, ok = _cast(F, x0, _unit_rows(Y + step[:, None] * radius * _unit_rows(shift)), chol)
+    return ok, new
+
+
+def _keep_higher(
+    points: np.ndarray, level: np.ndarray, index: np.ndarray, new: np.ndarray, new_level
+) -> np.ndarray:
+    """Replace ``points[index]`` by ``new`` where its level is higher (in place); which did."""
+    up = new_level > level[index]
+    points[index[up]], level[index[up]] = new[up], new_level[up]
+    success = np.zeros(points.shape[0], dtype=bool)
+    success[index[up]] = True
+    return success
+
+
+def _enclosing_weights(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Khachiyan's weights, computed on a working set of the points farthest out.
+
+    Khachiyan's algorithm crawls on thousands of points near one boundary; the weights of a
+    working set (zero elsewhere) are weights of all points, and the set grows by the points
+    its ellipsoid leaves out until none is left out by more than the tolerance. Returns the
+    working set's indices and its weights.
+    """
+    n = points.shape[1]
+    level = _level(points, *_rough_mvee(points))
+    active = np.argsort(level)[::-1][: _WORKING_PER_DIM * n]
+    for round_ in range(_WORKING_ROUNDS):
+        u, _ = khachiyan_weights(points[active], tol=_WEIGHT_TOL, max_iter=_WEIGHT_STEPS)
+        mean, cov = covariance(points[active], u)
+        centered = points - mean
+        level = np.einsum("ij,ij->i", centered, np.linalg.solve(n * cov, centered.T).T)
+        outside = np.setdiff1d(np.flatnonzero(level > 1.0 + _WEIGHT_TOL), active)
+        if outside.size == 0 or round_ == _WORKING_ROUNDS - 1:
+            break
+        worst = outside[np.argsort(level[outside])[::-1][: _WORKING_PER_DIM * n]]
+        active = np.concatenate([active, worst])
+    return active, u
 
 
 def volume_lower_bound(points: np.ndarray) -> float:
     """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume."""
     n = points.shape[1]
-    u, _ = khachiyan_weights(points, tol=_WEIGHT_TOL, max_iter=_WEIGHT_STEPS)
-    _, cov = covariance(points, u)
+    active, u = _enclosing_weights(points)
+    _, cov = covariance(points[active], u)
     sign, logdet = np.linalg.slogdet(n * cov)
     log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
     return float(np.exp(log_unit_ball + 0.5 * logdet)) if sign > 0 else 0.0
@@ -160,11 +350,13 @@ def sampled_lower_bound(
     rng,
 ) -> float:
     """Lower bound on the minimum ``objective`` over all ellipsoids containing the set."""
-    gen = v.rng_of(rng)
-    points = sample_set(quadratics, outer, gen)
+    points = sample_set(quadratics, outer, v.rng_of(rng), dims)
     if objective == "projection":
-        points = points[:, list(dims)]
-    points = validated_points(_reduce(points, gen))
+        points = _distinct(points[:, list(dims)])  # corners above one another coincide
+    points = validated_points(points)
     if objective == "trace":
-        return trace_lower_bound(points)
+        # Frank-Wolfe on a working set: the points that matter to the minimum-volume ellipsoid
+        # and those nearest the boundary of the (near-optimal) outer one.
+        near = np.argsort(outer.level(points))[::-1][: _WORKING_PER_DIM * points.shape[1]]
+        return trace_lower_bound(points[np.union1d(_enclosing_weights(points)[0], near)])
     return volume_lower_bound(points)

@@ -1,14 +1,17 @@
 """Lower bounds: valid for any weights, tight for known sets, points lie in the set."""
 
-from math import pi
+from math import gamma, pi
 
 import numpy as np
 import pytest
 
-from optbound import Ellipsoid, QuadraticSet, Strip
+from benchmarks import recursive_tightness
+from optbound import Box, Ellipsoid, QuadraticSet, Strip
+from optbound.optimal import outer_ellipsoid
 from optbound.optimal.lift import lift
 from optbound.optimal.lower import (
     _first_exit,
+    _stack,
     sample_set,
     trace_lower_bound,
     volume_lower_bound,
@@ -37,14 +40,47 @@ def test_sampled_points_are_in_the_set_and_reach_its_boundary():
     E = Ellipsoid([0.0, 0.0], np.diag([4.0, 1.0]))
     ring = QuadraticSet.from_parts(-np.eye(2), [0.0, 0.0], 0.25)  # |x| >= 0.5
     sets = [E, Strip.from_bounds([0.0, 1.0], 0.0, 2.0), ring]
-    quadratics = lift(sets)
-    X = sample_set(quadratics, E, rng=0)
+    X = sample_set(lift(sets), E, rng=0)
     assert X.shape[0] > 1000
-    assert np.all([s.contains(X, tol=1e-12) for s in sets])
+    assert np.all([s.contains(X, tol=0.0) for s in sets])
     assert np.max(E.level(X)) > 1.0 - 1e-6  # boundary points reach the ellipse
 
 
 def test_first_exit_of_a_ball_is_its_radius():
-    q = QuadraticSet.from_ellipsoid(Ellipsoid([0.0, 0.0], 4.0 * np.eye(2)))
+    F = _stack([QuadraticSet.from_ellipsoid(Ellipsoid([0.0, 0.0], 4.0 * np.eye(2)))])
     D = np.array([[1.0, 0.0], [0.0, -3.0]])
-    np.testing.assert_allclose(_first_exit([q], np.zeros(2), D), [2.0, 2.0 / 3.0])
+    np.testing.assert_allclose(_first_exit(F, np.zeros(2), D), [2.0, 2.0 / 3.0])
+
+
+def _cube(n: int) -> list:
+    # The cube [-1, 1]^n inside a ball that does not touch it: the set is the cube.
+    return [Ellipsoid(np.zeros(n), 9.0 * np.eye(n)), Box(-np.ones(n), np.ones(n))]
+
+
+@pytest.mark.parametrize("n", [2, 3, 5])
+@pytest.mark.parametrize("objective", ["volume", "trace", "projection"])
+def test_lower_bound_finds_the_corners_of_a_cube(n, objective):
+    # The optimum is the circumscribed ball (radius sqrt(n)): volume V_n n^(n/2), trace n^2,
+    # and its projection on (x0, x1) the circle of radius sqrt(2) around the square.
+    # Uniform samples or random rays almost never reach the 2^n corners that pin it.
+    dims = (0, 1) if objective == "projection" else None
+    exact = {
+        "volume": pi ** (n / 2) / gamma(n / 2 + 1) * n ** (n / 2),
+        "trace": float(n * n),
+        "projection": 2.0 * pi,
+    }[objective]
+    r = outer_ellipsoid(_cube(n), objective=objective, dims=dims, lower_bound=True, rng=n)
+    assert r.lower_bound <= exact * (1 + 1e-12)
+    assert r.lower_bound == pytest.approx(exact, rel=1e-5)
+    assert r.objective == pytest.approx(exact, rel=1e-6)
+
+
+def test_points_of_many_strips_are_strictly_in_the_set_and_bound_below_the_sdp():
+    task = {"seed": 6002, "dim": 6, "width": 0.2, "ks": [50]}
+    E0, _, strips = recursive_tightness.instance(task)
+    sets = [E0, *strips]
+    r = outer_ellipsoid(sets, objective="volume")
+    X = sample_set(lift(sets), r.ellipsoid, rng=0)
+    assert np.all([s.contains(X, tol=0.0) for s in sets])
+    bound = volume_lower_bound(X)
+    assert 0.0 < bound <= r.objective
