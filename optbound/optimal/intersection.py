@@ -29,12 +29,12 @@ The centre is ``-M^{-1} bt`` and the shape ``M^{-1}``. Objectives:
 
 For the speed of repeated solves every problem *shape* (dimension, number of inequalities,
 objective, dims) is built once with cvxpy Parameters (DPP) and cached; a re-solve only sets
-the ``F_i``. Before solving, coordinates are mapped affinely, ``x = c0 + W y``, so that the
-first bounded member is the unit ball (see ``_frame``), and each ``F_i`` is normalised. The
-answer is mapped back to x and certified from the returned ellipsoid and multipliers
-(``optbound.optimal.certify``); the eigenvalue check is done after the congruence by the
-frame, where the matrices are well conditioned, with the rounding of that congruence added to
-the margin.
+the ``F_i``. Before solving, coordinates are mapped affinely, ``x = c0 + W y``, so that an
+ellipsoid of about the intersection's size is the unit ball (see ``_frame``), and each ``F_i``
+is normalised. The answer is mapped back to x and certified from the returned ellipsoid and
+multipliers (``optbound.optimal.certify``); the eigenvalue check is done after the congruence
+by the frame, where the matrices are well conditioned, with the rounding of that congruence
+added to the margin.
 
 The optimum is an upper bound on the true minimum over all ellipsoids (the S-procedure is
 lossless for one inequality only); ``lower_bound=True`` also returns a lower bound.
@@ -53,7 +53,7 @@ from optbound.optimal import _cvx
 from optbound.optimal.certify import certify_lmi, rounding_bound
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
-from optbound.optimal.lift import Member, lift
+from optbound.optimal.lift import Member, check_clip, lift
 from optbound.optimal.lower import sampled_lower_bound
 from optbound.optimal.result import OuterResult, objective_value
 from optbound.optimal.solver import solve
@@ -68,7 +68,7 @@ _DEFINITE_RTOL = 1e-12
 @dataclass(frozen=True)
 class _Template:
     problem: cp.Problem
-    forms: tuple[cp.Parameter, ...]
+    forms: cp.Parameter
     weight: cp.Parameter | None
     M: cp.Variable
     bt: cp.Variable
@@ -79,12 +79,16 @@ class _Template:
 def intersection_template(
     n: int, k: int, objective: str, dims: tuple[int, ...] | None
 ) -> _Template:
-    """The S-procedure problem for ``k`` inequalities in R^n (built once per shape)."""
-    forms = tuple(cp.Parameter((n + 1, n + 1), symmetric=True) for _ in range(k))
+    """The S-procedure problem for ``k`` inequalities in R^n (built once per shape).
+
+    The forms are one parameter, column i the flattened ``F_i``, so that ``S`` is one
+    matrix-vector product: compiling stays fast with thousands of inequalities (``products``).
+    """
+    forms = cp.Parameter(((n + 1) ** 2, k))
     M = cp.Variable((n, n), symmetric=True)
     bt = cp.Variable(n)
     tau = cp.Variable(k, nonneg=True)
-    S = sum(tau[i] * forms[i] for i in range(k))
+    S = cp.reshape(forms @ tau, (n + 1, n + 1), order="F")
     zero = np.zeros((n, n))
     lmi = cp.bmat(
         [
@@ -115,15 +119,41 @@ def intersection_template(
     return _Template(problem, forms, weight, M, bt, tau)
 
 
+def _depth(q: QuadraticSet) -> float:
+    """``-min_x q(x)`` for a member with a positive semidefinite quadratic part, else 0."""
+    A, b, c = q.F[:-1, :-1], q.F[:-1, -1], q.F[-1, -1]
+    if np.linalg.eigvalsh(A)[0] < -_DEFINITE_RTOL * np.linalg.norm(A):
+        return 0.0
+    return float(b @ np.linalg.lstsq(A, b, rcond=None)[0] - c)
+
+
+def _frame_ellipsoid(quadratics: Sequence[QuadraticSet]) -> Ellipsoid | None:
+    """An ellipsoid of about the intersection's size: ``sum_i q_i(x) / depth_i <= 0``.
+
+    Each convex member is scaled to depth 1; the sum is <= 0 on the intersection, and with
+    many clipped strips its shape follows the thin polytope, not the (much larger) ellipsoid
+    member, which keeps the SDP well conditioned. ``None`` if the sum is not an ellipsoid.
+    """
+    depths = np.array([_depth(q) for q in quadratics])
+    used = depths > 0.0
+    if not np.any(used):
+        return None
+    F = sum(q.F / d for q, d, u in zip(quadratics, depths, used, strict=True) if u)
+    total = QuadraticSet(F)
+    return total.as_ellipsoid() if total.is_bounded else None
+
+
 def _frame(
     quadratics: Sequence[QuadraticSet], dims: tuple[int, ...] | None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Affine frame ``x = c + W y`` in which the first bounded member is the unit ball.
+    """Affine frame ``x = c + W y`` in which a set of about the intersection's size is the ball.
 
-    ``W`` is the Cholesky factor of its shape, taken with the ``dims`` coordinates first for
-    the projection objective; then ``x_dims`` depends on ``y_dims`` only, so projections map to
-    projections. The S-procedure is invariant under the map and the objectives change by
-    constants (trace: it becomes ``tr(W^T W C_y)``), so the frame only improves conditioning.
+    That set is ``_frame_ellipsoid`` with more than two members, else the first bounded
+    member (one ellipsoid is its own frame). ``W`` is the Cholesky factor of its shape, taken
+    with the ``dims`` coordinates first for the projection objective; then ``x_dims`` depends
+    on ``y_dims`` only, so projections map to projections. The S-procedure is invariant under
+    the map and the objectives change by constants (trace: it becomes ``tr(W^T W C_y)``), so
+    the frame only improves conditioning.
     """
     n = quadratics[0].dim
     bounded = next((q for q in quadratics if q.is_bounded), None)
@@ -132,6 +162,8 @@ def _frame(
     ellipsoid = bounded.as_ellipsoid()
     if ellipsoid is None:
         raise EmptyIntersectionError(f"the quadratic set {bounded!r} is empty")
+    if len(quadratics) > 2:
+        ellipsoid = _frame_ellipsoid(quadratics) or ellipsoid
     order = list(dims) + [i for i in range(n) if i not in dims] if dims else list(range(n))
     W = np.zeros((n, n))
     W[np.ix_(order, order)] = np.linalg.cholesky(ellipsoid.shape[np.ix_(order, order)])
@@ -206,7 +238,8 @@ def outer_ellipsoid(
     intersection: Sequence[Member],
     objective: str = "volume",
     dims: Sequence[int] | None = None,
-    clip: bool = True,
+    clip: str | bool = "intersection",
+    products: bool = False,
     solver: str = "CLARABEL",
     lower_bound: bool = False,
     rng=0,
@@ -222,10 +255,19 @@ def outer_ellipsoid(
         onto ``dims`` (see the module docstring for the projection derivation).
     dims : sequence of int, optional
         Coordinates of the projection (``objective="projection"`` only).
-    clip : bool
-        Clip strips and half-spaces to the extent of the bounded members first (default).
-        The S-procedure is not tight with a strip whose far plane misses the ellipsoid; the
-        raw problem (``clip=False``) returns the raw [HS96, eq. (24)] family's optimum instead.
+    clip : {"intersection", "ellipsoids", False}
+        How strips, half-spaces and boxes are clipped before the S-procedure (the set is
+        unchanged; ``True`` means the default, ``"intersection"``). ``"ellipsoids"``: to the
+        extent of each bounded member; the S-procedure is not tight with a strip whose far
+        plane misses the ellipsoid, and the raw problem (``False``) returns the raw
+        [HS96, eq. (24)] family's optimum instead. ``"intersection"``: then to the exact
+        extent of each normal over the first bounded member ∩ all the linear ranges (one
+        certified SOCP, ``optbound.optimal.extents``); with many strips this is much tighter
+        (README, optimal section), and with one strip it is the same as ``"ellipsoids"``.
+    products : bool
+        Also impose the pair products of the (clipped) linear ranges, four per pair
+        (``optbound.optimal.lift``): tighter for many strips, at ``2 r (r - 1)`` extra
+        multipliers for ``r`` ranges (README, optimal section, for the measured effect).
     solver : {"CLARABEL", "SCS"}
         Conic solver.
     lower_bound : bool
@@ -239,8 +281,9 @@ def outer_ellipsoid(
     -------
     OuterResult
         Certified; ``multipliers`` has one entry per quadratic inequality of
-        ``optbound.optimal.lift.lift(intersection, clip)`` (one per member, one per finite
-        coordinate of a Box), valid for the original (unscaled) inequalities.
+        ``optbound.optimal.lift.lift(intersection, clip, products)`` (one per member, one per
+        finite coordinate of a Box, then the products), valid for the original (unscaled)
+        inequalities.
 
     Raises
     ------
@@ -255,7 +298,7 @@ def outer_ellipsoid(
         For bad arguments, or when no S-procedure certificate can exist (unbounded
         intersection, or one bounded by half-spaces only).
     """
-    quadratics = lift(intersection, clip=clip)
+    quadratics = lift(intersection, clip=clip, products=products)
     n, k = quadratics[0].dim, len(quadratics)
     dims_t = _check_dims(objective, dims, n)
     center, W = _frame(quadratics, dims_t)
@@ -266,8 +309,7 @@ def outer_ellipsoid(
     _require_certificate(normalized)
 
     template = intersection_template(n, k, objective, dims_t)
-    for param, F in zip(template.forms, normalized, strict=True):
-        param.value = F
+    template.forms.value = np.stack([F.ravel(order="F") for F in normalized], axis=1)
     if template.weight is not None:
         weight = W.T @ W
         template.weight.value = 0.5 * (weight + weight.T) / np.linalg.norm(weight)
@@ -300,6 +342,11 @@ def outer_ellipsoid(
 
     bound = None
     if lower_bound:
+        # The same set, without the planes clipped to touch its vertices: with those, the
+        # boundary points near a vertex are nearly active in several forms at once and fail
+        # the float64 margin of ``lower``.
+        if check_clip(clip) == "intersection":
+            quadratics = lift(intersection, clip="ellipsoids")
         bound = sampled_lower_bound(quadratics, ellipsoid, objective, dims_t, rng)
     return OuterResult(
         ellipsoid=ellipsoid,

@@ -9,11 +9,13 @@ from optbound import Ellipsoid
 MIN_POINTS = 10_000
 
 
-def points_of(sets, rng, m: int = MIN_POINTS) -> np.ndarray:
+def points_of(sets, rng, m: int = MIN_POINTS, proposal: Ellipsoid | None = None) -> np.ndarray:
     """At least ``m`` points of the intersection of ``sets`` (uniform inside and on the boundary
-    of the first Ellipsoid, kept when every set contains them; tolerance 0)."""
+    of ``proposal``, by default the first Ellipsoid, kept when every set contains them;
+    tolerance 0). A small set needs a proposal that contains it closely."""
     gen = np.random.default_rng(rng)
-    proposal = next(s for s in sets if isinstance(s, Ellipsoid))
+    if proposal is None:
+        proposal = next(s for s in sets if isinstance(s, Ellipsoid))
     kept = np.empty((0, proposal.dim))
     while kept.shape[0] < m:
         X = np.vstack([proposal.sample(4 * m, gen), proposal.sample_boundary(m, gen)])
