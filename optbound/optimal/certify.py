@@ -43,6 +43,29 @@ def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
     return float(np.linalg.eigvalsh(P - G)[-1])
 
 
+def _smallest_inflation(
+    P: np.ndarray, fixed: np.ndarray, S: np.ndarray, delta: float
+) -> tuple[float, float]:
+    """Smallest inflation ``alpha = sqrt(lambda_max(P, R))`` over the betas, and its beta.
+
+    ``R = G0 + beta S - delta I`` for every beta at once: with ``R = V D V^T`` (D > 0),
+    ``lambda_max(P, R)`` is the largest eigenvalue of ``D^{-1/2} V^T P V D^{-1/2}``. Betas
+    whose ``R`` is not definite are skipped.
+    """
+    betas = np.asarray(_BETAS)
+    R = fixed + betas[:, None, None] * S - delta * np.eye(fixed.shape[0])
+    d, V = np.linalg.eigh(R)
+    definite = d[:, 0] > 0
+    if not np.any(definite):
+        raise CertificationError("the multipliers certify no inflation of the solver's ellipsoid")
+    d, V = d[definite], V[definite]
+    scaled = V / np.sqrt(d)[:, None, :]
+    W = scaled.transpose(0, 2, 1) @ P @ scaled
+    alphas = np.sqrt(np.maximum(1.0, np.linalg.eigvalsh(W)[:, -1]))
+    best = int(np.argmin(alphas))
+    return float(alphas[best]), float(betas[definite][best])
+
+
 def certify_lmi(
     ellipsoid: Ellipsoid,
     form: Callable[[Ellipsoid], np.ndarray],
@@ -97,19 +120,7 @@ def certify_lmi(
     delta = margin(P)
     if _worst_eig(P, fixed + S) <= -delta:
         return ellipsoid, 1.0, 1.0
-    best = None
-    for beta in _BETAS:
-        try:
-            chol = np.linalg.cholesky(fixed + beta * S - delta * np.eye(size))
-        except np.linalg.LinAlgError:
-            continue
-        W = np.linalg.solve(chol, np.linalg.solve(chol, P).T)
-        alpha = max(1.0, float(np.sqrt(np.linalg.eigvalsh(0.5 * (W + W.T))[-1])))
-        if best is None or alpha < best[0]:
-            best = (alpha, beta)
-    if best is None:
-        raise CertificationError("the multipliers certify no inflation of the solver's ellipsoid")
-    alpha, beta = best
+    alpha, beta = _smallest_inflation(P, fixed, S, delta)
     for attempt in range(_RETRIES):
         candidate = ellipsoid.scaled(alpha)
         P = form(candidate)

@@ -153,7 +153,9 @@ def lift(
         for member in members
     ]
     flat = [row for rows in ranges if rows for row in rows]
-    if clip == "intersection" and bounded and flat:
+    # With a single linear row, its range clipped to the ellipsoid already is its exact range
+    # over the intersection with that ellipsoid: the extents solve could not shrink it.
+    if clip == "intersection" and bounded and len(flat) >= 2:
         A = np.array([a for a, _, _ in flat])
         lo, hi = clip_to_intersection(
             bounded[0], A, np.array([r[1] for r in flat]), np.array([r[2] for r in flat])
