@@ -31,7 +31,7 @@ def instance(rng: np.random.Generator, dim: int = 3) -> tuple[Ellipsoid, Strip]:
 
 
 def _timed_call(E: Ellipsoid, S: Strip, rebuild: bool) -> tuple[float, float]:
-    """Wall time of one full call and the time inside ``problem.solve`` (seconds)."""
+    """Wall time of one full call and the time inside ``optimal.solver.solve`` (seconds)."""
     from optbound.optimal import intersection
 
     if rebuild:
@@ -49,7 +49,7 @@ def run(n_solves: int = 50, seed: int = 0) -> dict:
     dict
         ``cached_s``, ``rebuilt_s`` (median wall time of a full call), ``speedup``
         (rebuilt / cached), ``cached_solve_s`` / ``rebuilt_solve_s`` (median time inside
-        ``problem.solve``), ``n_solves`` and ``dim``.
+        ``optimal.solver.solve``), ``n_solves`` and ``dim``.
     """
     rng = np.random.default_rng(seed)
     times = {True: [], False: []}
@@ -78,8 +78,8 @@ if __name__ == "__main__":
     print(
         f"3-D ellipsoid ∩ strip, {numbers['n_solves']} solves each (median wall time per call):\n"
         f"  cached problem (DPP parameters): {1e3 * numbers['cached_s']:.2f} ms"
-        f"  (inside problem.solve: {1e3 * numbers['cached_solve_s']:.2f} ms)\n"
+        f"  (inside the solve: {1e3 * numbers['cached_solve_s']:.2f} ms)\n"
         f"  rebuilt every time:              {1e3 * numbers['rebuilt_s']:.2f} ms"
-        f"  (inside problem.solve: {1e3 * numbers['rebuilt_solve_s']:.2f} ms)\n"
+        f"  (inside the solve: {1e3 * numbers['rebuilt_solve_s']:.2f} ms)\n"
         f"  speed-up: {numbers['speedup']:.1f}x"
     )

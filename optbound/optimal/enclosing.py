@@ -85,7 +85,7 @@ def mvee(points, solver: str = "CLARABEL") -> OuterResult:
     scale = float(np.max(np.linalg.norm(X - center, axis=1)))
     template = mvee_template(m, n)
     template.points.value = ((X - center) / scale).T
-    solve_time = solve(template.problem, solver)
+    solve_time = solve(template.problem, solver, primal_only=True)
     A_inv = np.linalg.inv(template.A.value)
     candidate = Ellipsoid(center - scale * A_inv @ template.b.value, scale**2 * A_inv @ A_inv.T)
     ellipsoid, inflation = certify_points(candidate, X)

@@ -314,7 +314,7 @@ def outer_ellipsoid(
         weight = W.T @ W
         template.weight.value = 0.5 * (weight + weight.T) / np.linalg.norm(weight)
     try:
-        solve_time = solve(template.problem, solver)
+        solve_time = solve(template.problem, solver, primal_only=True)
     except SolverError as err:
         if err.status == cp.INFEASIBLE:
             raise SolverError(

@@ -120,7 +120,7 @@ def minkowski_outer(
     if template.weight is not None:
         weight = W.T @ W
         template.weight.value = 0.5 * (weight + weight.T) / np.linalg.norm(weight)
-    solve_time = solve(template.problem, solver)
+    solve_time = solve(template.problem, solver, primal_only=True)
     X = template.matrix.value
     shape_y = np.linalg.inv(X) if objective == "volume" else X
     center = np.sum([e.center for e in ellipsoids], axis=0)

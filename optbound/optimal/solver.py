@@ -17,6 +17,17 @@ A solve whose status is not exactly "optimal" is retried once with a more conser
 setting (equilibration off, shorter steps, more iterations): our data are already normalised
 in a whitened frame, so equilibration has nothing to fix. If the retry is not "optimal"
 either, ``SolverError`` is raised; an inaccurate answer is never accepted.
+
+Fast re-solve (``primal_only=True``, Clarabel only): once a problem has been solved normally,
+its later solves skip the parts of ``problem.solve`` that a cached template does not need.
+cvxpy's compiled parameter map (``ParamConeProg``, built by the first solve) gives Clarabel's
+data as one sparse product with the parameter vector, Clarabel is called directly with the
+first ``ATTEMPTS`` setting, and only the primal values are mapped back, through cvxpy's own
+inverses of its reductions (e.g. the packing of symmetric variables). Dual values are not
+recovered (they keep those of an earlier solve), so only callers that read primal values opt
+in. Any Clarabel status but "Solved" falls back to the full path with its retries and
+refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same statuses and
+values.
 """
 
 from __future__ import annotations
@@ -26,6 +37,11 @@ import warnings
 from functools import cache
 
 import cvxpy as cp
+import numpy as np
+import scipy.sparse as sp
+from cvxpy.cvxcore.python import canonInterface
+from cvxpy.reductions.solution import Solution
+from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import CLARABEL, dims_to_solver_cones
 
 from optbound.optimal.errors import SolverError
 
@@ -78,8 +94,74 @@ def _status_of(problem: cp.Problem, name: str, options: dict) -> str:
     return problem.status
 
 
-def solve(problem: cp.Problem, solver: str) -> float:
+def _compiled(problem: cp.Problem):
+    """cvxpy's compiled Clarabel program of ``problem`` if the fast path can use it, else None."""
+    cache = problem._cache  # filled by the first problem.solve with these arguments
+    if cache.param_prog is None or cache.key != cache.make_key("CLARABEL", False, False, None):
+        return None
+    program = cache.param_prog
+    # Our templates have parameters, and no quadratic objective or variable bounds, which are
+    # not passed on here.
+    unsupported = (program.P, program.lb_tensor, program.ub_tensor)
+    if program.total_param_size == 0 or any(part is not None for part in unsupported):
+        return None
+    return program
+
+
+def _clarabel_data(
+    problem: cp.Problem, program
+) -> tuple[np.ndarray, float, sp.csc_array, np.ndarray]:
+    """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``."""
+    for reduction in problem._cache.solving_chain.reductions:
+        reduction.update_parameters(problem)
+    params = canonInterface.get_parameter_vector(
+        program.total_param_size,
+        program.param_id_to_col,
+        program.param_id_to_size,
+        lambda key: np.asarray(program.id_to_param[key].value),
+    )
+    q = program.q @ params
+    # [A, b] is a CSC matrix with a fixed pattern whose values are linear in the parameters
+    # (cvxpy's ``ReducedMat``).
+    program.reduced_A.cache()
+    values = program.reduced_A.reduced_mat @ params
+    indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
+    split = indptr[-2]
+    A = sp.csc_array((-values[:split], indices[:split], indptr[:-1]), shape=(rows, cols - 1))
+    b = np.zeros(rows)
+    b[indices[split:]] = values[split:]
+    return np.ravel(q[:-1]), float(q[-1]), A, b
+
+
+def _fast_solve(problem: cp.Problem) -> bool:
+    """Re-solve a compiled ``problem`` with Clarabel directly; True if Clarabel "Solved" it."""
+    import clarabel
+
+    program = _compiled(problem)
+    if program is None:
+        return False
+    c, offset, A, b = _clarabel_data(problem, program)
+    settings = CLARABEL.parse_solver_opts(False, ATTEMPTS["CLARABEL"][0])
+    P = sp.csc_array((c.size, c.size))
+    cones = dims_to_solver_cones(program.cone_dims)
+    result = clarabel.DefaultSolver(P, c, A, b, cones, settings).solve()
+    if str(result.status) != "Solved":
+        return False
+    x = {program.x.id: np.asarray(result.x)}
+    solution = Solution(cp.OPTIMAL, result.obj_val + offset, x, {}, {})
+    # cvxpy's own inverses of its reductions (skipping the solver's, which recovers duals).
+    chain = problem._cache.solving_chain.reductions[:-1]
+    for reduction, inverse in reversed(list(zip(chain, problem._cache.inverse_data, strict=True))):
+        solution = reduction.invert(solution, inverse)
+    problem.unpack(solution)
+    return True
+
+
+def solve(problem: cp.Problem, solver: str, primal_only: bool = False) -> float:
     """Solve ``problem`` in place and return the wall time of all attempts in seconds.
+
+    With ``primal_only`` (the caller reads no dual values), re-solves with Clarabel take the
+    fast path described in the module docstring.
 
     Raises
     ------
@@ -88,8 +170,11 @@ def solve(problem: cp.Problem, solver: str) -> float:
         refused); an infeasible problem is not retried.
     """
     name = check_solver(solver)
+    fast = primal_only and name == "CLARABEL"
     statuses = []
     start = time.perf_counter()
+    if fast and _fast_solve(problem):
+        return time.perf_counter() - start
     for options in ATTEMPTS[name]:
         status = _status_of(problem, name, options)
         if status == cp.OPTIMAL:

@@ -1,10 +1,19 @@
-"""Solver handling: names, the Clarabel version check, statuses that are refused."""
+"""Solver handling: names, the Clarabel version check, statuses that are refused, and the fast
+re-solve path (``solve(..., primal_only=True)``) against ``problem.solve``.
+
+For the fast path, each public call leaves its cached template with that instance's parameter
+values; the template is then solved by both paths with the same Clarabel settings, which must
+give the same status and the same values of every variable.
+"""
 
 import cvxpy as cp
+import numpy as np
 import pytest
 
-from optbound.optimal import SolverError
+from optbound import Ellipsoid
+from optbound.optimal import SolverError, enclosing, intersection, minkowski, mvee, solver
 from optbound.optimal.solver import check_solver, solve
+from tests.analytic.instances import random_ellipsoid, strip_relative_to
 
 
 def test_names_are_canonicalised_and_unknown_refused():
@@ -44,3 +53,86 @@ def test_non_optimal_statuses_raise_with_the_status(status):
 
 def test_optimal_returns_a_time():
     assert solve(_FakeProblem(cp.OPTIMAL), "CLARABEL") >= 0.0
+
+
+RTOL = 1e-9
+SEEDS = range(10)
+
+
+@pytest.fixture
+def solved_problems(monkeypatch):
+    """The problems solved by the public calls made during a test, in order."""
+    problems = []
+
+    def recording_solve(problem, name, primal_only=False):
+        problems.append(problem)
+        return solver.solve(problem, name, primal_only=primal_only)
+
+    for module in (intersection, minkowski, enclosing):
+        monkeypatch.setattr(module, "solve", recording_solve)
+    return problems
+
+
+def _assert_paths_agree(problem: cp.Problem) -> None:
+    fast_solved = solver._fast_solve(problem)
+    fast = [v.value.copy() for v in problem.variables()] if fast_solved else None
+    status = solver._status_of(problem, "CLARABEL", solver.ATTEMPTS["CLARABEL"][0])
+    assert fast_solved == (status == cp.OPTIMAL)
+    assert fast_solved, "every instance here should solve"
+    for value, variable in zip(fast, problem.variables(), strict=True):
+        scale = max(1.0, np.max(np.abs(variable.value)))
+        np.testing.assert_allclose(value, variable.value, rtol=0, atol=RTOL * scale)
+
+
+def _strip_sets(n: int, seed: int) -> list:
+    rng = np.random.default_rng(seed)
+    E = random_ellipsoid(rng, n)
+    return [E, strip_relative_to(E, rng.standard_normal(n), rng.uniform(-0.5, 0.5), 0.3)]
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 6])
+@pytest.mark.parametrize("objective", ["volume", "trace", "projection"])
+def test_strip_instances(solved_problems, n, objective):
+    dims = [0, n - 1] if objective == "projection" else None
+    for seed in SEEDS:
+        intersection.outer_ellipsoid(_strip_sets(n, seed), objective=objective, dims=dims)
+        _assert_paths_agree(solved_problems[-1])
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 6])
+@pytest.mark.parametrize("objective", ["volume", "trace"])
+def test_minkowski_instances(solved_problems, n, objective):
+    for seed in SEEDS:
+        rng = np.random.default_rng(seed)
+        summands = [random_ellipsoid(rng, n) for _ in range(3)]
+        minkowski.minkowski_outer(*summands, objective=objective)
+        _assert_paths_agree(solved_problems[-1])
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 6])
+def test_mvee_instances(solved_problems, n):
+    for seed in SEEDS:
+        rng = np.random.default_rng(seed)
+        mvee(Ellipsoid(np.zeros(n), np.eye(n)).sample(4 * n, rng))
+        _assert_paths_agree(solved_problems[-1])
+
+
+def test_re_solves_take_the_fast_path(solved_problems, monkeypatch):
+    """After the first solve of a template, the full ``problem.solve`` is not called again."""
+    calls = []
+    full = solver._status_of
+    monkeypatch.setattr(solver, "_status_of", lambda *args: calls.append(args) or full(*args))
+    for seed in SEEDS:
+        intersection.outer_ellipsoid(_strip_sets(7, seed))
+    assert len(calls) <= 1
+    assert len(solved_problems) == len(SEEDS)
+
+
+def test_a_failed_fast_solve_falls_back_to_the_full_path(solved_problems, monkeypatch):
+    intersection.outer_ellipsoid(_strip_sets(3, 0))
+    monkeypatch.setattr(solver, "_fast_solve", lambda problem: False)
+    calls = []
+    monkeypatch.setattr(solver, "_status_of", lambda *args: calls.append(args) or cp.INFEASIBLE)
+    with pytest.raises(SolverError):
+        solver.solve(solved_problems[-1], "CLARABEL", primal_only=True)
+    assert len(calls) == 1
