@@ -13,10 +13,11 @@ up to 1e6; ``tests/optimal/test_hard_instances.py``):
   degenerate (only a Schur complement of M is determined). With shorter steps none of the
   17,400 (the full suite's instances for suite seeds 0, 1, 2) stalled, for about 4 % more time.
 
-A solve whose status is not exactly "optimal" is retried once with a more conservative
-setting (equilibration off, shorter steps, more iterations): our data are already normalised
-in a whitened frame, so equilibration has nothing to fix. If the retry is not "optimal"
-either, ``SolverError`` is raised; an inaccurate answer is never accepted.
+A solve whose status is not exactly "optimal" is retried with Clarabel's default gap
+tolerances, then with a more conservative setting (equilibration off, shorter steps, more
+iterations): our data are already normalised in a whitened frame, so equilibration has
+nothing to fix. If no attempt is "optimal", ``SolverError`` is raised; an inaccurate answer
+is never accepted.
 
 Fast re-solve (``primal_only=True``, Clarabel only): once a problem has been solved normally,
 its later solves skip the parts of ``problem.solve`` that a cached template does not need.
@@ -52,11 +53,13 @@ _MIN_CLARABEL = (0, 5, 0)
 # objective values of narrow sets its default 1e-8 acts as an absolute tolerance: a min-trace
 # reference came out 6.5e-4 above the analytic optimum (benchmark strip, seed 798589535).
 # Tighter gaps bring every quick-suite reference within 1.1e-5 of it, for ~9 % more time.
+# Where they cannot be reached (e.g. an MVEE of hundreds of points), the default gaps follow.
 _GAPS = {"tol_gap_abs": 1e-14, "tol_gap_rel": 1e-10}
 ATTEMPTS = {
     "CLARABEL": (
         {"max_step_fraction": 0.9, **_GAPS},
-        {"max_step_fraction": 0.8, "equilibrate_enable": False, "max_iter": 500, **_GAPS},
+        {"max_step_fraction": 0.9},
+        {"max_step_fraction": 0.8, "equilibrate_enable": False, "max_iter": 500},
     ),
     "SCS": ({"eps_abs": 1e-9, "eps_rel": 1e-9, "max_iters": 200_000},),
 }
