@@ -52,16 +52,7 @@ def run_strip(task: dict) -> list[dict]:
     sdp = per_call(
         lambda: optimal.outer_ellipsoid(intersection=[E, S], objective="volume"), repeat=3
     )
-    out = [
-        speed_record(NAME, f"strip update, one call ({DIM}-D, volume)", one),
-        speed_record(
-            NAME,
-            f"SDP outer_ellipsoid, one solve ({DIM}-D, volume)",
-            sdp,
-            ratio=sdp / one,
-            ratio_label="slower than one analytic call",
-        ),
-    ]
+    out = one_vs_sdp("strip update, one call", one, "SDP outer_ellipsoid, one solve", sdp)
     for count in task["batches"]:
         centers, shapes, a, b = batch_instances(rng, count, DIM)
         total = per_call(
@@ -92,11 +83,16 @@ def run_minkowski(task: dict) -> list[dict]:
     E1, E2 = random_ellipsoid(rng, DIM, 1e2), random_ellipsoid(rng, DIM, 1e2, scale=0.1)
     one = per_call(lambda: analytic.minkowski_sum(E1, E2, criterion="volume"))
     sdp = per_call(lambda: optimal.minkowski_outer(E1, E2, objective="volume"), repeat=3)
+    return one_vs_sdp("Minkowski sum, one call", one, "SDP minkowski_outer, one solve", sdp)
+
+
+def one_vs_sdp(analytic: str, one: float, solver: str, sdp: float) -> list[dict]:
+    """Records of one analytic call and of the SDP solve it replaces, with their ratio."""
     return [
-        speed_record(NAME, f"Minkowski sum, one call ({DIM}-D, volume κ)", one),
+        speed_record(NAME, f"{analytic} ({DIM}-D, volume)", one),
         speed_record(
             NAME,
-            f"SDP minkowski_outer, one solve ({DIM}-D, volume)",
+            f"{solver} ({DIM}-D, volume)",
             sdp,
             ratio=sdp / one,
             ratio_label="slower than one analytic call",

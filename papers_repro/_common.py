@@ -8,21 +8,12 @@ from pathlib import Path
 
 import numpy as np
 
+from optbound.report.figures import pyplot
 from optbound.report.tables import markdown_table
 from optbound.sets import Ellipsoid, Strip
 
 DEFAULT_OUT = Path(__file__).resolve().parent / "out"
 CLAIM_HEADERS = ("quantity", "paper", "optbound")
-
-
-def pyplot():
-    """matplotlib.pyplot with the non-interactive Agg backend (works without a display)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 def save_figure(fig, out_dir: Path, name: str) -> Path:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets._validate import SYMMETRY_RTOL
+from optbound.sets._validate import SINGULAR_RTOL, SYMMETRY_RTOL
 
 
 def finite_array(name: str, value, ndim: int) -> np.ndarray:
@@ -40,14 +40,21 @@ def ellipsoid_stack(
         first = int(np.argmax(asym > SYMMETRY_RTOL * scale))
         raise ValueError(f"{shapes_name} must be symmetric (instance {first} is not)")
     C = 0.5 * (C + C.transpose(0, 2, 1))
+    # The same criterion as a single Ellipsoid (``_validate.spd_matrix``): Cholesky must succeed
+    # and no pivot may be at rounding level of the largest diagonal entry.
     try:
-        np.linalg.cholesky(C)
+        pivots = np.diagonal(np.linalg.cholesky(C), axis1=1, axis2=2) ** 2
+        singular = pivots.min(axis=1) <= SINGULAR_RTOL * np.diagonal(C, axis1=1, axis2=2).max(
+            axis=1
+        )
     except np.linalg.LinAlgError:
         # Cholesky is the cheap test; the eigenvalues only locate the culprit for the message.
-        first = int(np.argmax(np.linalg.eigvalsh(C)[:, 0] <= 0))
+        singular = np.linalg.eigvalsh(C)[:, 0] <= 0
+    if singular.any():
         raise ValueError(
-            f"{shapes_name} must be positive definite (instance {first} is not)"
-        ) from None
+            f"{shapes_name} must be positive definite (instance {int(np.argmax(singular))} is "
+            "singular or nearly so)"
+        )
     return c, C
 
 

@@ -36,11 +36,12 @@ def max_level(outer, inner) -> float:
     lam, V = np.linalg.eigh(K.T @ K)
     g = V.T @ (K.T @ c)
     top, gnorm = float(lam[-1]), float(np.linalg.norm(g))
+    base = top + float(c @ c)  # psi at tau = lambda_max without the secular sum
     if gnorm == 0.0:
-        return top + float(c @ c)
+        return base
 
     def psi(t: float) -> float:
-        return t + top + float(c @ c) + float(np.sum(g**2 / (t + top - lam)))
+        return t + base + float(np.sum(g**2 / (t + top - lam)))
 
     def slope(t: float) -> float:
         return float(np.sum(g**2 / (t + top - lam) ** 2)) - 1.0

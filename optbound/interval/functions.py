@@ -27,7 +27,7 @@ def _lift(kernel, *args, may_empty: bool = False, domain=None, **params) -> Inte
     Floating-point warnings are silenced: overflow to +-inf, 0 * inf and x / 0 are expected
     and the kernels turn them into correct bounds.
     """
-    xs = [a if isinstance(a, Interval) else as_interval(a) for a in args]
+    xs = [as_interval(a) for a in args]
     empty = None
     if any(x._maybe_empty for x in xs):
         empty = xs[0].is_empty
@@ -82,13 +82,15 @@ def multiply(a, b) -> Interval:
     return _lift(_arith.mul, a, b)
 
 
-def _straddles_zero_b(al, ah, bl, bh):
-    return (bl <= 0.0) & (bh >= 0.0)
+def _contains_zero(lo, hi):
+    return (lo <= 0.0) & (hi >= 0.0)
 
 
 def divide(a, b) -> Interval:
     """``a / b``; see :func:`optbound.interval._arith.div` for divisors containing 0."""
-    return _lift(_arith.div, a, b, may_empty=True, domain=_straddles_zero_b)
+    return _lift(
+        _arith.div, a, b, may_empty=True, domain=lambda al, ah, bl, bh: _contains_zero(bl, bh)
+    )
 
 
 def sqr(a) -> Interval:
@@ -113,10 +115,6 @@ def power(a, n) -> Interval:
     if k < 0:
         return _lift(_arith.power, a, n=k, may_empty=True, domain=_contains_zero)
     return _lift(_arith.power, a, n=k)
-
-
-def _contains_zero(lo, hi):
-    return (lo <= 0.0) & (hi >= 0.0)
 
 
 def sqrt(a) -> Interval:

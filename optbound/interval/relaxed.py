@@ -13,8 +13,8 @@ from collections.abc import Sequence
 import numpy as np
 
 from optbound.interval.paving import Paving
-from optbound.interval.sivia import DEFAULT_MAX_BOXES, DEFAULT_RATIO, Test, pave
-from optbound.interval.tribool import Tri, as_tri, from_masks
+from optbound.interval.sivia import DEFAULT_MAX_BOXES, DEFAULT_RATIO, FALSE, TRUE, Test, pave
+from optbound.interval.tribool import as_tri, from_masks
 
 
 def _check_tests(tests) -> list:
@@ -22,6 +22,12 @@ def _check_tests(tests) -> list:
     if not tests or not all(callable(t) for t in tests):
         raise ValueError("tests must be a non-empty sequence of callables")
     return tests
+
+
+def _check_count(name: str, value, m: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= m:
+        raise ValueError(f"{name} must be an integer in [0, {m}], got {value!r}")
+    return int(value)
 
 
 def relaxed_test(tests: Sequence[Test], q: int) -> Test:
@@ -33,13 +39,12 @@ def relaxed_test(tests: Sequence[Test], q: int) -> Test:
     """
     tests = _check_tests(tests)
     m = len(tests)
-    if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or not 0 <= q <= m:
-        raise ValueError(f"q must be an integer in [0, {m}], got {q!r}")
+    q = _check_count("q", q, m)
 
     def test(*coords) -> np.ndarray:
-        tris = np.broadcast_arrays(*(as_tri(t(*coords)) for t in tests))
-        n_true = np.sum([t == Tri.TRUE for t in tris], axis=0)
-        n_false = np.sum([t == Tri.FALSE for t in tris], axis=0)
+        tris = np.stack(np.broadcast_arrays(*(as_tri(t(*coords)) for t in tests)))
+        n_true = np.count_nonzero(tris == TRUE, axis=0)
+        n_false = np.count_nonzero(tris == FALSE, axis=0)
         return from_masks(n_true >= m - q, n_false > q)
 
     return test
@@ -63,9 +68,7 @@ def min_outliers(
     result is ``ValueError``.
     """
     tests = _check_tests(tests)
-    q_max = len(tests) if q_max is None else q_max
-    if not 0 <= q_max <= len(tests):
-        raise ValueError(f"q_max must lie in [0, {len(tests)}], got {q_max}")
+    q_max = len(tests) if q_max is None else _check_count("q_max", q_max, len(tests))
     for q in range(q_max + 1):
         paving = pave(relaxed_test(tests, q), X0, eps, ratio=ratio, max_boxes=max_boxes)
         if not paving.is_empty:

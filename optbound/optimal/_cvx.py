@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import cvxpy as cp
+import numpy as np
 
 
 def psd(expr: cp.Expression) -> cp.Constraint:
@@ -23,3 +24,10 @@ def require_dpp(problem: cp.Problem) -> cp.Problem:
     if not problem.is_dpp():
         raise RuntimeError("internal error: problem template is not DPP-compliant")
     return problem
+
+
+def trace_weight(W: np.ndarray) -> np.ndarray:
+    """The trace objective's weight ``W^T W`` in the frame ``x = c + W y``
+    (``tr C = tr(W^T W C_y)``), exactly symmetric for a PSD Parameter and of unit norm."""
+    weight = W.T @ W
+    return 0.5 * (weight + weight.T) / np.linalg.norm(weight)

@@ -33,6 +33,7 @@ from functools import lru_cache
 import cvxpy as cp
 import numpy as np
 
+from optbound.optimal import _cvx
 from optbound.optimal.certify import rounding_bound
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.solver import solve
@@ -67,9 +68,7 @@ def extents_template(n: int, r: int) -> _Template:
     lower = values >= ones @ lo
     goal = cp.Maximize(cp.sum(cp.multiply(Y[:r], rows)) - cp.sum(cp.multiply(Y[r:], rows)))
     problem = cp.Problem(goal, [cp.norm(Y, 2, axis=1) <= 1.0, upper, lower])
-    if not problem.is_dpp():
-        raise RuntimeError("internal error: extents template is not DPP-compliant")
-    return _Template(problem, rows, lo, hi, upper, lower)
+    return _Template(_cvx.require_dpp(problem), rows, lo, hi, upper, lower)
 
 
 def _dual_bounds(

@@ -177,18 +177,13 @@ def _in_frame(
 
     ``errors[i]`` bounds the rounding of the congruence, relative to the normalised form.
     """
-    size = frame.shape[0]
+    forms = np.stack([q.F for q in quadratics])  # (k, n + 1, n + 1): one batched product each
+    scaled = frame.T @ forms @ frame
+    norms = np.linalg.norm(scaled, axis=(1, 2))
+    normalized = 0.5 * (scaled + scaled.transpose(0, 2, 1)) / norms[:, None, None]
     abs_frame = np.abs(frame)
-    scaled = [frame.T @ q.F @ frame for q in quadratics]
-    norms = np.array([np.linalg.norm(F) for F in scaled])
-    normalized = [0.5 * (F + F.T) / norm for F, norm in zip(scaled, norms, strict=True)]
-    errors = np.array(
-        [
-            rounding_bound(size, np.linalg.norm(abs_frame.T @ np.abs(q.F) @ abs_frame, 2))
-            for q in quadratics
-        ]
-    )
-    return normalized, norms, errors / norms
+    magnitudes = np.linalg.norm(abs_frame.T @ np.abs(forms) @ abs_frame, 2, axis=(1, 2))
+    return list(normalized), norms, rounding_bound(frame.shape[0], magnitudes) / norms
 
 
 def _lifted_form(ellipsoid: Ellipsoid, frame: np.ndarray) -> np.ndarray:
@@ -311,8 +306,7 @@ def outer_ellipsoid(
     template = intersection_template(n, k, objective, dims_t)
     template.forms.value = np.stack([F.ravel(order="F") for F in normalized], axis=1)
     if template.weight is not None:
-        weight = W.T @ W
-        template.weight.value = 0.5 * (weight + weight.T) / np.linalg.norm(weight)
+        template.weight.value = _cvx.trace_weight(W)
     try:
         solve_time = solve(template.problem, solver, primal_only=True)
     except SolverError as err:

@@ -291,8 +291,7 @@ def _enclosing_weights(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     for round_ in range(_WORKING_ROUNDS):
         u, _ = khachiyan_weights(points[active], tol=_WEIGHT_TOL, max_iter=_WEIGHT_STEPS)
         mean, cov = covariance(points[active], u)
-        centered = points - mean
-        level = np.einsum("ij,ij->i", centered, np.linalg.solve(n * cov, centered.T).T)
+        level = _level(points, mean, np.linalg.inv(n * cov))
         outside = np.setdiff1d(np.flatnonzero(level > 1.0 + _WEIGHT_TOL), active)
         if outside.size == 0 or round_ == _WORKING_ROUNDS - 1:
             break
@@ -311,12 +310,6 @@ def volume_lower_bound(points: np.ndarray) -> float:
     return float(np.exp(log_unit_ball + 0.5 * logdet)) if sign > 0 else 0.0
 
 
-def _sqrt_psd(S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Eigenvalues (clipped at 0) and eigenvectors of a symmetric PSD matrix."""
-    lam, V = np.linalg.eigh(S)
-    return np.maximum(lam, 0.0), V
-
-
 def trace_lower_bound(points: np.ndarray) -> float:
     """``(tr Sigma_u^{1/2})^2`` with Frank-Wolfe weights: <= trace of any enclosing ellipsoid.
 
@@ -327,12 +320,12 @@ def trace_lower_bound(points: np.ndarray) -> float:
     best = 0.0
     for k in range(_WEIGHT_STEPS):
         mean, cov = covariance(points, u)
-        lam, V = _sqrt_psd(cov)
+        lam, V = np.linalg.eigh(cov)
+        lam = np.maximum(lam, 0.0)  # a PSD matrix's rounding can leave tiny negatives
         value = float(np.sum(np.sqrt(lam)))
         best = max(best, value)
         inv_root = (V / np.sqrt(np.maximum(lam, 1e-300))) @ V.T
-        centered = points - mean
-        grad = 0.5 * np.einsum("ij,jk,ik->i", centered, inv_root, centered)
+        grad = 0.5 * _level(points, mean, inv_root)
         j = int(np.argmax(grad))
         if grad[j] - grad @ u <= _WEIGHT_TOL * value:  # Frank-Wolfe duality gap
             break
@@ -350,7 +343,7 @@ def sampled_lower_bound(
     rng,
 ) -> float:
     """Lower bound on the minimum ``objective`` over all ellipsoids containing the set."""
-    points = sample_set(quadratics, outer, v.rng_of(rng), dims)
+    points = sample_set(quadratics, outer, rng, dims)
     if objective == "projection":
         points = _distinct(points[:, list(dims)])  # corners above one another coincide
     points = validated_points(points)

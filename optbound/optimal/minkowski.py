@@ -118,8 +118,7 @@ def minkowski_outer(
     template = minkowski_template(n, k, objective)
     template.factors.value = L_y / scale
     if template.weight is not None:
-        weight = W.T @ W
-        template.weight.value = 0.5 * (weight + weight.T) / np.linalg.norm(weight)
+        template.weight.value = _cvx.trace_weight(W)
     solve_time = solve(template.problem, solver, primal_only=True)
     X = template.matrix.value
     shape_y = np.linalg.inv(X) if objective == "volume" else X

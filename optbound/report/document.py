@@ -162,12 +162,14 @@ def _matrix(records: list[dict], column: str, prefix: str = "") -> str:
     rows = []
     for (criterion,), recs in group(records, ("criterion",)).items():
         cells = group(recs, (column,))
-        row = [f"`{criterion}`"]
-        for key in columns:
-            s = ratio_stats(cells.get(key, []))
-            row.append(f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–")
-        rows.append(row)
+        rows.append([f"`{criterion}`", *(_median_max(cells.get(key, [])) for key in columns)])
     return markdown_table(["criterion"] + [f"{prefix}{key[0]}" for key in columns], rows)
+
+
+def _median_max(records: list[dict], field: str = "ratio") -> str:
+    """The cell ``median (max)`` of ``field`` over ``records``, or "–" when there is none."""
+    s = ratio_stats(records, field)
+    return f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–"
 
 
 def _recursive_section(records: list[dict], out: Path) -> list[str]:
@@ -196,10 +198,7 @@ def _k_table(records: list[dict], field: str) -> str:
     rows = []
     for (variant, k), recs in sorted(group(records, ("variant", "k")).items()):
         by_dim = group(recs, ("dim",))
-        cells = []
-        for dim in dims:
-            s = ratio_stats(by_dim.get((dim,), []), field)
-            cells.append(f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–")
+        cells = [_median_max(by_dim.get((dim,), []), field) for dim in dims]
         s = ratio_stats(recs, field)
         rows.append(
             [

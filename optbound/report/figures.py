@@ -26,7 +26,8 @@ BOUND_COLORS = {
 }
 
 
-def _pyplot():
+def pyplot():
+    """matplotlib.pyplot with the non-interactive Agg backend (works without a display)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -51,7 +52,7 @@ def _gap_bins(gaps: np.ndarray) -> np.ndarray:
 
 def ratio_histograms(records: list[dict], path: Path, title: str) -> Path:
     """One panel per criterion: histogram of ``ratio - 1`` (symlog axis), stacked by variant."""
-    plt = _pyplot()
+    plt = pyplot()
     panels = group([r for r in records if r["ratio"] is not None], ("criterion", "reference"))
     ncols = min(3, len(panels))
     nrows = -(-len(panels) // ncols)
@@ -93,7 +94,7 @@ def ratio_histograms(records: list[dict], path: Path, title: str) -> Path:
 def recursive_plot(records: list[dict], path: Path) -> Path:
     """Ratio of the recursive filter to the batch SDP vs k (median line, min-max band per
     dimension), and its median ratio to the lower bound on the optimum (dotted)."""
-    plt = _pyplot()
+    plt = pyplot()
     by_variant = group([r for r in records if r["ratio"] is not None], ("variant",))
     fig, axes = plt.subplots(
         1,
@@ -239,7 +240,7 @@ def _draw_strip(ax, S: Strip, lo: np.ndarray, hi: np.ndarray) -> None:
 
 def instance_pictures(figures: list[dict], path: Path) -> Path:
     """Each 2-D instance: the exact set shaded on a fine grid, every bound drawn over it."""
-    plt = _pyplot()
+    plt = pyplot()
     from matplotlib.patches import Patch
 
     ncols = min(3, len(figures))

@@ -53,8 +53,8 @@ def finite_matrix(
     return arr
 
 
-def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Validate a symmetric positive-definite matrix; return it and its Cholesky factor.
+def symmetric_matrix(name: str, value, dim: int | None = None) -> np.ndarray:
+    """Validate a finite square symmetric matrix and return it exactly symmetrized.
 
     Asymmetry at rounding level (relative ``SYMMETRY_RTOL``) is removed by symmetrizing;
     larger asymmetry is an error, because it signals a wrong matrix rather than round-off.
@@ -65,7 +65,15 @@ def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np
     scale = np.max(np.abs(arr))
     if np.max(np.abs(arr - arr.T)) > SYMMETRY_RTOL * max(scale, np.finfo(float).tiny):
         raise ValueError(f"{name} must be symmetric")
-    arr = 0.5 * (arr + arr.T)
+    return 0.5 * (arr + arr.T)
+
+
+def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Validate a symmetric positive-definite matrix; return it and its Cholesky factor.
+
+    Symmetry is checked and enforced as in :func:`symmetric_matrix`.
+    """
+    arr = symmetric_matrix(name, value, dim)
     try:
         chol = np.linalg.cholesky(arr)
     except np.linalg.LinAlgError:

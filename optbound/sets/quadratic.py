@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound.sets import _validate as v
+from optbound.sets.base import ConvexSet
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.strip import Halfspace, Strip
 
@@ -41,12 +42,9 @@ class QuadraticSet:
         F = v.finite_matrix("F", F)
         if F.shape[0] != F.shape[1] or F.shape[0] < 2:
             raise ValueError(f"F must be square of size n + 1 >= 2, got shape {F.shape}")
-        scale = float(np.max(np.abs(F)))
-        if scale == 0.0:
+        if not np.any(F):
             raise ValueError("F must not be zero")
-        if np.max(np.abs(F - F.T)) > v.SYMMETRY_RTOL * scale:
-            raise ValueError("F must be symmetric")
-        self._F = 0.5 * (F + F.T)
+        self._F = v.symmetric_matrix("F", F)
         self._F.setflags(write=False)
 
     # ------------------------------------------------------------------ constructors
@@ -202,10 +200,8 @@ class QuadraticSet:
             return np.inf
         return float(np.sum((e[pos] - 2.0 * mu * f[pos]) ** 2 / (4.0 * mu * w[pos])) - mu * self.c)
 
-    def extent(self, a) -> tuple[float, float]:
-        """Range ``[min a^T x, max a^T x]`` of the linear functional ``a`` over the set."""
-        a = np.asarray(a, dtype=float)
-        return -float(self.support(-a)), float(self.support(a))
+    # Only support is needed, so the convex sets' extent applies unchanged.
+    extent = ConvexSet.extent
 
     @property
     def is_bounded(self) -> bool:

@@ -268,6 +268,8 @@ def test_bad_inputs_raise(kwargs, match):
     [
         ([[np.nan, 0.0]], [np.eye(2)], [1.0, 0.0], 0.0, "centers must be finite"),
         ([[0.0, 0.0]], [np.diag([1.0, -1.0])], [1.0, 0.0], 0.0, "positive definite"),
+        # Singular at rounding level: refused like a single Ellipsoid would refuse it.
+        ([[0.0, 0.0]], [[[2.0, 4.0], [4.0, 8.0]]], [1.0, 0.0], 0.0, "singular or nearly so"),
         ([[0.0, 0.0]], [np.eye(3)], [1.0, 0.0], 0.0, "shapes must have shape"),
         ([[0.0, 0.0]], [np.eye(2)], [0.0, 0.0], 0.0, "non-zero"),
         ([[0.0, 0.0]], [np.eye(2)], [1.0, 0.0], [0.0, 1.0], "b must have shape"),

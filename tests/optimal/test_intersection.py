@@ -172,6 +172,14 @@ def test_property_random_instances_are_contained_or_empty(seed, n, objective):
 
 
 # ------------------------------------------------------------ clipping to the intersection
+def _points_of_many_strips(sets, seed: int) -> np.ndarray:
+    """Rejection samples from the old reference (clipped to the ellipsoids only), an independent
+    certified outer bound close enough to the set; plus the set's boundary points climbed toward
+    its vertices, where a too-small ellipsoid would fail first."""
+    old = outer_ellipsoid(sets, objective="volume", clip="ellipsoids").ellipsoid
+    return np.vstack([points_of(sets, rng=seed, proposal=old), sample_set(lift(sets), old, seed)])
+
+
 @pytest.mark.parametrize(
     "n, objective, dims", [(2, "volume", None), (3, "trace", None), (4, "projection", (0, 3))]
 )
@@ -179,11 +187,7 @@ def test_intersection_clipping_contains_sampled_many_strip_sets(n, objective, di
     sets = strip_instance(n, 20, seed=n)
     r = outer_ellipsoid(sets, objective=objective, dims=dims)
     assert r.certified and r.inflation < 1.0 + 1e-4
-    # Proposal: the old reference (clipped to the ellipsoids only), an independent certified
-    # outer bound close enough to the set for rejection sampling; plus the set's boundary
-    # points climbed toward its vertices, where a too-small ellipsoid would fail first.
-    old = outer_ellipsoid(sets, objective="volume", clip="ellipsoids").ellipsoid
-    X = np.vstack([points_of(sets, rng=n, proposal=old), sample_set(lift(sets), old, n)])
+    X = _points_of_many_strips(sets, seed=n)
     assert X.shape[0] >= MIN_POINTS
     assert np.all(r.ellipsoid.contains(X, tol=0.0))
 
@@ -223,8 +227,7 @@ def test_products_contain_sampled_many_strip_sets(n, objective):
     r = outer_ellipsoid(sets, objective=objective, products=True)
     assert r.certified and r.inflation < 1.0 + 1e-4
     assert r.multipliers.shape == (1 + 12 + 4 * 66,)
-    old = outer_ellipsoid(sets, objective="volume", clip="ellipsoids").ellipsoid
-    X = np.vstack([points_of(sets, rng=n, proposal=old), sample_set(lift(sets), old, n)])
+    X = _points_of_many_strips(sets, seed=n)
     assert X.shape[0] >= MIN_POINTS
     assert np.all(r.ellipsoid.contains(X, tol=0.0))
 
