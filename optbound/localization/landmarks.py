@@ -1,0 +1,421 @@
+"""Pose from bearings to known landmarks [HS96, Sect. 3]: linear solver, exact set, fast bound.
+
+A robot at ``(x, y)`` with heading ``psi`` measures the bearing ``alpha_i`` (radians, robot
+frame, counter-clockwise) of landmark ``L_i``: ``alpha_i + psi = atan2(L_iy - y, L_ix - x)``
+[HS96, eq. (18)] (eq. (3) prints the atan2 arguments swapped; eq. (18) is the convention that
+makes eqs. (5)-(6) hold).
+
+With ``gamma_i = alpha_{i+1} - alpha_i`` (indices modulo N), each pair gives [HS96, eq. (5)]
+
+    A_i = g_i^T (x, y) - (x^2 + y^2),
+    A_i = x_i x_{i+1} + y_i y_{i+1} + cot(gamma_i) (x_{i+1} y_i - y_{i+1} x_i),
+    g_i = (cot(gamma_i) (y_i - y_{i+1}) + x_{i+1} + x_i,
+           cot(gamma_i) (x_{i+1} - x_i) + y_{i+1} + y_i),
+
+and subtracting each equation's follower removes the quadratic term: ``z = H (x, y)^T`` with
+``z_i = A_i - A_{i+1}``, ``h_i = g_i - g_{i+1}``, i = 0 .. N - 2 [HS96, eq. (6)]. Note: the
+printed eq. (6) has ``x_{i+1}`` / ``y_{i+1}`` where ``g_i - g_{i+1}`` gives ``x_i`` / ``y_i``
+in ``h_i``; the printed form does not recover the position (tested), the difference of eq. (5)
+does.
+
+Three functions, from cheapest to exact:
+
+- :func:`linear_position`: least squares on eq. (6), exact on noise-free data, not a bound;
+- :func:`linear_position_bound`: a guaranteed (x, y) box from eq. (6) with interval-valued
+  ``H`` and ``z`` (preconditioned interval Gauss-Seidel);
+- :func:`pose_paving`: the guaranteed (x, y, psi) set by interval set inversion of the bearing
+  equations (the error propagation [HS96, Sect. 3] leaves out of scope).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from optbound.interval import Interval, Paving, Tri, atan2, intersection, pave, sqrt
+from optbound.sets import Box
+from optbound.sets import _validate as v
+
+#: Default relative singularity threshold: smallest singular value of H over the size of the
+#: terms that cancel in it (see :func:`linear_position`).
+SINGULAR_RTOL = 1e-8
+#: An outward enclosure of 2 pi: ``2 * np.pi`` is the correctly rounded value.
+TWO_PI = Interval(np.nextafter(2.0 * np.pi, -np.inf), np.nextafter(2.0 * np.pi, np.inf))
+GAUSS_SEIDEL_SWEEPS = 4
+
+
+# ----------------------------------------------------------------------------- validation
+def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
+    """Validate an (N, 2) array of finite real landmark positions."""
+    arr = np.asarray(value)
+    if np.iscomplexobj(arr):
+        raise ValueError(f"{name} must be real, got complex values")
+    try:
+        arr = arr.astype(float)
+    except (TypeError, ValueError) as err:
+        raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ValueError(f"{name} must have shape (N, 2), got {arr.shape}")
+    if arr.shape[0] < min_count:
+        raise ValueError(f"{name} needs at least {min_count} landmarks, got {arr.shape[0]}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    return arr
+
+
+def as_angles(name: str, value, count: int | None = None) -> np.ndarray:
+    """Validate a 1-D array of finite real angles (radians), optionally of a given length."""
+    arr = v.finite_vector(name, value)
+    if count is not None and arr.shape[0] != count:
+        raise ValueError(f"{name} must have {count} entries (one per landmark), got {arr.shape[0]}")
+    return arr
+
+
+def as_bound(name: str, value) -> float:
+    """Validate a finite, non-negative error bound."""
+    out = v.finite_scalar(name, value)
+    if out < 0.0:
+        raise ValueError(f"{name} must be non-negative, got {out}")
+    return out
+
+
+def as_shapes(name: str, value, count: int) -> np.ndarray:
+    """Landmark error ellipses ``C_i`` of [HS96, eq. (2)] as a (count, 2, 2) PSD array.
+
+    ``None`` means exact landmarks (all zero); one (2, 2) matrix is shared by all landmarks.
+    """
+    if value is None:
+        return np.zeros((count, 2, 2))
+    arr = np.asarray(value)
+    if np.iscomplexobj(arr):
+        raise ValueError(f"{name} must be real, got complex values")
+    arr = np.broadcast_to(arr.astype(float), (count, 2, 2)) if arr.shape == (2, 2) else arr
+    if arr.shape != (count, 2, 2):
+        raise ValueError(f"{name} must have shape ({count}, 2, 2) or (2, 2), got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    if not np.allclose(arr, arr.transpose(0, 2, 1), rtol=1e-12, atol=0.0):
+        raise ValueError(f"{name} must be symmetric")
+    if np.any(np.linalg.eigvalsh(arr)[:, 0] < 0.0):
+        raise ValueError(f"{name} must be positive semi-definite")
+    return np.array(arr, dtype=float)
+
+
+# ----------------------------------------------------------------------- linear solution
+@njit(cache=True)
+def _solve(L: np.ndarray, alphas: np.ndarray) -> tuple:
+    """Least squares on eq. (6); returns (x, y, psi, s_min, scale, s_max, bad_pair).
+
+    ``bad_pair`` >= 0 flags a pair of bearings equal modulo pi (cot(gamma) infinite).
+    """
+    n = L.shape[0]
+    cot = np.empty(n)
+    A = np.empty(n)
+    gx = np.empty(n)
+    gy = np.empty(n)
+    for i in range(n):
+        j = (i + 1) % n
+        gamma = alphas[j] - alphas[i]
+        s = math.sin(gamma)
+        if abs(s) < 1e-12:
+            return 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, i
+        cot[i] = math.cos(gamma) / s
+        xi, yi, xj, yj = L[i, 0], L[i, 1], L[j, 0], L[j, 1]
+        A[i] = xi * xj + yi * yj + cot[i] * (xj * yi - yj * xi)
+        gx[i] = cot[i] * (yi - yj) + xj + xi
+        gy[i] = cot[i] * (xj - xi) + yj + yi
+    # Normal equations of the (N-1) x 2 system; scale = size of the terms that cancel in H.
+    m00 = m01 = m11 = r0 = r1 = 0.0
+    scale = 0.0
+    for i in range(n - 1):
+        hx, hy = gx[i] - gx[i + 1], gy[i] - gy[i + 1]
+        z = A[i] - A[i + 1]
+        m00 += hx * hx
+        m01 += hx * hy
+        m11 += hy * hy
+        r0 += hx * z
+        r1 += hy * z
+        size = math.hypot(gx[i], gy[i]) + math.hypot(gx[i + 1], gy[i + 1])
+        scale = max(scale, size)
+    half_tr = 0.5 * (m00 + m11)
+    root = math.hypot(0.5 * (m00 - m11), m01)
+    s_max = math.sqrt(half_tr + root)
+    det = m00 * m11 - m01 * m01
+    s_min = math.sqrt(max(det, 0.0) / (half_tr + root)) if half_tr + root > 0.0 else 0.0
+    if det <= 0.0:
+        return 0.0, 0.0, 0.0, s_min, scale, s_max, -1
+    x = (m11 * r0 - m01 * r1) / det
+    y = (m00 * r1 - m01 * r0) / det
+    # Heading: circular mean of atan2(L_i - p) - alpha_i over all landmarks.
+    sx = sy = 0.0
+    for i in range(n):
+        psi_i = math.atan2(L[i, 1] - y, L[i, 0] - x) - alphas[i]
+        sx += math.cos(psi_i)
+        sy += math.sin(psi_i)
+    return x, y, math.atan2(sy, sx), s_min, scale, s_max, -1
+
+
+def linear_position(landmarks, alphas, rtol: float = SINGULAR_RTOL) -> tuple[float, float, float]:
+    """Robot pose from N >= 3 bearings by the N - 1 linear equations [HS96, eqs. (5)-(6)].
+
+    Parameters
+    ----------
+    landmarks : array_like, shape (N, 2)
+        Positions of the landmarks the bearings belong to (in any order).
+    alphas : array_like, shape (N,)
+        Bearings in radians, robot frame, counter-clockwise: ``alpha_i + psi =
+        atan2(L_iy - y, L_ix - x)`` [HS96, eq. (18)].
+    rtol : float
+        Singularity threshold (see Raises).
+
+    Returns
+    -------
+    (x, y, psi) : tuple of float
+        Least-squares position of eq. (6) and the heading as the circular mean of
+        ``atan2(L_i - p) - alpha_i`` over all landmarks, in (-pi, pi]. Exact (to rounding) on
+        noise-free data; with noisy data it is an estimate, not a bound (see
+        :func:`linear_position_bound`, :func:`pose_paving`).
+
+    Raises
+    ------
+    ValueError
+        N < 3; two bearings equal modulo pi (the robot is in line with two landmarks); or H
+        singular or nearly so: ``s_min(H) < rtol * scale``, where scale is the size of the terms
+        ``g_i``, ``g_{i+1}`` whose difference forms H's rows. With the robot on the circle
+        through the landmarks H vanishes entirely while cond(H) can stay small [HS96 known
+        fact], so H is judged against the terms that cancel in it; the message gives that
+        relative condition number and cond(H).
+    """
+    L = as_landmarks("landmarks", landmarks, min_count=3)
+    a = as_angles("alphas", alphas, L.shape[0])
+    rtol = as_bound("rtol", rtol)
+    x, y, psi, s_min, scale, s_max, bad = _solve(L, a)
+    if bad >= 0:
+        j = (bad + 1) % L.shape[0]
+        raise ValueError(
+            f"bearings {bad} and {j} are equal modulo pi (the robot is in line with landmarks "
+            f"{bad} and {j}): cot(gamma_{bad}) of [HS96, eq. (5)] is infinite"
+        )
+    if not s_min > rtol * scale:
+        rel = scale / s_min if s_min > 0.0 else math.inf
+        cond = s_max / s_min if s_min > 0.0 else math.inf
+        raise ValueError(
+            "the linear system of [HS96, eq. (6)] is singular or nearly so (robot on or near the "
+            "circle through the landmarks, or collinear with them): relative condition number "
+            f"scale/s_min(H) = {rel:.3g} > 1/rtol = {1 / rtol:.3g} (cond(H) = {cond:.3g})"
+        )
+    return x, y, psi
+
+
+# ------------------------------------------------------------------ interval ingredients
+def _boxed(L: np.ndarray, shapes: np.ndarray) -> tuple[Interval, Interval]:
+    """Outward boxes ``L_i +- sqrt(diag C_i)`` enclosing the landmark ellipses [HS96, eq. (2)]."""
+    half = sqrt(Interval(np.diagonal(shapes, axis1=1, axis2=2))).hi
+    return (
+        Interval(L[:, 0]) + Interval(-half[:, 0], half[:, 0]),
+        Interval(L[:, 1]) + Interval(-half[:, 1], half[:, 1]),
+    )
+
+
+def _eq5_terms(Lx: Interval, Ly: Interval, alphas: np.ndarray, delta: float):
+    """Interval ``A_i``, ``g_i`` of eq. (5) for bearing errors ``|d alpha| <= delta``."""
+    n = alphas.shape[0]
+    nxt = (np.arange(n) + 1) % n
+    err = Interval(-2.0 * delta, 2.0 * delta) if delta > 0.0 else Interval(0.0)
+    gamma = Interval(alphas[nxt]) - Interval(alphas) + err
+    sin_g = np.sin(gamma)
+    if np.any((sin_g.lo <= 0.0) & (sin_g.hi >= 0.0)):
+        raise ValueError(
+            "two bearings are equal modulo pi within the error bound: cot(gamma) of "
+            "[HS96, eq. (5)] is unbounded, no finite bound exists"
+        )
+    cot = np.cos(gamma) / sin_g
+    xi, yi, xj, yj = Lx, Ly, Lx[nxt], Ly[nxt]
+    A = xi * xj + yi * yj + cot * (xj * yi - yj * xi)
+    gx = cot * (yi - yj) + xj + xi
+    gy = cot * (xj - xi) + yj + yi
+    return A, gx, gy
+
+
+def _dot(R_row: np.ndarray, items: Interval) -> Interval:
+    """``sum_i R_row[i] * items[i]`` in outward-rounded interval arithmetic."""
+    terms = Interval(R_row) * items
+    total = terms[0]
+    for i in range(1, R_row.shape[0]):
+        total = total + terms[i]
+    return total
+
+
+def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes=None) -> Box:
+    """Guaranteed (x, y) box from eq. (6) with interval-valued ``H`` and ``z`` [HS96, Sect. 3].
+
+    Every entry of eq. (5) is evaluated in outward-rounded interval arithmetic over the
+    bearing errors ``|d alpha_i| <= delta_alpha`` and the landmark errors (each ellipse
+    [HS96, eq. (2)] enclosed in its bounding box). The true position solves ``H~ p = z~`` for
+    the true (unknown) ``H~ in [H]``, ``z~ in [z]``; with the midpoint pseudo-inverse ``R`` and
+    the midpoint solution ``p0``, ``q = p - p0`` solves ``(R H~) q = R (z~ - H~ p0)``, which is
+    enclosed by a preconditioned interval Gauss-Seidel iteration started from the box
+    ``|q| <= |b| / (1 - ||I - R H||)``.
+
+    Parameters
+    ----------
+    landmarks, alphas
+        As in :func:`linear_position`.
+    delta_alpha : float
+        Bound on the bearing errors (radians).
+    landmark_shapes : array_like, optional
+        (N, 2, 2) or (2, 2) landmark error ellipses ``C_i``; default exact landmarks.
+
+    Returns
+    -------
+    Box
+        2-D box containing the true position (a guaranteed outer bound; it ignores the
+        correlations between entries of ``H`` and ``z``, so it is loose when errors are large
+        or the geometry is poor).
+
+    Raises
+    ------
+    ValueError
+        Bad inputs, N < 3, or an interval system that is not provably regular
+        (``||I - R [H]|| >= 1``: errors too large or the geometry near singular).
+    """
+    L = as_landmarks("landmarks", landmarks, min_count=3)
+    a = as_angles("alphas", alphas, L.shape[0])
+    delta = as_bound("delta_alpha", delta_alpha)
+    shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
+    A, gx, gy = _eq5_terms(*_boxed(L, shapes), a, delta)
+    z, hx, hy = A[:-1] - A[1:], gx[:-1] - gx[1:], gy[:-1] - gy[1:]
+    Hc = np.column_stack([hx.midpoint(), hy.midpoint()])
+    p0 = np.linalg.lstsq(Hc, z.midpoint(), rcond=None)[0]
+    R = np.linalg.pinv(Hc)
+    resid = z - (hx * Interval(p0[0]) + hy * Interval(p0[1]))
+    b = [_dot(R[k], resid) for k in range(2)]
+    M = [[_dot(R[k], h) for h in (hx, hy)] for k in range(2)]
+    E = [[Interval(float(k == m)) - M[k][m] for m in range(2)] for k in range(2)]
+    norm = max(
+        float((abs(E[k][0]) + abs(E[k][1])).hi) for k in range(2)
+    )  # ||I - R [H]||_inf, rounded up
+    if not norm < 1.0:
+        raise ValueError(
+            "the interval system of [HS96, eq. (6)] is not provably regular "
+            f"(||I - R [H]|| = {norm:.3g} >= 1): the errors are too large for this geometry"
+        )
+    mag_b = max(float(abs(b[k]).hi) for k in range(2))
+    beta = float((Interval(mag_b) / (Interval(1.0) - Interval(norm))).hi)
+    q = [Interval(-beta, beta), Interval(-beta, beta)]
+    for _ in range(GAUSS_SEIDEL_SWEEPS):
+        for k in range(2):
+            other = q[1 - k]
+            q[k] = intersection(q[k], (b[k] - M[k][1 - k] * other) / M[k][k])
+    lo = [(Interval(p0[k]) + q[k]).lo for k in range(2)]
+    hi = [(Interval(p0[k]) + q[k]).hi for k in range(2)]
+    return Box(np.array(lo, dtype=float), np.array(hi, dtype=float))
+
+
+# ------------------------------------------------------------------------- exact pose set
+def _windows(psi_lo: float, psi_hi: float, alphas: np.ndarray) -> np.ndarray:
+    """Integers k such that ``atan2(...) - psi - alpha_i`` can be near ``2 pi k``."""
+    lo = -np.pi - psi_hi - alphas.max()
+    hi = np.pi - psi_lo - alphas.min()
+    return np.arange(math.floor(lo / (2 * np.pi)) - 1, math.ceil(hi / (2 * np.pi)) + 2)
+
+
+def _bearing_test(L, Lx, Ly, alphas, delta, ks):
+    """Tri test of all bearing constraints on boxes of (x, y, psi) (see :func:`pose_paving`)."""
+    lows = [k * TWO_PI - delta for k in ks]
+    highs = [k * TWO_PI + delta for k in ks]
+
+    def test(x, y, psi):
+        tri = None
+        for i in range(alphas.shape[0]):
+            nominal = atan2(L[i, 1] - y, L[i, 0] - x) - psi - alphas[i]
+            boxed = atan2(Ly[i] - y, Lx[i] - x) - psi - alphas[i]
+            inside = np.zeros(nominal.shape, dtype=bool)
+            outside = np.ones(nominal.shape, dtype=bool)
+            for lo_k, hi_k in zip(lows, highs, strict=True):
+                inside |= (nominal.lo >= lo_k.hi) & (nominal.hi <= hi_k.lo)
+                outside &= (boxed.hi < lo_k.lo) | (boxed.lo > hi_k.hi)
+            t_i = np.where(inside, Tri.TRUE, np.where(outside, Tri.FALSE, Tri.UNKNOWN))
+            tri = t_i if tri is None else np.minimum(tri, t_i)
+        return tri.astype(np.int8)
+
+    return test
+
+
+def heading_bound(L, Lx, Ly, alphas, delta, xy: Box) -> Interval:
+    """Guaranteed heading interval for positions in ``xy``: intersection over the bearings.
+
+    Each bearing gives ``psi in atan2(L_i - p) - alpha_i + [-delta, delta]`` (mod 2 pi);
+    intervals narrower than pi are shifted by 2 pi k onto the first one and intersected.
+    """
+    x, y = Interval(xy.lo[0], xy.hi[0]), Interval(xy.lo[1], xy.hi[1])
+    out = None
+    for i in range(alphas.shape[0]):
+        psi_i = atan2(Ly[i] - y, Lx[i] - x) - alphas[i] + Interval(-delta, delta)
+        if float(psi_i.hi - psi_i.lo) >= np.pi:
+            continue
+        if out is None:
+            out = psi_i
+            continue
+        k = round((float(psi_i.midpoint()) - float(out.midpoint())) / (2 * np.pi))
+        out = intersection(out, psi_i - k * TWO_PI)
+    if out is None or bool(out.is_empty):
+        return Interval(-np.pi, np.pi) if out is None else out
+    return out
+
+
+def pose_paving(
+    landmarks,
+    alphas,
+    delta_alpha: float,
+    landmark_shapes=None,
+    X0=None,
+    eps: float | None = None,
+) -> Paving:
+    """Guaranteed pose set ``(x, y, psi)`` by interval set inversion of the bearings.
+
+    The set is ``{(x, y, psi) : exists |d alpha_i| <= delta_alpha and landmark errors in the
+    ellipses [HS96, eq. (2)] with alpha_i - d alpha_i + psi = atan2(L~_iy - y, L~_ix - x)
+    (mod 2 pi) for all i}`` -- the exact error propagation of [HS96, Sect. 3] (no
+    linearization). A box is *outside* when, with each landmark ellipse enclosed in its
+    bounding box, some bearing misses ``alpha_i +- delta_alpha`` for every point of the box; it
+    is *inner* when the nominal landmarks satisfy every bearing constraint on the whole box.
+    So ``inner ⊂ set ⊂ inner ∪ boundary`` holds exactly (with outward rounding).
+
+    Parameters
+    ----------
+    landmarks, alphas, delta_alpha, landmark_shapes
+        As in :func:`linear_position_bound`.
+    X0 : array_like (3, 2) or Box, optional
+        Initial box of ``(x, y, psi)``; default the (guaranteed) box of
+        :func:`linear_position_bound` times the heading interval it implies.
+    eps : float, optional
+        Paving resolution (widest side of an undecided box); default 1/40 of X0's widest
+        position side.
+
+    Returns
+    -------
+    Paving
+        With ``.hull()`` (``None`` if the set is empty) and ``.components()``.
+    """
+    L = as_landmarks("landmarks", landmarks, min_count=1)
+    a = as_angles("alphas", alphas, L.shape[0])
+    delta = as_bound("delta_alpha", delta_alpha)
+    shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
+    Lx, Ly = _boxed(L, shapes)
+    if X0 is None:
+        xy = linear_position_bound(L, a, delta, shapes)
+        psi = heading_bound(L, Lx, Ly, a, delta, xy)
+        if bool(psi.is_empty):
+            psi = Interval(-np.pi, np.pi)
+        X0 = Box(np.r_[xy.lo, psi.lo], np.r_[xy.hi, psi.hi])
+    elif not isinstance(X0, Box):
+        X0 = Box.from_array(X0)
+    if X0.dim != 3 or not X0.is_bounded:
+        raise ValueError(f"X0 must be a bounded 3-D box of (x, y, psi), got {X0}")
+    if eps is None:
+        eps = float(np.max(X0.widths[:2])) / 40.0
+    test = _bearing_test(L, Lx, Ly, a, delta, _windows(X0.lo[2], X0.hi[2], a))
+    return pave(test, X0, eps)
