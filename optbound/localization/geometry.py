@@ -20,6 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from optbound.interval import Interval
+
 Point = tuple[Any, Any]
 
 
@@ -98,3 +100,21 @@ def as_segments(world, name: str = "world") -> np.ndarray:
 def segment_points(world: np.ndarray) -> tuple[Point, Point]:
     """End points ``(a, b)`` of an (s, 2, 2) map as coordinate pairs, ready for the predicates."""
     return (world[:, 0, 0], world[:, 0, 1]), (world[:, 1, 0], world[:, 1, 1])
+
+
+def occluded(p: Point, q: Point, world: np.ndarray):
+    """Is the sight line ``Seg(p, q)`` crossed by some segment of ``world``? [HS96, Sect. 3].
+
+    ``p`` and ``q`` broadcast against each other; the answer has their broadcast shape
+    (booleans on points, Tri on boxes: the disjunction of :func:`crosses` over the map, i.e.
+    its maximum in the FALSE < UNKNOWN < TRUE order). A sight line that only touches a segment
+    (e.g. ends on the wall that carries the landmark) is not occluded.
+    """
+    a, b = segment_points(world)
+    p, q = (_trailing(p[0]), _trailing(p[1])), (_trailing(q[0]), _trailing(q[1]))
+    return np.max(crosses(p, q, a, b), axis=-1)
+
+
+def _trailing(c):
+    """``c`` with a trailing axis for the segments (floats as arrays; intervals as they are)."""
+    return (c if isinstance(c, Interval) else np.asarray(c, dtype=float))[..., None]

@@ -44,6 +44,8 @@ SINGULAR_RTOL = 1e-8
 #: An outward enclosure of 2 pi: ``2 * np.pi`` is the correctly rounded value.
 TWO_PI = Interval(np.nextafter(2.0 * np.pi, -np.inf), np.nextafter(2.0 * np.pi, np.inf))
 GAUSS_SEIDEL_SWEEPS = 4
+#: Rounds of the adaptive default resolution of :func:`pose_paving`.
+REFINE = 3
 
 
 # ----------------------------------------------------------------------------- validation
@@ -363,7 +365,7 @@ def heading_bound(L, Lx, Ly, alphas, delta, xy: Box) -> Interval:
         out = intersection(out, psi_i - k * TWO_PI)
     if out is None or bool(out.is_empty):
         return Interval(-np.pi, np.pi) if out is None else out
-    return out
+    return out - round(float(out.midpoint()) / (2 * np.pi)) * TWO_PI  # centre in [-pi, pi]
 
 
 def pose_paving(
@@ -392,8 +394,9 @@ def pose_paving(
         Initial box of ``(x, y, psi)``; default the (guaranteed) box of
         :func:`linear_position_bound` times the heading interval it implies.
     eps : float, optional
-        Paving resolution (widest side of an undecided box); default 1/40 of X0's widest
-        position side.
+        Paving resolution (widest side of an undecided box). Default: ``REFINE`` rounds, each
+        paving at 1/40 of the current box's widest side and re-paving the hull of the result
+        (the hull contains the set, so each round stays guaranteed).
 
     Returns
     -------
@@ -415,7 +418,15 @@ def pose_paving(
         X0 = Box.from_array(X0)
     if X0.dim != 3 or not X0.is_bounded:
         raise ValueError(f"X0 must be a bounded 3-D box of (x, y, psi), got {X0}")
-    if eps is None:
-        eps = float(np.max(X0.widths[:2])) / 40.0
-    test = _bearing_test(L, Lx, Ly, a, delta, _windows(X0.lo[2], X0.hi[2], a))
-    return pave(test, X0, eps)
+    ks = _windows(X0.lo[2], X0.hi[2], a)
+    test = _bearing_test(L, Lx, Ly, a, delta, ks)
+    if eps is not None:
+        return pave(test, X0, eps)
+    # Adaptive default: pave coarsely, then re-pave the (guaranteed) hull, REFINE times.
+    for _ in range(REFINE):
+        paving = pave(test, X0, float(np.max(X0.widths)) / 40.0)
+        hull = paving.hull()
+        if hull is None:
+            return paving
+        X0 = hull
+    return paving

@@ -1,0 +1,304 @@
+"""Office scenario of the HS96 experiment [HS96, Sect. 5] (our design: the paper's Fig. 4 is lost).
+
+A 14 m x 10 m open-plan office whose outer walls carry 22 identical retro-reflecting landmarks,
+numbered counter-clockwise along the walls (so that, the room being convex, every robot inside
+sees the unoccluded ones in index order [HS96, Sect. 2]); two partitions reach in from the outer
+walls and a cross of partitions stands in the middle. The course is a rounded rectangle around
+the cross, driven at 2 m/s with the heading along the path; 20 snapshot scans per second (a
+scan is taken at one instant: the goniometer's rotation during the 50 ms is not modelled).
+
+Error model (amplitude-bounded, as in the paper): bearing noise uniform in ``+-delta_alpha``
+(0.02 deg); landmark positions off by a fixed unknown bias inside their error ellipse (1.5 cm
+along the wall, 1 cm across: the dominant error); odometry errors proportional to the travelled
+distance and turned angle with slowly varying, correlated factors (a constant bias plus a slow
+sinusoid) bounded by ``OdometryBounds``.
+
+Nothing here was tuned to reach the paper's numbers.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from optbound.localization.landmark_map import LandmarkMap
+from optbound.localization.tracker import SetTracker
+from optbound.sets import Ellipsoid
+
+ROOM = (14.0, 10.0)
+N_LANDMARKS = 22
+WALL_INSET = 0.01  # landmarks sit 1 cm in front of their wall: sight lines never graze it
+LANDMARK_SIGMA = (0.015, 0.010)  # semi-axes of the error ellipse: along, across the wall (m)
+DELTA_ALPHA = math.radians(0.02)
+SPEED = 2.0  # m/s
+SCAN_RATE = 20.0  # scans/s
+COURSE = (3.0, 2.5, 11.0, 7.5, 1.0)  # x0, y0, x1, y1, corner radius of the rounded rectangle
+WALLS = np.array(
+    [
+        [[4.5, 0.0], [4.5, 1.8]],  # partition from the south wall
+        [[9.5, 10.0], [9.5, 8.2]],  # partition from the north wall
+        [[5.5, 5.0], [8.5, 5.0]],  # central cross
+        [[7.0, 4.0], [7.0, 6.0]],
+    ]
+)
+
+
+@dataclass(frozen=True)
+class OdometryBounds:
+    """Amplitude bounds of the dead-reckoning errors per step.
+
+    ``e_x, e_y <= along * d`` (d the travelled distance), ``e_psi <= drift * d + turn * |dpsi|``.
+    """
+
+    along: float = 0.02
+    drift: float = math.radians(0.3)  # rad per metre
+    turn: float = 0.02
+
+    def half_widths(self, step: np.ndarray) -> np.ndarray:
+        """Error box half-widths for a reported step ``(dx, dy, dpsi)`` (1 % margin)."""
+        d = 1.01 * math.hypot(step[0], step[1]) / (1.0 - math.sqrt(2.0) * self.along)
+        turn = 1.01 * (abs(step[2]) + self.drift * d) / (1.0 - self.turn)
+        return np.array([self.along * d, self.along * d, self.drift * d + self.turn * turn])
+
+    def shape(self, step: np.ndarray, floor: float = 1e-7) -> np.ndarray:
+        """``C^Delta`` of an ellipsoid containing the error box: ``3 diag(h^2)`` (+ a floor)."""
+        h = self.half_widths(step) + floor
+        return np.diag(3.0 * h**2)
+
+
+def office_map() -> LandmarkMap:
+    """The 22 landmarks (counter-clockwise along the walls), their ellipses and the walls."""
+    w, h = ROOM
+    perimeter = 2.0 * (w + h)
+    s = (np.arange(N_LANDMARKS) + 0.37) * perimeter / N_LANDMARKS  # off the corners
+    pts, along = [], []
+    for t in s:
+        if t < w:
+            pts.append((t, WALL_INSET))
+            along.append(0.0)
+        elif t < w + h:
+            pts.append((w - WALL_INSET, t - w))
+            along.append(np.pi / 2)
+        elif t < 2 * w + h:
+            pts.append((w - (t - w - h), h - WALL_INSET))
+            along.append(0.0)
+        else:
+            pts.append((WALL_INSET, h - (t - 2 * w - h)))
+            along.append(np.pi / 2)
+    shapes = []
+    for phi in along:
+        R = np.array([[math.cos(phi), -math.sin(phi)], [math.sin(phi), math.cos(phi)]])
+        shapes.append(R @ np.diag(np.square(LANDMARK_SIGMA)) @ R.T)
+    outer = np.array([[[0, 0], [w, 0]], [[w, 0], [w, h]], [[w, h], [0, h]], [[0, h], [0, 0]]])
+    return LandmarkMap(np.array(pts), np.concatenate([outer, WALLS]), np.array(shapes))
+
+
+def course_pose(s) -> np.ndarray:
+    """Pose ``(x, y, psi)`` at arc length ``s`` along the course (laps repeat; psi unwrapped)."""
+    x0, y0, x1, y1, r = COURSE
+    legs = np.array([x1 - x0 - 2 * r, y1 - y0 - 2 * r] * 2)
+    arc = np.pi * r / 2
+    lap = legs.sum() + 4 * arc
+    s = np.atleast_1d(np.asarray(s, dtype=float))
+    n_lap, u = np.divmod(s, lap)
+    out = np.empty((s.size, 3))
+    # Start at the south-west end of the south leg, heading east; corners counter-clockwise.
+    starts = np.array([[x0 + r, y0], [x1, y0 + r], [x1 - r, y1], [x0, y1 - r]])
+    centres = np.array([[x1 - r, y0 + r], [x1 - r, y1 - r], [x0 + r, y1 - r], [x0 + r, y0 + r]])
+    for i, t in enumerate(u):
+        for k in range(4):
+            heading = k * np.pi / 2
+            if t <= legs[k]:
+                d = np.array([math.cos(heading), math.sin(heading)])
+                out[i] = (*(starts[k] + t * d), heading)
+                break
+            t -= legs[k]
+            if t <= arc or k == 3:
+                phi = heading - np.pi / 2 + t / r
+                out[i] = (
+                    *(centres[k] + r * np.array([math.cos(phi), math.sin(phi)])),
+                    heading + t / r,
+                )
+                break
+            t -= arc
+        out[i, 2] += 2 * np.pi * n_lap[i]
+    return out
+
+
+def lap_length() -> float:
+    x0, y0, x1, y1, r = COURSE
+    return 2 * (x1 - x0 - 2 * r) + 2 * (y1 - y0 - 2 * r) + 2 * np.pi * r
+
+
+def _relative(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Motion from pose ``a`` to ``b`` in ``a``'s robot frame."""
+    c, s = math.cos(a[2]), math.sin(a[2])
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    return np.array([c * dx + s * dy, -s * dx + c * dy, b[2] - a[2]])
+
+
+def _correlated(rng: np.random.Generator, bound: float, t: np.ndarray) -> np.ndarray:
+    """A slowly varying factor in ``[-bound, bound]``: bias + sinusoid (periods 5-40 s)."""
+    bias = rng.uniform(-0.5, 0.5) * bound
+    amp = (bound - abs(bias)) * rng.uniform(0.3, 0.95)
+    return bias + amp * np.sin(2 * np.pi * t / rng.uniform(5.0, 40.0) + rng.uniform(0, 2 * np.pi))
+
+
+@dataclass
+class OfficeData:
+    """One simulated experiment: true poses, odometry, scans, the true landmark positions."""
+
+    landmark_map: LandmarkMap
+    true_landmarks: np.ndarray
+    times: np.ndarray
+    poses: np.ndarray  # (K + 1, 3): scan k is taken at poses[k]
+    odometry: np.ndarray  # (K, 3): reported motion from poses[k] to poses[k + 1]
+    odometry_shapes: np.ndarray  # (K, 3, 3)
+    scans: list = field(default_factory=list)  # (alphas, true landmark indices) per pose
+
+
+def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = None):
+    """Simulate ``laps`` of the course: returns an :class:`OfficeData`."""
+    rng = np.random.default_rng(seed)
+    bounds = OdometryBounds() if bounds is None else bounds
+    omap = office_map()
+    # Landmark biases: uniform in 0.95 x their ellipse (fixed for the run).
+    u = rng.normal(size=(omap.size, 2))
+    u *= (0.95 * rng.uniform(0, 1, omap.size) ** 0.5 / np.linalg.norm(u, axis=1))[:, None]
+    true_lm = omap.landmarks + np.einsum("mij,mj->mi", np.linalg.cholesky(omap.shapes), u)
+    n_scans = round(laps * lap_length() / SPEED * SCAN_RATE)
+    times = np.arange(n_scans + 1) / SCAN_RATE
+    poses = course_pose(times * SPEED)
+    factors = np.stack(
+        [
+            _correlated(rng, b, times)
+            for b in (bounds.along, bounds.along, bounds.drift, bounds.turn)
+        ]
+    )
+    odo = np.empty((n_scans, 3))
+    shapes = np.empty((n_scans, 3, 3))
+    for k in range(n_scans):
+        true = _relative(poses[k], poses[k + 1])
+        d = math.hypot(true[0], true[1])
+        err = factors[:, k] * np.array([d, d, d, abs(true[2])])
+        odo[k] = true + np.array([err[0], err[1], err[2] + err[3]])
+        shapes[k] = bounds.shape(odo[k])
+    data = OfficeData(omap, true_lm, times, poses, odo, shapes)
+    true_map = LandmarkMap(true_lm, omap.walls)
+    for pose in poses:
+        seen = np.flatnonzero(true_map.visible(pose[0], pose[1]))
+        bearing = np.arctan2(true_lm[seen, 1] - pose[1], true_lm[seen, 0] - pose[0]) - pose[2]
+        noise = rng.uniform(-1.0, 1.0, seen.size) * DELTA_ALPHA
+        data.scans.append((np.mod(bearing + noise, 2 * np.pi), seen))
+    return data
+
+
+def wrap(angle):
+    """Angle(s) wrapped to [-pi, pi)."""
+    return (np.asarray(angle) + np.pi) % (2.0 * np.pi) - np.pi
+
+
+def pose_level(E: Ellipsoid, pose: np.ndarray) -> float:
+    """``E.level`` of ``pose`` with its heading taken modulo 2 pi nearest to E's centre."""
+    d = np.array([pose[0], pose[1], float(wrap(pose[2] - E.center[2]))])
+    d[:2] -= E.center[:2]
+    return float(d @ np.linalg.solve(E.shape, d))
+
+
+def nearest_landmark(tracker: SetTracker, alpha: float, gate: float, seen: np.ndarray):
+    """Association during tracking: the landmark of ``seen`` whose predicted bearing is nearest.
+
+    Returns ``None`` when no landmark is within ``gate`` or the runner-up is within twice the
+    gate (ambiguous).
+    """
+    x, y, psi = tracker.set.center
+    lm = tracker.map.landmarks
+    off = np.abs(wrap(np.arctan2(lm[seen, 1] - y, lm[seen, 0] - x) - psi - alpha))
+    if off.size == 0:
+        return None
+    order = np.argsort(off)
+    if off[order[0]] > gate or (off.size > 1 and off[order[1]] < 2 * gate):
+        return None
+    return int(seen[order[0]])
+
+
+@dataclass
+class TrackResult:
+    """Per-scan outputs of :func:`track` (after the scan's updates)."""
+
+    centers: np.ndarray  # (K + 1, 3)
+    shapes: np.ndarray  # (K + 1, 3, 3)
+    levels: np.ndarray  # (K + 1,) level of the true pose; <= 1 means contained
+    updates: int
+    inconsistent: int
+    wrong_associations: int
+    injected: int
+    seconds: float
+
+
+def track(
+    data: OfficeData,
+    initial: Ellipsoid,
+    criterion: str = "projection",
+    fault_rate: float = 0.0,
+    seed: int = 0,
+    gate: float = math.radians(1.0),
+    steps: int | None = None,
+    on_update=None,
+) -> TrackResult:
+    """Run :class:`SetTracker` over the simulated scans (scan 0 was used for initialization).
+
+    Each scan: one prediction with the odometry since the previous scan, then one update per
+    measured bearing, associated by :func:`nearest_landmark`. With ``fault_rate`` > 0 a scan
+    has, with that probability, one bearing deliberately paired with the wrong (next visible)
+    landmark -- a single outlier measurement. ``on_update(k, tracker, alpha, j)`` is
+    called before each update (for sampled comparisons).
+    """
+    import time
+
+    rng = np.random.default_rng(seed)
+    tracker = SetTracker(initial, data.landmark_map, DELTA_ALPHA, criterion=criterion)
+    n = len(data.odometry) if steps is None else min(steps, len(data.odometry))
+    centers, shapes, levels = np.empty((n + 1, 3)), np.empty((n + 1, 3, 3)), np.empty(n + 1)
+    centers[0], shapes[0] = initial.center, initial.shape
+    levels[0] = pose_level(initial, data.poses[0])
+    updates = inconsistent = wrong = injected = 0
+    start = time.perf_counter()
+    for k in range(n):
+        tracker.predict(data.odometry[k], data.odometry_shapes[k])
+        alphas, truth = data.scans[k + 1]
+        fault = rng.uniform() < fault_rate and alphas.size > 1
+        bad = int(rng.integers(alphas.size)) if fault else -1
+        seen = np.flatnonzero(tracker.map.visible(*tracker.set.center[:2]))
+        for i, alpha in enumerate(alphas):
+            j = nearest_landmark(tracker, alpha, gate, seen)
+            if i == bad:
+                j = int(seen[(np.searchsorted(seen, truth[i]) + 1) % seen.size])
+                injected += 1
+            if j is None:
+                continue
+            if i != bad and j != truth[i]:
+                wrong += 1
+            if on_update is not None:
+                on_update(k, tracker, alpha, j)
+            info = tracker.update(alpha, j)
+            updates += 1
+            inconsistent += info.case == "inconsistent"
+        centers[k + 1], shapes[k + 1] = tracker.set.center, tracker.set.shape
+        levels[k + 1] = pose_level(tracker.set, data.poses[k + 1])
+    seconds = time.perf_counter() - start
+    return TrackResult(centers, shapes, levels, updates, inconsistent, wrong, injected, seconds)
+
+
+def dead_reckoning(data: OfficeData, start: np.ndarray) -> np.ndarray:
+    """Poses integrated from the odometry alone, from ``start`` (K + 1, 3)."""
+    out = np.empty((len(data.odometry) + 1, 3))
+    out[0] = start
+    for k, step in enumerate(data.odometry):
+        c, s = math.cos(out[k, 2]), math.sin(out[k, 2])
+        out[k + 1] = out[k] + np.array(
+            [c * step[0] - s * step[1], s * step[0] + c * step[1], step[2]]
+        )
+    return out

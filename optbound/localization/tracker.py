@@ -1,0 +1,168 @@
+"""Recursive set-theoretic pose tracker from dead reckoning and bearings [HS96, Sect. 4].
+
+The posture set is an ellipsoid in ``(x, y, psi)`` [HS96, eq. (7)]. :meth:`SetTracker.predict`
+propagates it with a dead-reckoning set of relative motions [HS96, eqs. (8)-(14)];
+:meth:`SetTracker.update` intersects it with the linearized strip of one bearing
+[HS96, eqs. (18)-(23)] and bounds the intersection by [HS96, eq. (24)] with a selectable choice
+of lambda (eqs. (26)-(30)).
+
+**Not guaranteed.** Both steps linearize: the prediction replaces the rotation of the relative
+motion by its Jacobian at the nominal heading [HS96, eq. (11)], and the bearing equation (18) is
+linearized around the predicted centre. The exact sets are not ellipsoids, and the true pose can
+leave the tracked set when the heading uncertainty times the travelled distance, or the position
+uncertainty over the landmark distance, is not small. Only the ellipsoid operations themselves
+(:func:`optbound.analytic.minkowski_sum`, :func:`optbound.analytic.intersect_strip`) are outer
+bounds. The office reproduction (``papers_repro/hs96_office.py``) measures how often the true
+pose leaves the set.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from optbound import analytic
+from optbound.localization.landmark_map import LandmarkMap
+from optbound.localization.landmarks import as_bound
+from optbound.sets import Ellipsoid, Strip
+from optbound.sets import _validate as v
+
+CRITERIA = ("projection", "volume", "robust")
+XY = (0, 1)
+
+
+@dataclass(frozen=True)
+class UpdateInfo:
+    """Outcome of one :meth:`SetTracker.update`: the fusion case, consistency and lambda."""
+
+    case: str
+    consistency: float
+    lam: float
+
+
+class SetTracker:
+    """Ellipsoidal posture tracker [HS96, Fig. 3] (linearized: *not* a guaranteed bound).
+
+    Parameters
+    ----------
+    initial : Ellipsoid
+        Initial posture set of ``(x, y, psi)`` (e.g. from the association search).
+    landmark_map : LandmarkMap
+        Landmarks, their error ellipses [HS96, eq. (2)] (used in eq. (20)) and walls.
+    delta_alpha : float
+        Bearing error bound ``|d alpha| < delta_alpha`` (radians).
+    criterion : {"projection", "volume", "robust"}
+        Choice of lambda in [HS96, eq. (24)]: minimum area of the (x, y) projection
+        [HS96, eqs. (27)-(28)] (default, as the paper recommends), minimum volume
+        [HS96, eq. (26)], or the consistency-weighted robust lambda [HS96, eqs. (29)-(30)]
+        (with the projection-optimal lambda as lambda_OPT).
+    relinearize : int
+        Extra linearizations of eq. (18) around the fused centre (the feedback of
+        [HS96, Fig. 3]); each re-fuses the *predicted* set with the new strip.
+
+    Notes
+    -----
+    The strip half-width of eq. (20) is taken as ``sqrt(d^T C d) + |c3| delta_alpha``: the
+    printed eq. (20) puts ``|c3| delta_alpha`` under the square root, which is not a bound of
+    ``|e_k|`` (the two error terms add).
+    """
+
+    def __init__(
+        self,
+        initial: Ellipsoid,
+        landmark_map: LandmarkMap,
+        delta_alpha: float,
+        criterion: str = "projection",
+        relinearize: int = 0,
+    ):
+        if not isinstance(initial, Ellipsoid) or initial.dim != 3:
+            raise TypeError("initial must be a 3-D Ellipsoid of (x, y, psi)")
+        if not isinstance(landmark_map, LandmarkMap):
+            raise TypeError(f"landmark_map must be a LandmarkMap, got {type(landmark_map)}")
+        if criterion not in CRITERIA:
+            raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
+        if int(relinearize) != relinearize or relinearize < 0:
+            raise ValueError(f"relinearize must be a non-negative integer, got {relinearize}")
+        self.set = initial
+        self.map = landmark_map
+        self.delta_alpha = as_bound("delta_alpha", delta_alpha)
+        self.criterion = criterion
+        self.relinearize = int(relinearize)
+
+    def predict(self, odometry, odometry_shape) -> Ellipsoid:
+        """Propagate the set by one dead-reckoning step [HS96, eqs. (9)-(14)].
+
+        Parameters
+        ----------
+        odometry : array_like, shape (3,)
+            Nominal relative motion ``(dx, dy, dpsi)`` in the robot frame at the previous pose
+            (the centre of Omega^Delta, [HS96, eq. (8)]).
+        odometry_shape : array_like, shape (3, 3)
+            Shape matrix ``C^Delta`` of the dead-reckoning set (positive definite).
+
+        Returns
+        -------
+        Ellipsoid
+            The predicted set: the Schweppe outer ellipsoid, kappa by the ``tr(proj_xy) *
+            proj_psi`` size [HS96, eqs. (15)-(17)], of ``J Omega^E + B Omega^Delta``, with
+            ``B`` the rotation by the nominal heading [eq. (10)] and ``J`` the Jacobian
+            [eq. (12)].
+        """
+        delta = Ellipsoid(v.finite_vector("odometry", odometry, 3), odometry_shape)
+        c = self.set.center
+        cos, sin = math.cos(c[2]), math.sin(c[2])
+        B = np.array([[cos, -sin, 0.0], [sin, cos, 0.0], [0.0, 0.0, 1.0]])
+        step = B @ delta.center
+        J = np.array([[1.0, 0.0, -step[1]], [0.0, 1.0, step[0]], [0.0, 0.0, 1.0]])
+        moved = self.set.affine_map(J, step + c - J @ c)  # centre c + B dz, shape J C J^T
+        self.set = analytic.minkowski_sum(
+            moved, delta.affine_map(B, -B @ delta.center), criterion="size_xy_psi"
+        ).ellipsoid
+        return self.set
+
+    def strip(self, alpha: float, landmark: int, about: np.ndarray | None = None) -> Strip:
+        """Linearized measurement strip of one bearing [HS96, eqs. (19)-(23)].
+
+        ``|D^T z - r| <= e_max`` with ``c1 = sin(alpha + psi)``, ``c2 = cos(alpha + psi)``,
+        ``c3 = c2 (x_LM - x) + c1 (y_LM - y)`` at the linearization point ``about`` (default
+        the current centre), ``D = (c1, -c2, -c3)``, ``r = c1 x_LM - c2 y_LM - c3 psi``.
+        """
+        x, y, psi = self.set.center if about is None else about
+        lx, ly = self.map.landmarks[landmark]
+        c1, c2 = math.sin(alpha + psi), math.cos(alpha + psi)
+        c3 = c2 * (lx - x) + c1 * (ly - y)
+        d = np.array([-c1, c2])
+        e_max = math.sqrt(max(d @ self.map.shapes[landmark] @ d, 0.0)) + abs(c3) * self.delta_alpha
+        r = c1 * lx - c2 * ly - c3 * psi
+        normal = np.array([c1, -c2, -c3])
+        if e_max <= 0.0:
+            raise ValueError("the strip has zero width: give delta_alpha > 0 or landmark shapes")
+        return Strip(normal / e_max, r / e_max)
+
+    def update(self, alpha: float, landmark: int) -> UpdateInfo:
+        """Fuse one bearing ``alpha`` of landmark index ``landmark`` [HS96, eqs. (18)-(30)].
+
+        The set becomes the member of [HS96, eq. (24)] chosen by the criterion; if the strip
+        misses the set ("inconsistent", [HS96, Fig. 1 d)]) the measurement is rejected and the
+        set is kept.
+        """
+        alpha = v.finite_scalar("alpha", alpha)
+        if int(landmark) != landmark or not 0 <= landmark < self.map.size:
+            raise ValueError(f"landmark must be an index in [0, {self.map.size}), got {landmark}")
+        predicted = self.set
+        about = predicted.center
+        for _ in range(self.relinearize + 1):
+            fused = analytic.intersect_strip(
+                predicted,
+                self.strip(alpha, int(landmark), about),
+                criterion=self.criterion,
+                dims=XY,
+            )
+            if fused.ellipsoid is None:
+                break
+            about = fused.ellipsoid.center
+        if fused.ellipsoid is not None:
+            self.set = fused.ellipsoid
+        return UpdateInfo(fused.case, fused.consistency, fused.lam)
