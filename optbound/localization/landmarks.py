@@ -113,21 +113,27 @@ def _solve(L: np.ndarray, alphas: np.ndarray) -> tuple:
     ``bad_pair`` >= 0 flags a pair of bearings equal modulo pi (cot(gamma) infinite).
     """
     n = L.shape[0]
-    cot = np.empty(n)
+    # Centred coordinates: eq. (5) is translation covariant and cancels less when centred.
+    mx, my = 0.0, 0.0
+    for i in range(n):
+        mx += L[i, 0] / n
+        my += L[i, 1] / n
     A = np.empty(n)
     gx = np.empty(n)
     gy = np.empty(n)
+    size = np.empty(n)  # magnitude of the terms summed into g_i
     for i in range(n):
         j = (i + 1) % n
         gamma = alphas[j] - alphas[i]
         s = math.sin(gamma)
         if abs(s) < 1e-12:
             return 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, i
-        cot[i] = math.cos(gamma) / s
-        xi, yi, xj, yj = L[i, 0], L[i, 1], L[j, 0], L[j, 1]
-        A[i] = xi * xj + yi * yj + cot[i] * (xj * yi - yj * xi)
-        gx[i] = cot[i] * (yi - yj) + xj + xi
-        gy[i] = cot[i] * (xj - xi) + yj + yi
+        cot = math.cos(gamma) / s
+        xi, yi, xj, yj = L[i, 0] - mx, L[i, 1] - my, L[j, 0] - mx, L[j, 1] - my
+        A[i] = xi * xj + yi * yj + cot * (xj * yi - yj * xi)
+        gx[i] = cot * (yi - yj) + xj + xi
+        gy[i] = cot * (xj - xi) + yj + yi
+        size[i] = abs(cot) * math.hypot(xj - xi, yj - yi) + math.hypot(xi, yi) + math.hypot(xj, yj)
     # Normal equations of the (N-1) x 2 system; scale = size of the terms that cancel in H.
     m00 = m01 = m11 = r0 = r1 = 0.0
     scale = 0.0
@@ -139,8 +145,7 @@ def _solve(L: np.ndarray, alphas: np.ndarray) -> tuple:
         m11 += hy * hy
         r0 += hx * z
         r1 += hy * z
-        size = math.hypot(gx[i], gy[i]) + math.hypot(gx[i + 1], gy[i + 1])
-        scale = max(scale, size)
+        scale = max(scale, size[i] + size[i + 1])
     half_tr = 0.5 * (m00 + m11)
     root = math.hypot(0.5 * (m00 - m11), m01)
     s_max = math.sqrt(half_tr + root)
@@ -148,8 +153,8 @@ def _solve(L: np.ndarray, alphas: np.ndarray) -> tuple:
     s_min = math.sqrt(max(det, 0.0) / (half_tr + root)) if half_tr + root > 0.0 else 0.0
     if det <= 0.0:
         return 0.0, 0.0, 0.0, s_min, scale, s_max, -1
-    x = (m11 * r0 - m01 * r1) / det
-    y = (m00 * r1 - m01 * r0) / det
+    x = mx + (m11 * r0 - m01 * r1) / det
+    y = my + (m00 * r1 - m01 * r0) / det
     # Heading: circular mean of atan2(L_i - p) - alpha_i over all landmarks.
     sx = sy = 0.0
     for i in range(n):
@@ -185,7 +190,8 @@ def linear_position(landmarks, alphas, rtol: float = SINGULAR_RTOL) -> tuple[flo
     ValueError
         N < 3; two bearings equal modulo pi (the robot is in line with two landmarks); or H
         singular or nearly so: ``s_min(H) < rtol * scale``, where scale is the size of the terms
-        ``g_i``, ``g_{i+1}`` whose difference forms H's rows. With the robot on the circle
+        summed into ``g_i`` and ``g_{i+1}`` (in coordinates centred on the landmarks), whose
+        difference forms H's rows. With the robot on the circle
         through the landmarks H vanishes entirely while cond(H) can stay small [HS96 known
         fact], so H is judged against the terms that cancel in it; the message gives that
         relative condition number and cond(H).
