@@ -12,6 +12,7 @@ from optbound.sets import Ellipsoid
 
 MAP = office.office_map()
 DELTA = office.DELTA_ALPHA
+HEADING = math.radians(10)
 
 
 def _scan(pose, rng, keep=None):
@@ -23,7 +24,7 @@ def _scan(pose, rng, keep=None):
     return np.mod(alphas + rng.uniform(-1, 1, seen.size) * DELTA, 2 * np.pi), seen
 
 
-def _prior(pose, offset=(0.2, -0.15, 0.05), radius=0.5, heading=math.radians(10)):
+def _prior(pose, offset=(0.2, -0.15, 0.05), radius=0.5, heading=HEADING):
     return Ellipsoid(np.asarray(pose) + offset, np.diag([radius**2, radius**2, heading**2]))
 
 

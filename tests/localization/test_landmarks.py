@@ -165,5 +165,5 @@ def test_paving_components_split_a_two_landmark_ambiguity():
 def test_bound_refuses_hopeless_errors():
     rng = np.random.default_rng(1)
     L, pose = _geometry(rng, 4)
-    with pytest.raises(ValueError, match="not provably regular|unbounded"):
+    with pytest.raises(ValueError, match=r"not provably regular|unbounded"):
         linear_position_bound(L, _bearings(L, pose), 0.3, np.eye(2) * 0.5)
