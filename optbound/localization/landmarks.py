@@ -35,7 +35,7 @@ import numpy as np
 from numba import njit
 
 from optbound.interval import Interval, Paving, Tri, atan2, intersection, pave, sqrt
-from optbound.sets import Box
+from optbound.sets import Box, Ellipsoid
 from optbound.sets import _validate as v
 
 #: Default relative singularity threshold: smallest singular value of H over the size of the
@@ -330,22 +330,63 @@ def _windows(psi_lo: float, psi_hi: float, alphas: np.ndarray) -> np.ndarray:
     return np.arange(math.floor(lo / (2 * np.pi)) - 1, math.ceil(hi / (2 * np.pi)) + 2)
 
 
-def _bearing_test(L, Lx, Ly, alphas, delta, ks):
-    """Tri test of all bearing constraints on boxes of (x, y, psi) (see :func:`pose_paving`)."""
+def _ellipsoid_test(prior: Ellipsoid):
+    """Tri test of ``|U (z - c)|^2 <= 1`` with ``U^T U`` the float inverse of the prior's shape."""
+    U = np.linalg.cholesky(np.linalg.inv(prior.shape)).T
+    c = prior.center
+
+    def test(*z):
+        d = [z[i] - c[i] for i in range(3)]
+        total = None
+        for row in U:
+            u = d[0] * row[0] + d[1] * row[1] + d[2] * row[2]
+            total = u * u if total is None else total + u * u
+        return np.where(total.hi <= 1.0, Tri.TRUE, np.where(total.lo > 1.0, Tri.FALSE, Tri.UNKNOWN))
+
+    return test
+
+
+def _sight(theta, dx, dy, C, radius):
+    """For lines of direction ``theta`` from the robot to a landmark offset ``(dx, dy)``:
+
+    ``(n^T d)^2 - n^T C n`` (<= 0 iff the line meets the ellipse ``C`` around the landmark,
+    ``n`` the line's normal) and ``u^T d + radius`` (< 0: the whole ellipse is behind).
+    """
+    s, c = np.sin(theta), np.cos(theta)
+    spread = C[0, 0] * s**2 + C[1, 1] * c**2 - 2.0 * C[0, 1] * (s * c)
+    return (c * dy - s * dx) ** 2 - spread, c * dx + s * dy + radius
+
+
+def _bearing_test(L, shapes, alphas, delta, ks):
+    """Tri test of all bearing constraints on boxes of (x, y, psi) (see :func:`pose_paving`).
+
+    TRUE: the nominal landmark's bearing lies in ``alpha_i + psi +- delta`` (mod 2 pi) on the
+    whole box, or the line of direction ``alpha_i + psi`` meets the ellipse, entirely ahead of
+    the robot, on the whole box. FALSE: for every direction
+    ``theta = alpha_i + psi + [-delta, delta]`` of the box, the line from the robot misses the
+    landmark ellipse (``(n^T (L - p))^2 > n^T C n`` with ``n`` the line's normal), or the whole
+    ellipse lies behind the robot (its disc of radius ``sqrt(lambda_max(C))``, rounded up,
+    does).
+    """
     lows = [k * TWO_PI - delta for k in ks]
     highs = [k * TWO_PI + delta for k in ks]
+    radius = np.sqrt(np.maximum(np.linalg.eigvalsh(shapes)[:, 1], 0.0)) * (1 + 1e-9) + 1e-300
+    window = Interval(-delta, delta)
 
     def test(x, y, psi):
         tri = None
         for i in range(alphas.shape[0]):
-            nominal = atan2(L[i, 1] - y, L[i, 0] - x) - psi - alphas[i]
-            boxed = atan2(Ly[i] - y, Lx[i] - x) - psi - alphas[i]
+            dx, dy = L[i, 0] - x, L[i, 1] - y
+            nominal = atan2(dy, dx) - psi - alphas[i]
             inside = np.zeros(nominal.shape, dtype=bool)
-            outside = np.ones(nominal.shape, dtype=bool)
             for lo_k, hi_k in zip(lows, highs, strict=True):
                 inside |= (nominal.lo >= lo_k.hi) & (nominal.hi <= hi_k.lo)
-                outside &= (boxed.hi < lo_k.lo) | (boxed.lo > hi_k.hi)
-            t_i = np.where(inside, Tri.TRUE, np.where(outside, Tri.FALSE, Tri.UNKNOWN))
+            # Inner also when the line at d alpha = 0 meets the ellipse ahead on the whole box.
+            meet0, ahead0 = _sight(psi + alphas[i], dx, dy, shapes[i], radius[i])
+            inside |= (meet0.hi <= 0.0) & (ahead0.lo - 2.0 * radius[i] > 0.0)
+            meet, ahead = _sight(psi + alphas[i] + window, dx, dy, shapes[i], radius[i])
+            miss, behind = meet.lo > 0.0, ahead.hi < 0.0
+            t_i = np.where(inside, Tri.TRUE, np.where(miss | behind, Tri.FALSE, Tri.UNKNOWN))
             tri = t_i if tri is None else np.minimum(tri, t_i)
         return tri.astype(np.int8)
 
@@ -381,15 +422,17 @@ def pose_paving(
     landmark_shapes=None,
     X0=None,
     eps: float | None = None,
+    prior: Ellipsoid | None = None,
 ) -> Paving:
     """Guaranteed pose set ``(x, y, psi)`` by interval set inversion of the bearings.
 
     The set is ``{(x, y, psi) : exists |d alpha_i| <= delta_alpha and landmark errors in the
     ellipses [HS96, eq. (2)] with alpha_i - d alpha_i + psi = atan2(L~_iy - y, L~_ix - x)
     (mod 2 pi) for all i}`` -- the exact error propagation of [HS96, Sect. 3] (no
-    linearization). A box is *outside* when, with each landmark ellipse enclosed in its
-    bounding box, some bearing misses ``alpha_i +- delta_alpha`` for every point of the box; it
-    is *inner* when the nominal landmarks satisfy every bearing constraint on the whole box.
+    linearization). A box is *outside* when some bearing's line of sight misses the landmark's
+    ellipse (or the ellipse is behind the robot) for every point of the box and every
+    admissible angle error; it is *inner* when the nominal landmarks satisfy every bearing
+    constraint on the whole box.
     So ``inner ⊂ set ⊂ inner ∪ boundary`` holds exactly (with outward rounding).
 
     Parameters
@@ -397,12 +440,17 @@ def pose_paving(
     landmarks, alphas, delta_alpha, landmark_shapes
         As in :func:`linear_position_bound`.
     X0 : array_like (3, 2) or Box, optional
-        Initial box of ``(x, y, psi)``; default the (guaranteed) box of
-        :func:`linear_position_bound` times the heading interval it implies.
+        Initial box of ``(x, y, psi)``; default the prior's bounding box if a prior is given,
+        else the (guaranteed) box of :func:`linear_position_bound` times the heading interval
+        it implies.
     eps : float, optional
         Paving resolution (widest side of an undecided box). Default: ``REFINE`` rounds, each
         paving at 1/40 of the current box's widest side and re-paving the hull of the result
         (the hull contains the set, so each round stays guaranteed).
+    prior : Ellipsoid, optional
+        A 3-D set the pose is also known to lie in (e.g. a predicted set), taken as
+        ``{z : |U (z - c)|^2 <= 1}`` with ``U^T U`` the float inverse of its shape (the
+        ellipsoid that representation defines, a rounding away from ``prior``).
 
     Returns
     -------
@@ -414,7 +462,9 @@ def pose_paving(
     delta = as_bound("delta_alpha", delta_alpha)
     shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
     Lx, Ly = _boxed(L, shapes)
-    if X0 is None:
+    if X0 is None and prior is not None:
+        X0 = prior.bounding_box()
+    elif X0 is None:
         xy = linear_position_bound(L, a, delta, shapes)
         psi = heading_bound(L, Lx, Ly, a, delta, xy)
         if bool(psi.is_empty):
@@ -425,7 +475,11 @@ def pose_paving(
     if X0.dim != 3 or not X0.is_bounded:
         raise ValueError(f"X0 must be a bounded 3-D box of (x, y, psi), got {X0}")
     ks = _windows(X0.lo[2], X0.hi[2], a)
-    test = _bearing_test(L, Lx, Ly, a, delta, ks)
+    test = [_bearing_test(L, shapes, a, delta, ks)]
+    if prior is not None:
+        if not isinstance(prior, Ellipsoid) or prior.dim != 3:
+            raise TypeError("prior must be a 3-D Ellipsoid of (x, y, psi)")
+        test.append(_ellipsoid_test(prior))
     if eps is not None:
         return pave(test, X0, eps)
     # Adaptive default: pave coarsely, then re-pave the (guaranteed) hull, REFINE times.

@@ -247,14 +247,16 @@ def track(
     gate: float = math.radians(1.0),
     steps: int | None = None,
     on_update=None,
+    phantom: float | None = None,
 ) -> TrackResult:
     """Run :class:`SetTracker` over the simulated scans (scan 0 was used for initialization).
 
     Each scan: one prediction with the odometry since the previous scan, then one update per
     measured bearing, associated by :func:`nearest_landmark`. With ``fault_rate`` > 0 a scan
-    has, with that probability, one bearing deliberately paired with the wrong (next visible)
-    landmark -- a single outlier measurement. ``on_update(k, tracker, alpha, j)`` is
-    called before each update (for sampled comparisons).
+    has, with that probability, one single outlier: a bearing deliberately paired with the
+    wrong (next visible) landmark or, with ``phantom`` (metres), the bearing of a reflector
+    that distance from the true landmark in a random direction, paired with that landmark.
+    ``on_update(k, tracker, alpha, j)`` is called before each update (for sampled comparisons).
     """
     import time
 
@@ -274,8 +276,16 @@ def track(
         seen = np.flatnonzero(tracker.map.visible(*tracker.set.center[:2]))
         for i, alpha in enumerate(alphas):
             j = nearest_landmark(tracker, alpha, gate, seen)
-            if i == bad:
+            if i == bad and phantom is None:
                 j = int(seen[(np.searchsorted(seen, truth[i]) + 1) % seen.size])
+                injected += 1
+            elif i == bad:
+                pose, phi = data.poses[k + 1], rng.uniform(0, 2 * np.pi)
+                fake = data.true_landmarks[truth[i]] + phantom * np.array(
+                    [np.cos(phi), np.sin(phi)]
+                )
+                alpha = math.atan2(fake[1] - pose[1], fake[0] - pose[0]) - pose[2]
+                j = int(truth[i])
                 injected += 1
             if j is None:
                 continue

@@ -167,3 +167,20 @@ def test_bound_refuses_hopeless_errors():
     L, pose = _geometry(rng, 4)
     with pytest.raises(ValueError, match=r"not provably regular|unbounded"):
         linear_position_bound(L, _bearings(L, pose), 0.3, np.eye(2) * 0.5)
+
+
+def test_paving_with_a_prior_keeps_the_truth_inside_both():
+    from optbound.sets import Ellipsoid
+
+    L = np.array([[4.0, 1.0]])
+    pose = np.array([0.2, -0.1, 0.3])
+    prior = Ellipsoid([0.25, -0.05, 0.28], np.diag([0.1**2, 0.1**2, 0.05**2]))
+    paving = pose_paving(L, _bearings(L, pose), 1e-3, prior=prior)
+    outer = paving.outer()
+    assert np.any(np.all((outer[:, :, 0] <= pose) & (pose <= outer[:, :, 1]), axis=1))
+    # Every box of the paving meets the prior's bounding box; the hull is inside it.
+    box = prior.bounding_box()
+    hull = paving.hull()
+    assert np.all(hull.lo >= box.lo) and np.all(hull.hi <= box.hi)
+    # A single bearing leaves a thin slab: much smaller than the prior.
+    assert paving.volume_bounds()[1] < 0.2 * prior.volume()
