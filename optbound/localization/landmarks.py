@@ -51,19 +51,15 @@ REFINE = 3
 # ----------------------------------------------------------------------------- validation
 def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
     """Validate an (N, 2) array of finite real landmark positions."""
-    arr = np.asarray(value)
-    if np.iscomplexobj(arr):
+    if np.iscomplexobj(np.asarray(value)):
         raise ValueError(f"{name} must be real, got complex values")
     try:
-        arr = arr.astype(float)
+        arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as err:
         raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
-    if arr.ndim != 2 or arr.shape[1] != 2:
-        raise ValueError(f"{name} must have shape (N, 2), got {arr.shape}")
+    arr = v.finite_matrix(name, arr, (None, 2))
     if arr.shape[0] < min_count:
         raise ValueError(f"{name} needs at least {min_count} landmarks, got {arr.shape[0]}")
-    if not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be finite")
     return arr
 
 
