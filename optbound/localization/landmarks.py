@@ -282,8 +282,9 @@ def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes
     Raises
     ------
     ValueError
-        Bad inputs, N < 3, or an interval system that is not provably regular
-        (``||I - R [H]|| >= 1``: errors too large or the geometry near singular).
+        Bad inputs, N < 3, an interval system that is not provably regular
+        (``||I - R [H]|| >= 1``: errors too large or the geometry near singular), or bearings
+        that no position fits within the bounds.
     """
     L = as_landmarks("landmarks", landmarks, min_count=3)
     a = as_angles("alphas", alphas, L.shape[0])
@@ -313,9 +314,18 @@ def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes
         for k in range(2):
             other = q[1 - k]
             q[k] = intersection(q[k], (b[k] - M[k][1 - k] * other) / M[k][k])
-    lo = [(Interval(p0[k]) + q[k]).lo for k in range(2)]
-    hi = [(Interval(p0[k]) + q[k]).hi for k in range(2)]
-    return Box(np.array(lo, dtype=float), np.array(hi, dtype=float))
+    # Each row must still admit the box: the true position satisfies every row of eq. (6).
+    fits = not (bool(q[0].is_empty) or bool(q[1].is_empty))
+    if fits:
+        X, Y = Interval(p0[0]) + q[0], Interval(p0[1]) + q[1]
+        row = z - (hx * X + hy * Y)
+        fits = bool(np.all((row.lo <= 0.0) & (row.hi >= 0.0)))
+    if not fits:
+        raise ValueError(
+            "the bearings are inconsistent with the error bounds: no position solves the "
+            "interval system of [HS96, eq. (6)]"
+        )
+    return Box(np.array([X.lo, Y.lo], dtype=float), np.array([X.hi, Y.hi], dtype=float))
 
 
 # ------------------------------------------------------------------------- exact pose set

@@ -110,13 +110,17 @@ class SetTracker:
             ``B`` the rotation by the nominal heading [eq. (10)] and ``J`` the Jacobian
             [eq. (12)].
         """
-        delta = Ellipsoid(v.finite_vector("odometry", odometry, 3), odometry_shape)
+        step = v.finite_vector("odometry", odometry, 3)
+        try:
+            delta = Ellipsoid(step, odometry_shape)
+        except ValueError as err:
+            raise ValueError(f"odometry_shape: {err}") from None
         c = self.set.center
         cos, sin = math.cos(c[2]), math.sin(c[2])
         B = np.array([[cos, -sin, 0.0], [sin, cos, 0.0], [0.0, 0.0, 1.0]])
-        step = B @ delta.center
-        J = np.array([[1.0, 0.0, -step[1]], [0.0, 1.0, step[0]], [0.0, 0.0, 1.0]])
-        moved = self.set.affine_map(J, step + c - J @ c)  # centre c + B dz, shape J C J^T
+        move = B @ delta.center
+        J = np.array([[1.0, 0.0, -move[1]], [0.0, 1.0, move[0]], [0.0, 0.0, 1.0]])
+        moved = self.set.affine_map(J, move + c - J @ c)  # centre c + B dz, shape J C J^T
         self.set = analytic.minkowski_sum(
             moved, delta.affine_map(B, -B @ delta.center), criterion="size_xy_psi"
         ).ellipsoid

@@ -184,3 +184,12 @@ def test_paving_with_a_prior_keeps_the_truth_inside_both():
     assert np.all(hull.lo >= box.lo) and np.all(hull.hi <= box.hi)
     # A single bearing leaves a thin slab: much smaller than the prior.
     assert paving.volume_bounds()[1] < 0.2 * prior.volume()
+
+
+def test_bound_reports_bearings_that_no_position_fits():
+    rng = np.random.default_rng(11)
+    L, pose = _geometry(rng, 6)
+    alphas = _bearings(L, pose)
+    alphas[3] += 0.05
+    with pytest.raises(ValueError, match="inconsistent"):
+        linear_position_bound(L, alphas, 1e-5)

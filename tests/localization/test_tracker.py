@@ -123,5 +123,5 @@ def test_bad_calls():
         t.update(np.nan, 1)
     with pytest.raises(ValueError, match="odometry"):
         t.predict([0.1, 0.0], np.eye(3))
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="odometry_shape"):
         t.predict([0.1, 0.0, 0.0], -np.eye(3))
