@@ -179,8 +179,9 @@ def sampled_comparisons(data: office.OfficeData, initial: Ellipsoid, n_samples: 
 
 
 def _lap_drift(data: office.OfficeData, dr: np.ndarray) -> list[float]:
-    per_lap = round(office.lap_length() / office.SPEED * office.SCAN_RATE)
-    ends = np.arange(per_lap, len(dr), per_lap)
+    per_lap = office.lap_length() / office.SPEED * office.SCAN_RATE
+    laps = round((len(dr) - 1) / per_lap)
+    ends = [min(round(k * per_lap), len(dr) - 1) for k in range(1, laps + 1)]
     return [float(np.hypot(*(dr[k, :2] - data.poses[k, :2]))) for k in ends]
 
 
