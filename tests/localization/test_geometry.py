@@ -75,3 +75,15 @@ def test_to_world_points_and_intervals():
 def test_as_segments_rejects_bad_maps(world, match):
     with pytest.raises(ValueError, match=match):
         g.as_segments(world, "world")
+
+
+def test_occluded_on_points_and_boxes():
+    walls = np.array([[[2.0, -1.0], [2.0, 1.0]], [[5.0, 5.0], [6.0, 5.0]]])
+    hidden = g.occluded((np.array([0.0, 3.0]), np.array([0.0, 0.0])), (4.0, 0.0), walls)
+    assert hidden.tolist() == [True, False]
+    # A sight line ending on a wall only touches it: not occluded.
+    assert not g.occluded((0.0, 0.0), (2.0, 0.5), walls)
+    # Boxes: certainly hidden, certainly seen, undecided.
+    box_x, box_y = Interval([0.0, 3.0, 1.0], [0.5, 3.5, 3.0]), Interval([-0.2] * 3, [0.2] * 3)
+    tri = g.occluded((box_x, box_y), (4.0, 0.0), walls)
+    assert tri.tolist() == [Tri.TRUE, Tri.FALSE, Tri.UNKNOWN]
