@@ -16,11 +16,15 @@ Criteria:
   fraction of a ``resolution x resolution`` grid over each candidate's bounding box that lies
   inside, minimized over ``t = lambda / (1 + lambda)`` on a ``AREA_GRID``-point grid in
   ``[0, AREA_T_MAX]`` followed by a bounded Brent refinement (``AREA_REFINE`` evaluations).
-  Cost: about ``AREA_GRID + AREA_REFINE`` bounding updates plus as many grid evaluations of
-  ``resolution^2`` lifted points (for L = 8 and resolution 120: ~0.1 s per update against
-  ~0.3 ms for "volume"). ``AREA_T_MAX`` caps lambda at ~1e6: larger lambdas make the lifted
-  shape nearly singular (``../shared/papers/README.md``, "BH filter numerics") and the grid
-  estimate meaningless.
+  The grid covers the *prior's* bounding box (which contains the feasible set), not each
+  candidate's own box: a candidate degenerating toward the whole ring has a huge box on which
+  a fixed grid misses the thin set and reports area 0. Cost: about ``AREA_GRID + AREA_REFINE``
+  bounding updates plus as many grid evaluations of ``resolution^2`` lifted points (for L = 8
+  and resolution 120, ~0.4 s per update against ~0.5 ms for "volume" on this machine).
+  ``AREA_T_MAX`` caps lambda at ~1e3: the area criterion otherwise drives lambda to the cap
+  on the first ring, the lifted shape becomes nearly singular (cond ~1e11 and more,
+  ``../shared/papers/README.md``, "BH filter numerics") and the later updates can only
+  return lambda = 0.
 """
 
 from __future__ import annotations
@@ -37,7 +41,7 @@ from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid
 CRITERIA = ("volume", "area")
 AREA_GRID = 25
 AREA_REFINE = 12
-AREA_T_MAX = 1.0 - 1e-6
+AREA_T_MAX = 1.0 - 1e-3
 AREA_RESOLUTION = 120
 
 
@@ -111,20 +115,21 @@ def lifted_update(
     first = update(0.0)
     if first.bound is None:  # emptiness does not depend on the criterion
         return update(None)
-    return update(_min_area_lambda(update, resolution))
+    window = P.bounding_box()
+    return update(_min_area_lambda(update, window, resolution))
 
 
 def _parts(result) -> tuple[np.ndarray, np.ndarray]:
     return result.ellipsoid.center, result.ellipsoid.shape
 
 
-def _min_area_lambda(update, resolution: int) -> float:
+def _min_area_lambda(update, window, resolution: int) -> float:
     """lambda minimizing the grid area over ``t = lambda / (1 + lambda)`` (module docstring)."""
 
     def area(t: float) -> float:
         try:
             bound = update(t / (1.0 - t)).bound
-            return np.inf if bound is None else bound.grid_area(resolution)
+            return np.inf if bound is None else bound.grid_area(resolution, window)
         except ValueError:  # a nearly singular lifted shape: not a usable candidate
             return np.inf
 
