@@ -48,16 +48,13 @@ import numpy as np
 
 from optbound.analytic import lifted_update, parabola_arc_ellipse
 from optbound.interval import Interval, Paving, constraint, pave, tri_and
-from optbound.interval.tribool import Tri
 from optbound.sets import Box, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
-from optbound.sets.lifting import box_array
+from optbound.sets.pseudo_ellipsoid import CoverProof
 
 ORDERS = (1, 2)
 # Relative outward margin of the prior box and of the prior's lifted shape (rounding cover).
 _PRIOR_MARGIN = 1e-9
-# Rounds of bisection certify_contains spends on boxes not proven at once.
-_CERTIFY_ROUNDS = 10
 
 
 # ----------------------------------------------------------------------------- validation
@@ -387,63 +384,24 @@ def localize(
 
 
 # ---------------------------------------------------------------------- containment proof
-@dataclass(frozen=True)
-class Certificate:
-    """Outcome of :func:`certify_contains`.
-
-    ``proven``: every box of the paving's ``inner ∪ boundary`` is covered by the bound, up to
-    parts proven outside the exact set; ``direct``: boxes proven inside at once by
-    ``tri_contains``; ``refined``: boxes that needed bisection; ``refuted``: a sub-box proven
-    in the exact set and outside the bound (a containment failure).
-    """
-
-    proven: bool
-    boxes: int
-    direct: int
-    refined: int
-    refuted: bool
-
-
-def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving) -> Certificate:
-    """Prove ``exact set ⊂ bound`` with ``bound.tri_contains`` on the paving's boxes.
-
-    Every inner and boundary box is tested; boxes not proven inside at once (boundary boxes
-    stick out of the exact set by up to their width) are bisected for ``_CERTIFY_ROUNDS``
-    rounds, dropping the sub-boxes that the exact tests prove disjoint from the set.
-    """
-    boxes = box_array("paving boxes", paving.outer(), 2)
-    t = bound.tri_contains(boxes)
-    pending = boxes[t != Tri.TRUE]
+def exact_test(data: Measurements):
+    """The conjunction of :func:`exact_tests`: one Tri test of the exact set on boxes."""
     tests = exact_tests(data)
-    refuted = False
-    for _ in range(_CERTIFY_ROUNDS):
-        if pending.shape[0] == 0:
-            break
-        coords = [Interval(pending[:, j, 0], pending[:, j, 1]) for j in range(2)]
-        exact = tri_and(*(test(*coords) for test in tests))
-        inside = bound.tri_contains(pending)
-        refuted |= bool(np.any((exact == Tri.TRUE) & (inside == Tri.FALSE)))
-        keep = pending[(exact != Tri.FALSE) & (inside != Tri.TRUE)]
-        pending = _bisect(keep)
-    return Certificate(
-        proven=pending.shape[0] == 0 and not refuted,
-        boxes=int(boxes.shape[0]),
-        direct=int(np.sum(t == Tri.TRUE)),
-        refined=int(np.sum(t != Tri.TRUE)),
-        refuted=refuted,
-    )
+
+    def test(*coords):
+        return tri_and(*(t(*coords) for t in tests))
+
+    return test
 
 
-def _bisect(boxes: np.ndarray) -> np.ndarray:
-    """Halve every box along its widest side."""
-    if boxes.shape[0] == 0:
-        return boxes
-    axis = np.argmax(boxes[:, :, 1] - boxes[:, :, 0], axis=1)
-    mid = 0.5 * (boxes[np.arange(len(boxes)), axis, 0] + boxes[np.arange(len(boxes)), axis, 1])
-    left, right = boxes.copy(), boxes.copy()
-    left[np.arange(len(boxes)), axis, 1] = mid
-    right[np.arange(len(boxes)), axis, 0] = mid
-    return np.concatenate([left, right])
+def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving) -> CoverProof:
+    """Prove ``exact set ⊂ bound`` by ``bound.tri_contains`` on the paving's inner ∪ boundary.
+
+    Boxes not proven inside at once (boundary boxes stick out of the exact set by up to their
+    width) are bisected, and sub-boxes the exact tests prove disjoint from the set are dropped
+    (``PseudoEllipsoid.prove_covers``).
+    """
+    return bound.prove_covers(paving.outer(), exact_test(data))
 
 
 def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
@@ -453,7 +411,6 @@ def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
 
 __all__ = [
     "BearingResult",
-    "Certificate",
     "Measurements",
     "Ring",
     "Rings",
@@ -462,6 +419,7 @@ __all__ = [
     "certify_contains",
     "circle",
     "exact_paving",
+    "exact_test",
     "exact_tests",
     "in_exact_set",
     "lifted_prior",

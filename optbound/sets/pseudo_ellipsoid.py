@@ -20,6 +20,7 @@ Membership on boxes is proven, not sampled (:meth:`PseudoEllipsoid.tri_contains`
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
@@ -32,6 +33,8 @@ from optbound.sets.lifting import PolynomialLifting, box_array
 # Relative outward margin of the bounding box read off the lifted shape (covers the rounding
 # of sqrt, of the product by scale and of the sum with offset, each a few ulps).
 _BOX_MARGIN = 1e-12
+# Bisection rounds prove_covers spends on boxes not proven at once.
+COVER_ROUNDS = 10
 
 
 class PseudoEllipsoid:
@@ -175,6 +178,43 @@ class PseudoEllipsoid:
             inside &= ~q.partial
         return from_masks(inside, outside & ~inside)
 
+    def prove_covers(self, boxes, set_test=None, rounds: int = COVER_ROUNDS) -> CoverProof:
+        """Prove that P contains a set X known to lie in the union of ``boxes``.
+
+        Every box is tested with :meth:`tri_contains`. Boxes not proven inside are bisected
+        for up to ``rounds`` rounds; a sub-box is dropped when ``set_test`` (the three-valued
+        test of X on ``Interval`` coordinates, e.g. SIVIA's) proves it disjoint from X. With
+        ``set_test=None`` nothing is dropped: every box must be proven inside P.
+
+        Returns
+        -------
+        CoverProof
+            ``proven`` True only if every remaining part was proven inside P.
+        """
+        from optbound.interval import Interval
+        from optbound.interval.tribool import Tri
+
+        B = box_array("boxes", boxes, self.dim)
+        t = self.tri_contains(B)
+        pending, refuted = B[t != Tri.TRUE], False
+        for _ in range(rounds):
+            if pending.shape[0] == 0:
+                break
+            inside = self.tri_contains(pending)
+            if set_test is None:
+                member = np.full(inside.shape, Tri.UNKNOWN, dtype=np.int8)
+            else:
+                coords = [Interval(pending[:, j, 0], pending[:, j, 1]) for j in range(self.dim)]
+                member = np.asarray(set_test(*coords))
+            refuted |= bool(np.any((member == Tri.TRUE) & (inside == Tri.FALSE)))
+            pending = _bisect(pending[(member != Tri.FALSE) & (inside != Tri.TRUE)])
+        return CoverProof(
+            proven=pending.shape[0] == 0 and not refuted,
+            boxes=int(B.shape[0]),
+            direct=int(np.sum(t == Tri.TRUE)),
+            refuted=refuted,
+        )
+
     # ------------------------------------------------------------------------- geometry
     def bounding_box(self) -> Box:
         """A guaranteed axis-aligned box containing P.
@@ -245,6 +285,34 @@ class PseudoEllipsoid:
         gx, gy = np.meshgrid(xs, ys)
         level = self.level(np.column_stack([gx.ravel(), gy.ravel()])).reshape(gx.shape)
         return list(contourpy.contour_generator(gx, gy, level).lines(1.0))
+
+
+@dataclass(frozen=True)
+class CoverProof:
+    """Outcome of :meth:`PseudoEllipsoid.prove_covers`.
+
+    ``proven``: every box is covered by P, up to parts proven outside the set; ``boxes``:
+    boxes given; ``direct``: boxes proven inside at once, without bisection; ``refuted``: a
+    sub-box proven in the set and outside P (a containment failure).
+    """
+
+    proven: bool
+    boxes: int
+    direct: int
+    refuted: bool
+
+
+def _bisect(boxes: np.ndarray) -> np.ndarray:
+    """Halve every box along its widest side."""
+    if boxes.shape[0] == 0:
+        return boxes
+    rows = np.arange(boxes.shape[0])
+    axis = np.argmax(boxes[:, :, 1] - boxes[:, :, 0], axis=1)
+    mid = 0.5 * (boxes[rows, axis, 0] + boxes[rows, axis, 1])
+    left, right = boxes.copy(), boxes.copy()
+    left[rows, axis, 1] = mid
+    right[rows, axis, 0] = mid
+    return np.concatenate([left, right])
 
 
 def _as_box(X0) -> Box:
