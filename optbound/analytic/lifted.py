@@ -19,8 +19,9 @@ Criteria:
   The grid covers the *prior's* bounding box (which contains the feasible set), not each
   candidate's own box: a candidate degenerating toward the whole ring has a huge box on which
   a fixed grid misses the thin set and reports area 0. Cost: about ``AREA_GRID + AREA_REFINE``
-  bounding updates plus as many grid evaluations of ``resolution^2`` lifted points (for L = 8
-  and resolution 120, ~0.4 s per update against ~0.5 ms for "volume" on this machine).
+  bounding updates plus as many grid evaluations of ``resolution^2`` lifted points (L = 8,
+  resolution 80: of the order of 0.1-0.5 s per update on this shared machine, against
+  ~0.5 ms for "volume"; the README of the reproduction reports the measured time).
   ``AREA_T_MAX`` caps lambda at ~1e3: the area criterion otherwise drives lambda to the cap
   on the first ring, the lifted shape becomes nearly singular (cond ~1e11 and more,
   ``../shared/papers/README.md``, "BH filter numerics") and the later updates can only
@@ -39,10 +40,10 @@ from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid
 
 CRITERIA = ("volume", "area")
-AREA_GRID = 25
-AREA_REFINE = 12
+AREA_GRID = 17
+AREA_REFINE = 8
 AREA_T_MAX = 1.0 - 1e-3
-AREA_RESOLUTION = 120
+AREA_RESOLUTION = 80
 
 
 @dataclass(frozen=True)

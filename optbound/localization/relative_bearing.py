@@ -9,7 +9,8 @@ measured as ``gamma_hat = gamma_ij(x) + v``, ``|v| <= eps``. The feasible set of
 measurement is the crescent ``M_ij`` between two circles through the landmarks.
 
 - **Exact set** (:func:`exact_paving`): SIVIA on ``|wrap(gamma_ij(x) - gamma_hat)| <= eps``
-  written with one interval ``atan2`` (:func:`bearing_residual`), independent of the rings.
+  written with one interval ``atan2`` (:func:`bearing_residual`), conjoined with the same
+  constraint in sign form (:func:`bearing_sides`), independent of the rings.
 - **Circle of constant bearing** (:func:`circle`) [BH, eqs. (17)-(19)]: centre
   ``M = (L_i + L_j) / 2 - cot(gamma) Delta_perp / 2`` (``Delta_perp`` the counter-clockwise
   rotation of ``L_j - L_i``), radius ``|L_j - L_i| / (2 |sin gamma|)``; for ``gamma > 0`` the
@@ -141,8 +142,30 @@ def bearing_residual(x, y, li, lj, gamma):
     return np.arctan2(c * cross - s * dot, c * dot + s * cross)
 
 
+def bearing_sides(x, y, li, lj, gamma, eps):
+    """``(sin(gamma_ij - gamma + eps), -sin(gamma_ij - gamma - eps))`` times ``|x - L_i| |x - L_j|``.
+
+    Both are >= 0 exactly when ``|wrap(gamma_ij - gamma)| <= eps`` (for eps < pi/2): the same
+    constraint as :func:`bearing_residual`, written as two cross products with the rotated
+    vectors, polynomial in x and free of atan2's branch cut (where the residual is near
+    ±pi, on the other arc of the circle, interval atan2 cannot exclude a box). Float arrays or
+    ``Interval`` boxes, from one formula; at the landmarks both vanish.
+    """
+    ux, uy = x - lj[0], y - lj[1]
+    wx, wy = x - li[0], y - li[1]
+    dot = ux * wx + uy * wy
+    cross = ux * wy - uy * wx
+    g, e = (Interval(gamma), Interval(eps)) if isinstance(x, Interval) else (gamma, eps)
+    lo, hi = g - e, g + e
+    return cross * np.cos(lo) - dot * np.sin(lo), dot * np.sin(hi) - cross * np.cos(hi)
+
+
 def exact_tests(data: Measurements) -> list:
-    """One SIVIA test per measurement: ``|bearing_residual| <= eps`` (Tri on boxes)."""
+    """Two SIVIA tests per measurement: ``|bearing_residual| <= eps`` and its sign form.
+
+    The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`bearing_sides` states the
+    same set without a branch cut, so that boxes on the circle's other arc can be excluded.
+    """
     tests = []
     for k in range(len(data)):
         li, lj, g, e = data.pair(k)
@@ -150,7 +173,11 @@ def exact_tests(data: Measurements) -> list:
         def residual(x, y, li=li, lj=lj, g=g):
             return bearing_residual(x, y, li, lj, g)
 
+        def sides(x, y, li=li, lj=lj, g=g, e=e):
+            return bearing_sides(x, y, li, lj, g, e)
+
         tests.append(constraint(residual, [[-e, e]]))
+        tests.append(constraint(sides, [[0.0, np.inf], [0.0, np.inf]]))
     return tests
 
 
@@ -415,6 +442,7 @@ __all__ = [
     "Ring",
     "Rings",
     "bearing_residual",
+    "bearing_sides",
     "bound_ellipse_quadratics",
     "certify_contains",
     "circle",
