@@ -32,7 +32,14 @@ from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
 from optbound.report.tables import markdown_table
 from optbound.sets import Box
-from papers_repro._common import claim_table, draw_ellipse, finish_axes, pyplot, run_cli, save_figure
+from papers_repro._common import (
+    claim_table,
+    draw_ellipse,
+    finish_axes,
+    pyplot,
+    run_cli,
+    save_figure,
+)
 
 PAPER = "BH"
 LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
@@ -74,7 +81,9 @@ def analyse(landmarks, pairs, gammas, eps, paving_eps: float | None, references:
     data = rb.measurements(landmarks, pairs, gammas, eps)
     X0 = _box_rows(rb.prior_box(data))
     if paving_eps is None:
-        coarse = rb.exact_paving(landmarks, pairs, gammas, eps, X0, np.max(X0[:, 1] - X0[:, 0]) / 40)
+        coarse = rb.exact_paving(
+            landmarks, pairs, gammas, eps, X0, np.max(X0[:, 1] - X0[:, 0]) / 40
+        )
         X0 = _box_rows(coarse.hull())
         paving_eps = float(np.max(X0[:, 1] - X0[:, 0])) / RELATIVE_PAVING
     paving = rb.exact_paving(landmarks, pairs, gammas, eps, X0, paving_eps)
@@ -127,8 +136,12 @@ def _draw_set(ax, paving: Paving, color="0.65") -> None:
         for b in boxes:
             ax.add_patch(
                 Rectangle(
-                    (b[0, 0], b[1, 0]), b[0, 1] - b[0, 0], b[1, 1] - b[1, 0],
-                    facecolor=color, edgecolor="none", alpha=alpha,
+                    (b[0, 0], b[1, 0]),
+                    b[0, 1] - b[0, 0],
+                    b[1, 1] - b[1, 0],
+                    facecolor=color,
+                    edgecolor="none",
+                    alpha=alpha,
                 )
             )
 
@@ -156,16 +169,31 @@ def _figure_first_step(first: dict, out_dir: Path) -> Path:
     zoom = Box(zoom.lo - pad, zoom.hi + pad)
     _draw_set(axes[0], first["paving"])
     _draw_scene(axes[0])
-    finish_axes(axes[0], "Fig. 4 analogue: exact M^{3,1} (eps = 4°)",
-                (window.lo[0], window.hi[0]), (window.lo[1], window.hi[1]))
-    for ax, key, title in ((axes[1], "L8", "Fig. 5/6a analogue: L = 8"),
-                           (axes[2], "L4", "Fig. 6b analogue: L = 4")):
+    finish_axes(
+        axes[0],
+        "Fig. 4 analogue: exact M^{3,1} (eps = 4°)",
+        (window.lo[0], window.hi[0]),
+        (window.lo[1], window.hi[1]),
+    )
+    for ax, key, title in (
+        (axes[1], "L8", "Fig. 5/6a analogue: L = 8"),
+        (axes[2], "L4", "Fig. 6b analogue: L = 4"),
+    ):
         _draw_set(ax, first["paving"])
         _draw_scene(ax)
         _draw_bound(ax, first[key].bound, zoom, f"{key} bound", color="k", lw=1.8)
         hull = first["paving"].hull()
-        ax.add_patch(pyplot().Rectangle(hull.lo, *(hull.hi - hull.lo), fill=False, ec="tab:red",
-                                        lw=1.0, ls="--", label="best box"))
+        ax.add_patch(
+            pyplot().Rectangle(
+                hull.lo,
+                *(hull.hi - hull.lo),
+                fill=False,
+                ec="tab:red",
+                lw=1.0,
+                ls="--",
+                label="best box",
+            )
+        )
         ax.legend(fontsize=8, loc="upper right")
         finish_axes(ax, title, (zoom.lo[0], zoom.hi[0]), (zoom.lo[1], zoom.hi[1]))
     return save_figure(fig, out_dir, "bh_fig4_6_first_step.png")
@@ -187,20 +215,37 @@ def _figure_final(final: dict, out_dir: Path) -> Path:
         _draw_bound(ax, final["L8"].bound, zoom, "L = 8", color="k", lw=1.8)
         _draw_bound(ax, final["L4"].bound, zoom, "L = 4", color="tab:blue", lw=1.2)
         if "opt8" in final:
-            _draw_bound(ax, final["opt8"].bound, zoom, "optimal L = 8", color="tab:green",
-                        lw=1.0, ls=":")
+            _draw_bound(
+                ax, final["opt8"].bound, zoom, "optimal L = 8", color="tab:green", lw=1.0, ls=":"
+            )
         if "ellipse" in final:
-            draw_ellipse(ax, final["ellipse"].ellipsoid, color="tab:orange", lw=1.2,
-                         label="best ellipse (SDP)")
-        ax.add_patch(plt.Rectangle(hull.lo, *(hull.hi - hull.lo), fill=False, ec="tab:red",
-                                   lw=1.2, ls="--", label="best box"))
+            draw_ellipse(
+                ax,
+                final["ellipse"].ellipsoid,
+                color="tab:orange",
+                lw=1.2,
+                label="best ellipse (SDP)",
+            )
+        ax.add_patch(
+            plt.Rectangle(
+                hull.lo,
+                *(hull.hi - hull.lo),
+                fill=False,
+                ec="tab:red",
+                lw=1.2,
+                ls="--",
+                label="best box",
+            )
+        )
         ax.legend(fontsize=8, loc="upper right")
         finish_axes(ax, title, (window.lo[0], window.hi[0]), (window.lo[1], window.hi[1]))
     return save_figure(fig, out_dir, "bh_fig7_8_final.png")
 
 
 # ----------------------------------------------------------------------------------- sweep
-def random_instance(rng: np.random.Generator) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
+def random_instance(
+    rng: np.random.Generator,
+) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
     """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
 
     Geometries are redrawn until every measured bearing is a crescent with some margin
@@ -213,8 +258,12 @@ def random_instance(rng: np.random.Generator) -> tuple[np.ndarray, list, np.ndar
         x = rng.uniform(-1.0, 1.0, 2)
         eps = np.radians(rng.uniform(1.0, 8.0))
         gam = bearings(x, L, PAIRS) + rng.uniform(-eps, eps, 3)
-        dists = [np.linalg.norm(L[i] - L[j]) for i, j in PAIRS] + list(np.linalg.norm(L - x, axis=1))
-        if min(dists) > 0.3 and np.all((np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)):
+        dists = [np.linalg.norm(L[i] - L[j]) for i, j in PAIRS] + list(
+            np.linalg.norm(L - x, axis=1)
+        )
+        if min(dists) > 0.3 and np.all(
+            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
+        ):
             return L, PAIRS, rb.wrap_angle(gam), eps, x
 
 
@@ -272,7 +321,9 @@ def main(out_dir: Path, quick: bool = False) -> dict:
     final = analyse(LANDMARKS, PAIRS, gammas, eps, PAVING_EPS, references=not quick)
     if quick:  # the L = 4 reference and the SDP ellipse are cheap; keep them in the quick run
         ref = optimal.optimal_pseudo_ellipsoid(
-            final["L4"].bound.lift, final["paving"].inner, final["paving"].boundary,
+            final["L4"].bound.lift,
+            final["paving"].inner,
+            final["paving"].boundary,
             rb.exact_test(final["data"]),
         )
         final["opt4"], final["opt4_area"] = ref, ref.bound.area_bounds(PAVING_EPS / 4)
@@ -302,38 +353,55 @@ def main(out_dir: Path, quick: bool = False) -> dict:
         "ellipse": "best outer ellipse (lower bound, SDP of rings ∩ hull)",
         "box": "best axis-aligned box (hull of inner / of inner ∪ boundary)",
     }
-    area_rows = [
-        [names[k], _fmt(v), f"{_mid(v) / ex_mid:.2f}"] for k, v in areas.items()
-    ]
+    area_rows = [[names[k], _fmt(v), f"{_mid(v) / ex_mid:.2f}"] for k, v in areas.items()]
     lifted_rows = []
     for order in (4, 8):
         key = f"opt{order}"
         if key in final:
             ref = final[key]
-            lifted_rows.append([
-                f"L = {order}", f"{final[f'L{order}'].bound.lifted.volume():.3e}",
-                f"[{ref.lower:.3e}, {ref.upper:.3e}]", f"{ref.inflation:.3f}",
-                f"{final[f'L{order}'].bound.lifted.volume() / ref.upper:.3g}",
-            ])
+            lifted_rows.append(
+                [
+                    f"L = {order}",
+                    f"{final[f'L{order}'].bound.lifted.volume():.3e}",
+                    f"[{ref.lower:.3e}, {ref.upper:.3e}]",
+                    f"{ref.inflation:.3f}",
+                    f"{final[f'L{order}'].bound.lifted.volume() / ref.upper:.3g}",
+                ]
+            )
     first_ratio = first["L8_area"][1] / first["L4_area"][0]
     claims = [
         ["eps", "4° (Fig. 1; not restated in Sect. V)", f"{EPS_DEG}° (used)"],
-        ["L = 8 tighter than L = 4 after step (3, 1)", "yes (Figs. 5, 6)",
-         f"yes: area {_fmt(first['L8_area'], 4)} vs {_fmt(first['L4_area'], 4)} (≤ {first_ratio:.2f}×)"],
-        ["L = 8 tighter than L = 4, final", "yes (Sect. VI)",
-         f"{'yes' if final['L8_area'][1] < final['L4_area'][0] else 'no'}: "
-         f"{_mid(final['L8_area']) / ex_mid:.2f}× vs {_mid(final['L4_area']) / ex_mid:.2f}× the exact area"],
-        ["final L = 8 bound vs the exact set", "\"very close to optimal\" (Sect. VI)",
-         f"{_mid(final['L8_area']) / ex_mid:.2f}× the exact area"],
-        ["best box vs the bounds", "\"much more conservative\" (Fig. 8)",
-         f"box {_mid(final['box']) / ex_mid:.2f}×, L = 8 {_mid(final['L8_area']) / ex_mid:.2f}×"],
-        ["bounds contain the exact set", "guaranteed (Sect. III-B)",
-         f"proven: L = 8 {final['L8_proof'].proven}, L = 4 {final['L4_proof'].proven} "
-         f"({final['L8_proof'].boxes} boxes)"],
+        [
+            "L = 8 tighter than L = 4 after step (3, 1)",
+            "yes (Figs. 5, 6)",
+            f"yes: area {_fmt(first['L8_area'], 4)} vs {_fmt(first['L4_area'], 4)} "
+            f"(≤ {first_ratio:.2f}×)",
+        ],
+        [
+            "L = 8 tighter than L = 4, final",
+            "yes (Sect. VI)",
+            f"{'yes' if final['L8_area'][1] < final['L4_area'][0] else 'no'}: "
+            f"{_mid(final['L8_area']) / ex_mid:.2f}× vs "
+            f"{_mid(final['L4_area']) / ex_mid:.2f}× the exact area",
+        ],
+        [
+            "final L = 8 bound vs the exact set",
+            '"very close to optimal" (Sect. VI)',
+            f"{_mid(final['L8_area']) / ex_mid:.2f}× the exact area",
+        ],
+        [
+            "best box vs the bounds",
+            '"much more conservative" (Fig. 8)',
+            f"box {_mid(final['box']) / ex_mid:.2f}×, L = 8 {_mid(final['L8_area']) / ex_mid:.2f}×",
+        ],
+        [
+            "bounds contain the exact set",
+            "guaranteed (Sect. III-B)",
+            f"proven: L = 8 {final['L8_proof'].proven}, L = 4 {final['L4_proof'].proven} "
+            f"({final['L8_proof'].boxes} boxes)",
+        ],
     ]
-    sweep_rows = [
-        [k, f"{sw['median'][k]:.2f}", f"{sw['max'][k]:.2f}"] for k in ("L8", "L4", "box")
-    ]
+    sweep_rows = [[k, f"{sw['median'][k]:.2f}", f"{sw['max'][k]:.2f}"] for k in ("L8", "L4", "box")]
     area_crit = sw["area_vs_volume"]
     crit_text = (
         f"Area criterion (L = 8) on {len(area_crit)} geometries: area / volume-criterion area "
@@ -343,23 +411,26 @@ def main(out_dir: Path, quick: bool = False) -> dict:
         if area_crit
         else "Area criterion: not run in the quick variant."
     )
-    md = "\n\n".join([
-        "## BH: relative-bearing localization with pseudo-ellipsoids (Sect. V)",
-        "Geometry of [BH, Sect. V]; the paper's figures are lost in our copy and it prints no "
-        "numbers, so the table sets its qualitative claims beside our measurements.",
-        claim_table(claims),
-        "### Areas, Sect. V final set (eps = 4°, paving width "
-        f"{PAVING_EPS})",
-        markdown_table(("set", "area bracket", "ratio to exact (midpoints)"), area_rows),
-        "### Lifted volumes: filter against the optimal pseudo-ellipsoid",
-        markdown_table(("lifting", "filter", "optimal [lower, upper]", "inflation", "filter / upper"),
-                       lifted_rows),
-        f"### Seeded sweep ({sw['n']} geometries, eps in [1°, 8°], seed {SWEEP_SEED})",
-        markdown_table(("area / exact area", "median", "max"), sweep_rows),
-        f"L = 8 beats L = 4 (disjoint brackets): {sw['l8_beats_l4']}/{sw['n']}; containment "
-        f"proven: {sw['proven']}/{sw['n']}; true position inside: {sw['truth_inside']}/{sw['n']}. "
-        + crit_text,
-    ])
+    md = "\n\n".join(
+        [
+            "## BH: relative-bearing localization with pseudo-ellipsoids (Sect. V)",
+            "Geometry of [BH, Sect. V]; the paper's figures are lost in our copy and it prints no "
+            "numbers, so the table sets its qualitative claims beside our measurements.",
+            claim_table(claims),
+            f"### Areas, Sect. V final set (eps = 4°, paving width {PAVING_EPS})",
+            markdown_table(("set", "area bracket", "ratio to exact (midpoints)"), area_rows),
+            "### Lifted volumes: filter against the optimal pseudo-ellipsoid",
+            markdown_table(
+                ("lifting", "filter", "optimal [lower, upper]", "inflation", "filter / upper"),
+                lifted_rows,
+            ),
+            f"### Seeded sweep ({sw['n']} geometries, eps in [1°, 8°], seed {SWEEP_SEED})",
+            markdown_table(("area / exact area", "median", "max"), sweep_rows),
+            f"L = 8 beats L = 4 (disjoint brackets): {sw['l8_beats_l4']}/{sw['n']}; containment "
+            f"proven: {sw['proven']}/{sw['n']}; "
+            f"true position inside: {sw['truth_inside']}/{sw['n']}. " + crit_text,
+        ]
+    )
     return {
         "markdown": md,
         "figures": figures,

@@ -1,4 +1,4 @@
-"""Ellipsoidal noise of a measurement transformed by ``eta(z) = [z, z^2]`` [BH, eqs. (12)-(13), Fig. 2].
+"""Noise ellipse of a measurement transformed by ``eta(z) = [z, z^2]`` [BH, eqs. (12)-(13), Fig. 2].
 
 If ``w`` is known to lie in ``[lo, hi]``, the transformed value ``eta(w) = (w, w^2)`` lies on a
 parabola arc. Its minimum-area enclosing ellipse is the Steiner circum-ellipse of the arc's
@@ -26,7 +26,7 @@ MARGIN = 1e-9
 
 @dataclass(frozen=True)
 class ArcNoise:
-    """Centre ``v_hat`` (2,) and shape ``V`` (2, 2) of the ellipse ``{v : (v - v_hat)^T V^-1 (v - v_hat) <= 1}``."""
+    """Centre ``v_hat`` and shape ``V`` of ``{v : (v - v_hat)^T V^-1 (v - v_hat) <= 1}``."""
 
     center: np.ndarray
     shape: np.ndarray

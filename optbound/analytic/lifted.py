@@ -1,4 +1,4 @@
-"""The pseudo-ellipsoidal filter: the bounding-ellipsoid update in a lifted space [BH, eqs. (15)-(16)].
+"""The pseudo-ellipsoidal filter: bounding-ellipsoid updates in a lifted space [BH, eqs. (15)-(16)].
 
 A pseudo-linear measurement ``z* = H* T(x) + v*`` with ``v*`` in an ellipsoid
 ``{v : (v - v_hat)^T V^{-1} (v - v_hat) <= 1}`` [BH, eq. (15)] is linear in the lifted state

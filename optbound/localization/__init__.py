@@ -1,1 +1,1 @@
-"""Robot localization models built from the lower layers [HS96], [BH], [LJMW97], [KJWM00], [GLH12]."""
+"""Robot localization models built from the lower layers ([HS96], [BH], [LJMW97], ...)."""

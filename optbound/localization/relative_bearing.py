@@ -143,7 +143,7 @@ def bearing_residual(x, y, li, lj, gamma):
 
 
 def bearing_sides(x, y, li, lj, gamma, eps):
-    """``(sin(gamma_ij - gamma + eps), -sin(gamma_ij - gamma - eps))`` times ``|x - L_i| |x - L_j|``.
+    """``|x - L_i| |x - L_j|`` times ``(sin(r + eps), -sin(r - eps))``, ``r = gamma_ij - gamma``.
 
     Both are >= 0 exactly when ``|wrap(gamma_ij - gamma)| <= eps`` (for eps < pi/2): the same
     constraint as :func:`bearing_residual`, written as two cross products with the rotated
@@ -286,7 +286,9 @@ def lifting(order: int, offset, scale: float) -> PolynomialLifting:
     """The L = 4 (order 1, [BH, eq. (22)]) or L = 8 (order 2, [BH, eq. (23)]) lifting."""
     if order not in ORDERS:
         raise ValueError(f"order must be 1 (L = 4) or 2 (L = 8), got {order!r}")
-    return PolynomialLifting.bh4(offset, scale) if order == 1 else PolynomialLifting.bh8(offset, scale)
+    return (
+        PolynomialLifting.bh4(offset, scale) if order == 1 else PolynomialLifting.bh8(offset, scale)
+    )
 
 
 def ring_rows(ring: Ring, order: int, offset, scale: float):

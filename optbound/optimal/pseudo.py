@@ -68,19 +68,30 @@ def _corners(inner: np.ndarray) -> np.ndarray:
 
 
 def _active_mvee(Y: np.ndarray) -> Ellipsoid:
-    """MVEE of the rows of Y, solved on a growing active set (exact for the full set)."""
-    rough = khachiyan_mvee(Y, tol=1e-3)
-    order = np.argsort(rough.level(Y))[::-1]
-    active = order[: min(ACTIVE_POINTS, Y.shape[0])]
+    """MVEE of the rows of Y, solved on a growing active set (exact for the full set).
+
+    The lifted points are nearly flat in some directions (condition numbers ~1e9 for L = 8),
+    so they are whitened first, ``Y' = (Y - mean) A`` with ``A = cov^{-1/2}``; the MVEE is
+    affine-equivariant, and the answer is mapped back.
+    """
+    mean = Y.mean(axis=0)
+    w, V = np.linalg.eigh(np.cov(Y.T))
+    A = V / np.sqrt(w)
+    Z = (Y - mean) @ A
+    rough = khachiyan_mvee(Z, tol=1e-3)
+    order = np.argsort(rough.level(Z))[::-1]
+    active = order[: min(ACTIVE_POINTS, Z.shape[0])]
     for _ in range(ACTIVE_ROUNDS):
-        E = mvee(Y[active]).ellipsoid
-        level = E.level(Y)
+        E = mvee(Z[active]).ellipsoid
+        level = E.level(Z)
         missed = np.flatnonzero(level > 1.0)
         if missed.size == 0:
             break
         worst = missed[np.argsort(level[missed])[::-1][:ACTIVE_POINTS]]
         active = np.union1d(active, worst)
-    return certify_points(E, Y)[0]
+    E = certify_points(E, Z)[0]
+    back = np.linalg.inv(A)  # A^{-1} = diag(sqrt(w)) V^T
+    return Ellipsoid(mean + E.center @ back, back.T @ E.shape @ back)
 
 
 def optimal_pseudo_ellipsoid(

@@ -116,7 +116,9 @@ class PseudoEllipsoid:
         C = Interval(self.shape)
         size = W.shape[0]
         A = [[None] * size for _ in range(size)]
-        WC = [[_dot(W[i], [C[k, j] for k in range(size)]) for j in range(size)] for i in range(size)]
+        WC = [
+            [_dot(W[i], [C[k, j] for k in range(size)]) for j in range(size)] for i in range(size)
+        ]
         frob = 0.0 * C[0, 0]
         for i in range(size):
             for j in range(size):
@@ -145,7 +147,7 @@ class PseudoEllipsoid:
         return self.tri_test(*(Interval(B[:, j, 0], B[:, j, 1]) for j in range(self.dim)))
 
     def tri_test(self, *coords) -> np.ndarray:
-        """The test ``x ∈ P`` on coordinates given as ``Interval`` arrays (for ``interval.pave``)."""
+        """The test ``x ∈ P`` on ``Interval`` coordinates (for ``interval.pave``)."""
         from optbound.interval import Interval, intersection
         from optbound.interval.tribool import from_masks
 

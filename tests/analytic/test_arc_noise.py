@@ -58,5 +58,5 @@ def test_is_the_minimum_area_ellipse_of_dense_arc_samples(lo, hi):
 
 @pytest.mark.parametrize(("lo", "hi"), [(1.0, 1.0), (2.0, 1.0), (np.nan, 1.0), (0.0, np.inf)])
 def test_bad_input(lo, hi):
-    with pytest.raises(ValueError, match="lo|hi"):
+    with pytest.raises(ValueError, match=r"lo|hi"):
         analytic.parabola_arc_ellipse(lo, hi)

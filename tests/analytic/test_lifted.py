@@ -73,8 +73,16 @@ def test_two_row_update_with_the_arc_noise_l8():
     H = np.array(
         [
             [-2 * M[0], -2 * M[1], 0, 1, 1, 0, 0, 0],
-            [-4 * M[0] * m2, -4 * M[1] * m2, 8 * M[0] * M[1], 6 * M[0] ** 2 + 2 * M[1] ** 2,
-             2 * M[0] ** 2 + 6 * M[1] ** 2, -4 * M[0], -4 * M[1], 1],
+            [
+                -4 * M[0] * m2,
+                -4 * M[1] * m2,
+                8 * M[0] * M[1],
+                6 * M[0] ** 2 + 2 * M[1] ** 2,
+                2 * M[0] ** 2 + 6 * M[1] ** 2,
+                -4 * M[0],
+                -4 * M[1],
+                1,
+            ],
         ]
     )
     v_hat, V = analytic.parabola_arc_ellipse(0.8**2, 1.0**2)
@@ -99,7 +107,9 @@ def test_bad_input():
         analytic.lifted_update(P, H4[:, :3], [0.0], [[1.0]])
     with pytest.raises(ValueError, match="v_center"):
         analytic.lifted_update(P, H4, [0.0], [[1.0]], v_center=[np.nan])
-    lift3 = PolynomialLifting.from_components([{(1, 0, 0): 1.0}, {(0, 1, 0): 1.0}, {(0, 0, 1): 1.0}])
+    lift3 = PolynomialLifting.from_components(
+        [{(1, 0, 0): 1.0}, {(0, 1, 0): 1.0}, {(0, 0, 1): 1.0}]
+    )
     P3 = PseudoEllipsoid(lift3, np.zeros(3), np.eye(3))
     with pytest.raises(ValueError, match="area"):
         analytic.lifted_update(P3, [[1.0, 0, 0]], [0.0], [[0.25]], criterion="area")

@@ -75,7 +75,8 @@ def crescent_points(li, lj, g_hat, eps, n, seed):
 
 
 @pytest.mark.parametrize(
-    ("g_hat", "eps"), [(np.pi / 4, EPS), (np.pi / 2, EPS), (-3 * np.pi / 4, EPS), (0.2, 0.15), (2.8, 0.3)]
+    ("g_hat", "eps"),
+    [(np.pi / 4, EPS), (np.pi / 2, EPS), (-3 * np.pi / 4, EPS), (0.2, 0.15), (2.8, 0.3)],
 )
 def test_rings_contain_the_crescent_on_exact_points(g_hat, eps):
     li, lj = np.array([0.0, 1.0]), np.array([1.0, 1.0])
@@ -126,7 +127,9 @@ def test_bearing_residual_interval_encloses_points():
     lo = rng.uniform(-2, 2, (300, 2))
     hi = lo + rng.uniform(0, 0.2, (300, 2))
     li, lj, g = LANDMARKS[2], LANDMARKS[0], GAMMAS[0]
-    box_res = rb.bearing_residual(Interval(lo[:, 0], hi[:, 0]), Interval(lo[:, 1], hi[:, 1]), li, lj, g)
+    box_res = rb.bearing_residual(
+        Interval(lo[:, 0], hi[:, 0]), Interval(lo[:, 1], hi[:, 1]), li, lj, g
+    )
     for t in rng.random((10, 2)):
         p = lo + t * (hi - lo)
         r = rb.bearing_residual(p[:, 0], p[:, 1], li, lj, g)
@@ -134,7 +137,7 @@ def test_bearing_residual_interval_encloses_points():
 
 
 def test_exact_paving_brackets_exact_points(sect5):
-    data, paving = sect5
+    _, paving = sect5
     lo, hi = paving.volume_bounds()
     assert 0 < lo < hi
     rng = np.random.default_rng(4)
@@ -190,7 +193,9 @@ def test_random_geometries_are_proven(seed):
             break
     data = rb.measurements(L, PAIRS, g, eps)
     box = rb.prior_box(data)
-    paving = rb.exact_paving(L, PAIRS, g, eps, np.stack([box.lo, box.hi], 1), 0.01 * np.max(box.hi - box.lo))
+    paving = rb.exact_paving(
+        L, PAIRS, g, eps, np.stack([box.lo, box.hi], 1), 0.01 * np.max(box.hi - box.lo)
+    )
     assert not paving.is_empty
     for order in (1, 2):
         bound = rb.localize(L, PAIRS, g, eps, order=order).bound
@@ -238,3 +243,19 @@ def test_rings_refuse_a_set_that_is_no_crescent():
         rb.rings([0.0, 0.0], [1.0, 0.0], 0.05, 0.1)
     with pytest.raises(ValueError, match="crescent"):
         rb.rings([0.0, 0.0], [1.0, 0.0], 3.1, 0.1)
+
+
+def test_readme_example_runs(capsys):
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    section = text.split("<!-- BEGIN pseudo-ellipsoids -->")[1].split(
+        "<!-- END pseudo-ellipsoids -->"
+    )[0]
+    (code,) = re.findall(r"```python\n(.*?)```", section, flags=re.S)
+    exec(compile(code, "README.md", "exec"), {})
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("L = 4") and out[0].endswith("proven True")
+    assert out[1].startswith("L = 8") and out[1].endswith("proven True")
+    assert out[2].startswith("exact area in [0.01")

@@ -26,7 +26,9 @@ def test_sect5_l4_reference_is_below_the_filter_and_certified():
     box = rb.prior_box(data)
     paving = rb.exact_paving(L, pairs, g, eps, np.stack([box.lo, box.hi], 1), 0.005)
     analytic = rb.localize(L, pairs, g, eps, order=1).bound
-    ref = optimal.optimal_pseudo_ellipsoid(analytic.lift, paving.inner, paving.boundary, rb.exact_test(data))
+    ref = optimal.optimal_pseudo_ellipsoid(
+        analytic.lift, paving.inner, paving.boundary, rb.exact_test(data)
+    )
     assert ref.lower <= ref.sample_volume * (1 + 1e-6) <= ref.upper
     assert ref.upper < analytic.lifted.volume()
     assert ref.bound.prove_covers(paving.outer(), rb.exact_test(data)).proven
@@ -36,4 +38,6 @@ def test_bad_input():
     with pytest.raises(TypeError, match="lift"):
         optimal.optimal_pseudo_ellipsoid("bh4", np.zeros((3, 2, 2)), np.zeros((0, 2, 2)))
     with pytest.raises(ValueError, match="inner"):
-        optimal.optimal_pseudo_ellipsoid(PolynomialLifting.bh4(), np.zeros((3, 3, 2)), np.zeros((0, 2, 2)))
+        optimal.optimal_pseudo_ellipsoid(
+            PolynomialLifting.bh4(), np.zeros((3, 3, 2)), np.zeros((0, 2, 2))
+        )

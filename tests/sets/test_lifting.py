@@ -22,7 +22,9 @@ def test_bh4_and_bh8_are_the_papers_maps(x, y, ox, oy, s):
     u = ((x - ox) / s, (y - oy) / s)
     T4 = PolynomialLifting.bh4([ox, oy], s)
     T8 = PolynomialLifting.bh8([ox, oy], s)
-    np.testing.assert_allclose(T4([x, y]), [u[0], u[1], u[0] ** 2, u[1] ** 2], rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(
+        T4([x, y]), [u[0], u[1], u[0] ** 2, u[1] ** 2], rtol=1e-12, atol=1e-12
+    )
     np.testing.assert_allclose(T8([x, y]), _bh8_explicit(u), rtol=1e-12, atol=1e-12)
     assert T8.size == 8 and T8.dim == 2 and T4.size == 4
 
@@ -39,7 +41,10 @@ def test_box_image_encloses_exact_values():
             p = b[:, 0] + t * (b[:, 1] - b[:, 0])
             corner = b[np.arange(2), rng.integers(0, 2, 2)]
             for q in (p, corner):
-                u = [(mpmath.mpf(q[j]) - mpmath.mpf(T.offset[j])) / mpmath.mpf(T.scale) for j in range(2)]
+                u = [
+                    (mpmath.mpf(q[j]) - mpmath.mpf(T.offset[j])) / mpmath.mpf(T.scale)
+                    for j in range(2)
+                ]
                 for k, val in enumerate(_bh8_explicit(u)):
                     assert im[k, 0] <= val <= im[k, 1]
 

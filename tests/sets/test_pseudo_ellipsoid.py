@@ -13,7 +13,10 @@ mpmath.mp.prec = 200
 def exact_level(P: PseudoEllipsoid, x, C_inv=None) -> mpmath.mpf:
     """The quadratic form at a float point, in 200-bit arithmetic (floats read as exact)."""
     lift = P.lift
-    u = [(mpmath.mpf(x[j]) - mpmath.mpf(lift.offset[j])) / mpmath.mpf(lift.scale) for j in range(lift.dim)]
+    u = [
+        (mpmath.mpf(x[j]) - mpmath.mpf(lift.offset[j])) / mpmath.mpf(lift.scale)
+        for j in range(lift.dim)
+    ]
     T = []
     for row in lift.coefficients:
         acc = mpmath.mpf(0)
@@ -32,7 +35,9 @@ def random_pseudo(seed: int, order: int = 2) -> PseudoEllipsoid:
     rng = np.random.default_rng(seed)
     lift = PolynomialLifting.bh8([0.1, -0.1], 1.3) if order == 2 else PolynomialLifting.bh4()
     A = rng.normal(size=(lift.size, lift.size))
-    return PseudoEllipsoid(lift, 0.3 * rng.normal(size=lift.size), A @ A.T + 0.3 * np.eye(lift.size))
+    return PseudoEllipsoid(
+        lift, 0.3 * rng.normal(size=lift.size), A @ A.T + 0.3 * np.eye(lift.size)
+    )
 
 
 def test_exported_at_top_level():
@@ -65,7 +70,7 @@ def test_tri_contains_is_proven_in_exact_arithmetic(seed):
         if ti == 1:
             continue
         corners = [b[np.arange(2), [i, j]] for i in (0, 1) for j in (0, 1)]
-        for x in corners + [b.mean(axis=1)]:
+        for x in [*corners, b.mean(axis=1)]:
             assert (exact_level(P, x, C_inv) <= 1) == (ti == 2)
 
 
