@@ -363,7 +363,13 @@ class BearingResult:
 
 
 def localize(
-    landmarks, pairs, gammas, eps, order: int = 2, criterion: str = "volume"
+    landmarks,
+    pairs,
+    gammas,
+    eps,
+    order: int = 2,
+    criterion: str = "volume",
+    prior: Box | None = None,
 ) -> BearingResult:
     """Pseudo-ellipsoidal localization from relative bearings [BH, Sects. IV-V].
 
@@ -381,6 +387,10 @@ def localize(
         1: L = 4 lifting [BH, eq. (22)]; 2: L = 8 with eta(z) = [z, z^2] [BH, eq. (23)].
     criterion : {"volume", "area"}
         Choice of lambda in each update (``analytic.lifted_update``).
+    prior : Box, optional
+        Prior knowledge of the position (default :func:`prior_box`, which provably contains
+        the feasible set, so that the prior is non-informative); the bound contains the
+        feasible set ∩ prior. The filter's frame and lifted prior are built on it.
 
     Returns
     -------
@@ -394,7 +404,9 @@ def localize(
     """
     data = measurements(landmarks, pairs, gammas, eps)
     ring_list = all_rings(data)
-    box = prior_box(data, ring_list)
+    box = prior_box(data, ring_list) if prior is None else prior
+    if not isinstance(box, Box) or box.dim != 2 or not box.is_bounded:
+        raise ValueError(f"prior must be a bounded 2-D Box, got {prior!r}")
     offset = 0.5 * (box.lo + box.hi)
     scale = float(0.5 * np.max(box.hi - box.lo))
     lift = lifting(order, offset, scale)

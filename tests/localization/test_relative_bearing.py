@@ -6,6 +6,7 @@ import pytest
 
 from optbound.interval import Interval
 from optbound.localization import relative_bearing as rb
+from optbound.sets import Box
 
 mpmath.mp.prec = 120
 LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])  # [BH, Sect. V]
@@ -259,3 +260,23 @@ def test_readme_example_runs(capsys):
     assert out[0].startswith("L = 4") and out[0].endswith("proven True")
     assert out[1].startswith("L = 8") and out[1].endswith("proven True")
     assert out[2].startswith("exact area in [0.01")
+
+
+def test_a_larger_prior_does_not_bias_the_bound(sect5):
+    data, paving = sect5
+    box = rb.prior_box(data)
+    c, h = 0.5 * (box.lo + box.hi), 0.5 * (box.hi - box.lo)
+    for order in (1, 2):
+        base = rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, order=order).bound.grid_area(300)
+        wide = rb.localize(
+            LANDMARKS, PAIRS, GAMMAS, EPS, order=order, prior=Box(c - 4 * h, c + 4 * h)
+        )
+        assert rb.certify_contains(wide.bound, data, paving).proven
+        assert wide.bound.grid_area(300, box) == pytest.approx(base, rel=0.03)
+
+
+def test_prior_must_be_a_bounded_2d_box():
+    with pytest.raises(ValueError, match="prior"):
+        rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, prior=Box([0, 0, 0], [1, 1, 1]))
+    with pytest.raises(ValueError, match="prior"):
+        rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, prior=[[0, 1], [0, 1]])
