@@ -103,12 +103,12 @@ def test_boundary_traces_level_one():
 
 def test_prove_covers_proves_subsets_and_refuses_supersets():
     P = random_pseudo(6)
-    own = P.paving(0.02)
+    own = P.paving(0.05)
     assert P.prove_covers(own.inner).proven
     bigger = PseudoEllipsoid(P.lift, P.center, P.shape * 1.5**2)
     # Boundary boxes stick out of P; with P's own test the parts outside P are dropped.
     assert bigger.prove_covers(own.outer(), P.tri_test).proven
-    proof = P.prove_covers(bigger.paving(0.02).inner, bigger.tri_test)
+    proof = P.prove_covers(bigger.paving(0.05).inner, bigger.tri_test, rounds=2)
     assert not proof.proven and proof.refuted
 
 
