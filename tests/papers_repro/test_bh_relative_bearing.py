@@ -27,6 +27,8 @@ def test_bounds_are_proven_and_ordered(result):
     # The paper's claims: L = 8 tighter than L = 4, both after step 1 and at the end.
     assert a["L8"][1] < a["L4"][0]
     assert result["first"]["L8"][1] < result["first"]["L4"][0]
+    # Fig. 6b: after the first step even L = 4 is far below the best box.
+    assert result["first"]["L4"][1] < 0.5 * result["first"]["box"][0]
     # The best ellipse is bracketed; the certified one contains the exact set.
     assert a["ellipse"][0] <= a["ellipse"][1] <= a["sdp"][1]
     assert a["ellipse"][1] >= a["exact"][0]
