@@ -95,7 +95,7 @@ def measurements(landmarks, pairs, gammas, eps) -> Measurements:
         landmarks in a pair, ``gamma`` equal to 0 or pi (after wrapping), ``eps`` not in
         ``(0, pi/2)``, or lengths that disagree.
     """
-    L = v.finite_matrix("landmarks", landmarks, (None, 2))
+    L = v.finite_matrix("landmarks", _real("landmarks", landmarks), (None, 2))
     if L.shape[0] < 2:
         raise ValueError(f"landmarks must hold at least 2 points, got {L.shape[0]}")
     P = np.asarray(pairs)
@@ -111,16 +111,27 @@ def measurements(landmarks, pairs, gammas, eps) -> Measurements:
         raise ValueError("pairs must join two different landmarks (i != j)")
     if np.any(np.all(L[P[:, 0]] == L[P[:, 1]], axis=1)):
         raise ValueError("landmarks of a pair must not coincide (no bearing circle exists)")
-    g = v.finite_vector("gammas", gammas, P.shape[0])
+    g = v.finite_vector("gammas", _real("gammas", gammas), P.shape[0])
     g = wrap_angle(g)
     if np.any(g == 0.0) or np.any(np.abs(g) == np.pi):
         raise ValueError("gammas must not be 0 or pi: the bearing locus is a line, not a circle")
-    e = np.broadcast_to(np.asarray(eps, dtype=float), g.shape).copy()
+    e = _real("eps", eps)
+    if e.ndim > 1 or e.size not in (1, g.size):
+        raise ValueError(f"eps must be a scalar or one value per pair ({g.size}), got {e.shape}")
+    e = np.broadcast_to(e.astype(float), g.shape).copy()
     if not np.all(np.isfinite(e)):
         raise ValueError("eps must be finite")
     if np.any(e <= 0.0) or np.any(e >= np.pi / 2):
         raise ValueError(f"eps must lie in (0, pi/2) radians, got {e.tolist()}")
     return Measurements(L, P.astype(np.int64), g, e)
+
+
+def _real(name: str, value) -> np.ndarray:
+    """``value`` as a numeric real array, or a TypeError naming the argument."""
+    arr = np.asarray(value)
+    if arr.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must be real numbers, got dtype {arr.dtype}")
+    return arr
 
 
 # ------------------------------------------------------------------------- the exact set

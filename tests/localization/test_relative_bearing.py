@@ -228,6 +228,10 @@ def test_quadratics_describe_the_rings():
         ({"landmarks": [[0, np.inf], [1, 1], [2, 2]]}, ValueError, "landmarks"),
         ({"gammas": [0.5, 0.5]}, ValueError, "gammas"),
         ({"order": 3}, ValueError, "order"),
+        ({"gammas": [0.5 + 1j, 0.5, 0.5]}, TypeError, "gammas"),
+        ({"landmarks": [[0, 1j], [1, 1], [2, 2]]}, TypeError, "landmarks"),
+        ({"eps": "4 degrees"}, TypeError, "eps"),
+        ({"eps": [0.1, 0.1]}, ValueError, "eps"),
     ],
 )
 def test_bad_input(kwargs, err, match):
