@@ -5,7 +5,15 @@ Analytic ellipsoid updates (``optbound.analytic``), certified SDP references
 the same instances (``optbound.compare``). Importing this package does not import cvxpy.
 """
 
-from optbound.sets import Box, ConvexSet, Ellipsoid, Halfspace, QuadraticSet, Strip
+from optbound.sets import (
+    Box,
+    ConvexSet,
+    Ellipsoid,
+    Halfspace,
+    PseudoEllipsoid,
+    QuadraticSet,
+    Strip,
+)
 
 __version__ = "0.1.0"
 
@@ -14,6 +22,7 @@ __all__ = [
     "ConvexSet",
     "Ellipsoid",
     "Halfspace",
+    "PseudoEllipsoid",
     "QuadraticSet",
     "Strip",
     "__version__",

@@ -72,7 +72,7 @@ def run_cli(main: Callable[..., dict], description: str) -> dict:
     """Parse ``--out`` (and ``--quick``), run ``main(out_dir)`` and print its Markdown tables."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder for PNGs")
-    parser.add_argument("--quick", action="store_true", help="fast variant (scripts that have one)")
+    parser.add_argument("--quick", action="store_true", help="fast variant (<= ~20 s)")
     args = parser.parse_args()
     result = main(args.out, quick=True) if args.quick else main(args.out)
     print(result["markdown"])

@@ -1,4 +1,5 @@
-"""Closed-form ellipsoid calculus [HS96], [BH]: Minkowski sums, strip fusion, bounding updates.
+"""Closed-form ellipsoid calculus [HS96], [BH]: Minkowski sums, strip fusion, bounding updates,
+the lifted (pseudo-ellipsoid) update and the noise of transformed measurements.
 
 Every function returns a guaranteed outer bound: each member of the families used (Schweppe's
 kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-ellipsoid filter
@@ -6,7 +7,9 @@ kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-e
 a leading batch axis and are fully vectorized.
 """
 
+from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse
 from optbound.analytic.bounding_update import BoundingUpdate, bounding_update
+from optbound.analytic.lifted import LiftedUpdate, lifted_update
 from optbound.analytic.minkowski import (
     MinkowskiBatch,
     MinkowskiResult,
@@ -23,7 +26,9 @@ from optbound.analytic.strip_fusion import (
 
 __all__ = [
     "CASES",
+    "ArcNoise",
     "BoundingUpdate",
+    "LiftedUpdate",
     "MinkowskiBatch",
     "MinkowskiResult",
     "StripFusion",
@@ -31,6 +36,8 @@ __all__ = [
     "bounding_update",
     "intersect_strip",
     "intersect_strip_batch",
+    "lifted_update",
     "minkowski_sum",
     "minkowski_sum_batch",
+    "parabola_arc_ellipse",
 ]

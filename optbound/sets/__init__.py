@@ -1,13 +1,25 @@
 """Set representations: the common interface and the concrete types.
 
 ``Ellipsoid``, ``Strip``, ``Halfspace`` and ``Box`` validate their input on construction and
-are immutable afterwards, so a set that exists is always a valid set.
+are immutable afterwards, so a set that exists is always a valid set. ``PseudoEllipsoid`` is
+an ellipsoid in the lifted space of a ``PolynomialLifting`` [BH, eq. (10)].
 """
 
 from optbound.sets.base import ConvexSet
 from optbound.sets.box import Box
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.lifting import PolynomialLifting
+from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid
 from optbound.sets.quadratic import QuadraticSet
 from optbound.sets.strip import Halfspace, Strip
 
-__all__ = ["Box", "ConvexSet", "Ellipsoid", "Halfspace", "QuadraticSet", "Strip"]
+__all__ = [
+    "Box",
+    "ConvexSet",
+    "Ellipsoid",
+    "Halfspace",
+    "PolynomialLifting",
+    "PseudoEllipsoid",
+    "QuadraticSet",
+    "Strip",
+]
