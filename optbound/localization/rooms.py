@@ -43,7 +43,7 @@ def triangle_sonars(half_aperture: float = HALF_APERTURE, rel_accuracy: float = 
     ]
 
 
-#: A 10 m x 8 m room with a chamfered corner and a short wall stub (ours, for [KJWM00]).
+#: A 10 m x 8 m room with one chamfered corner (ours, for [KJWM00]); convex, walls facing inward.
 BELT_ROOM = polygon([[-5.0, -4.0], [5.0, -4.0], [5.0, 2.0], [3.0, 4.0], [-5.0, 4.0]])
 
 
