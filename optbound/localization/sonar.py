@@ -315,8 +315,9 @@ def _shifted_union(members: list[Paving], X0: Box) -> Paving:
 
     def shift(boxes: np.ndarray, low_side: bool) -> np.ndarray:
         out = boxes.copy()
-        if low_side:
-            out[:, 2, :] += 2 * np.pi  # rounding here only moves a drawing/hull, not the set
+        if low_side:  # theta + 2 pi, rounded outward: the box keeps all its poses (mod 2 pi)
+            out[:, 2, 0] = np.nextafter(np.nextafter(out[:, 2, 0] + 2 * np.pi, -np.inf), -np.inf)
+            out[:, 2, 1] = np.nextafter(np.nextafter(out[:, 2, 1] + 2 * np.pi, np.inf), np.inf)
         return out
 
     low_side = [p.hull().lo[2] + p.hull().hi[2] < 2 * centre for p in members]

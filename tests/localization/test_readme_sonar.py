@@ -1,16 +1,9 @@
 """The README's sonar example runs and prints what its text claims."""
 
-import re
-from pathlib import Path
-
-README = Path(__file__).resolve().parents[2] / "README.md"
+from tests.readme_section import run_section
 
 
 def test_readme_sonar_example_runs(capsys):
-    text = README.read_text()
-    section = text.split("<!-- BEGIN sonar -->")[1].split("<!-- END sonar -->")[0]
-    (code,) = re.findall(r"```python\n(.*?)```", section, flags=re.S)
-    exec(compile(code, str(README), "exec"), {})
+    run_section("sonar")
     out = capsys.readouterr().out.splitlines()
-    assert out[0] == "True ((1,), (1,), (2,), (0,))"
-    assert out[1] == "True"
+    assert out == ["True ((1,), (1,), (2,), (0,))", "True"]
