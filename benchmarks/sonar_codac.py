@@ -127,7 +127,11 @@ def _child(eps: float) -> dict:
 
     def boxes(which):
         out = [[[b[i].lb(), b[i].ub()] for i in range(3)] for b in paving.boxes(which)]
-        return np.array(out).reshape(-1, 3, 2)
+        arr = np.array(out).reshape(-1, 3, 2)
+        # Empty boxes (codac encodes them with non-finite bounds) hold no pose.
+        return arr[
+            np.all(np.isfinite(arr), axis=(1, 2)) & np.all(arr[:, :, 0] <= arr[:, :, 1], axis=1)
+        ]
 
     inner, bound = boxes(codac.PavingInOut.inner), boxes(codac.PavingInOut.bound)
     return {
