@@ -144,6 +144,11 @@ def simulate_ranges(world, sonars, pose, d_max: float = D_MAX) -> np.ndarray:
     ndarray
         (t,) ranges for one pose, (m, t) for m poses: per sonar, the distance to the nearest
         point of a reflecting face inside its cone, at most ``d_max``.
+
+    Notes
+    -----
+    As in [LJMW97, eq. (2)] every segment is considered on its own: a segment seen from
+    behind neither echoes nor hides the segments beyond it (there is no occlusion test).
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
