@@ -137,6 +137,22 @@ def test_range_inclusion_encloses_sampled_poses(seed):
         assert np.all(enc.lo <= r) and np.all(r <= enc.hi)
 
 
+def test_range_inclusion_is_inclusion_monotonic():
+    """Point boxes inside a box get sub-intervals: interval vs interval, no float rounding."""
+    rng = np.random.default_rng(8)
+    world = random_room(rng)
+    sonars = random_belt(rng, 4)
+    m = 300
+    centre = np.column_stack([rng.uniform(-4, 4, (m, 2)), rng.uniform(-np.pi, np.pi, m)])
+    boxes = np.stack([centre - 0.2, centre + 0.2], axis=-1)
+    enc = range_inclusion(world, sonars, boxes)
+    for _ in range(20):
+        lo, hi = boxes[:, :, 0], boxes[:, :, 1]
+        p = np.clip(lo + rng.uniform(size=(m, 3)) * (hi - lo), lo, hi)
+        point = range_inclusion(world, sonars, np.stack([p, p], axis=-1))
+        assert np.all(enc.lo <= point.lo) and np.all(point.hi <= enc.hi)
+
+
 def test_range_inclusion_is_tight_on_small_boxes():
     """On tiny boxes away from discontinuities the enclosure shrinks to the point value."""
     rng = np.random.default_rng(7)
