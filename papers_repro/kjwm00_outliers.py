@@ -76,15 +76,6 @@ def scenario(rng, kind: str, k: int = 0) -> dict:
     return {"truth": truth, "world": world, "ranges": d, "outliers": outliers, "kind": kind}
 
 
-def _contains(paving, pose) -> bool:
-    boxes = paving.outer()
-    for k in (-1, 0, 1):
-        p = pose + np.array([0.0, 0.0, 2 * np.pi * k])
-        if np.any(np.all((boxes[:, :, 0] <= p) & (p <= boxes[:, :, 1]), axis=1)):
-            return True
-    return False
-
-
 def run_one(case: dict, eps: float) -> dict:
     """The three estimators on one scenario: success, set size, time, q reached."""
     out = {}
@@ -97,7 +88,7 @@ def run_one(case: dict, eps: float) -> dict:
         seconds = time.perf_counter() - start
         empty = paving is None or paving.is_empty
         out[method] = {
-            "success": (not empty) and _contains(paving, case["truth"]),
+            "success": (not empty) and paving.contains(case["truth"]),
             "empty": empty,
             "volume": np.nan if empty else paving.volume_bounds()[1],
             "components": 0 if empty else len(paving.components()),

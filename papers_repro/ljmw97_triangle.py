@@ -65,15 +65,6 @@ def solve(prior: bool, repeats: int = 1) -> tuple[SonarPaving, float]:
     return paving, float(np.median(times))
 
 
-def _contains(paving, pose) -> bool:
-    boxes = paving.outer()
-    for k in (-1, 0, 1):
-        p = np.asarray(pose) + np.array([0.0, 0.0, 2 * np.pi * k])
-        if np.any(np.all((boxes[:, :, 0] <= p) & (p <= boxes[:, :, 1]), axis=1)):
-            return True
-    return False
-
-
 def _hypothesis_text(h) -> str:
     pairs = []
     for i, segs in enumerate(h, start=1):
@@ -107,7 +98,7 @@ def _rows(paving: SonarPaving) -> list[dict]:
                 "n_boundary": len(comp.boundary),
                 "volume": comp.volume_bounds()[1],
                 "hypothesis": comp.hypothesis,
-                "contains_truth": _contains(comp, TRUTH),
+                "contains_truth": comp.contains(TRUTH),
             }
         )
     return rows

@@ -260,6 +260,16 @@ class SonarPaving(Paving):
         super().__init__(paving.inner, paving.boundary, paving.outside, paving.X0, paving.eps)
         self.problem, self.q, self.wraps, self.hypothesis = problem, q, wraps, hypothesis
 
+    def contains(self, pose) -> bool:
+        """Whether the pose ``(x, y, theta)``, theta read modulo 2 pi, is in inner ∪ boundary."""
+        p = _finite_array("pose", pose)
+        if p.shape != (3,):
+            raise ValueError(f"pose must be (x, y, theta), got shape {p.shape}")
+        boxes = self.outer()
+        turns = np.array([[0.0, 0.0, 2 * np.pi * k] for k in (-1, 0, 1)])
+        q = (p + turns)[:, None, :]  # (3, 1, 3) against (m, 3) bounds
+        return bool(np.any(np.all((boxes[:, :, 0] <= q) & (q <= boxes[:, :, 1]), axis=-1)))
+
     def components(self) -> list[SonarPaving]:
         """Connected components with their association hypotheses, largest first.
 

@@ -55,16 +55,6 @@ def noisy(rng, truth_ranges, sonars):
     return truth_ranges / (1 + 0.99 * alpha * rng.uniform(-1, 1, truth_ranges.shape))
 
 
-def contains(paving, pose):
-    """Is the pose (theta taken modulo 2 pi) in some inner or boundary box?"""
-    boxes = paving.outer()
-    hits = np.zeros(boxes.shape[0], bool)
-    for k in (-1, 0, 1):
-        p = np.asarray(pose) + np.array([0, 0, 2 * np.pi * k])
-        hits |= np.all((boxes[:, :, 0] <= p) & (p <= boxes[:, :, 1]), axis=1)
-    return bool(hits.any())
-
-
 # ----- f on points ----------------------------------------------------------------------------
 
 
@@ -188,9 +178,10 @@ def test_truth_in_paving_for_random_rooms(seed):
     d = noisy(rng, simulate_ranges(world, sonars, truth), sonars)
     X0 = [[-7, 7], [-7, 7], [-np.pi, np.pi]]
     paving = localize(world, sonars, d, X0, 0.1)
-    assert contains(paving, truth)
+    assert paving.contains(truth) and paving.contains(truth + np.array([0, 0, 2 * np.pi]))
+    assert not paving.contains(truth + np.array([20.0, 0, 0]))
     assert paving.q == 0
-    assert any(contains(c, truth) for c in paving.components())
+    assert any(c.contains(truth) for c in paving.components())
 
 
 def test_localize_square_components_and_hypotheses():
@@ -206,7 +197,7 @@ def test_localize_square_components_and_hypotheses():
         prior=rooms.clearance_test(SQUARE, 0.1),
     )
     comps = paving.components()
-    [mine] = [c for c in comps if contains(c, truth)]
+    [mine] = [c for c in comps if c.contains(truth)]
     seen = [
         int(np.argmin([simulate_ranges(SQUARE[j : j + 1], s, truth)[0] for j in range(4)]))
         for s in CROSS
@@ -232,7 +223,7 @@ def test_heading_seam_keeps_one_component(heading):
         prior=rooms.clearance_test(SQUARE, 0.1),
     )
     assert paving.X0.hi[2] > np.pi and paving.X0.hi[2] - paving.X0.lo[2] >= 2 * np.pi
-    [mine] = [c for c in paving.components() if contains(c, truth)]
+    [mine] = [c for c in paving.components() if c.contains(truth)]
     hull = mine.hull()
     assert hull.lo[2] < np.pi - 0.1 and np.pi + 0.1 < hull.hi[2]  # both halves, contiguous
     assert hull.hi[2] - hull.lo[2] < 1.0
@@ -251,11 +242,11 @@ def test_outliers_relaxed_intersection(seed):
     d[bad] = rng.uniform(0.5, 8.0, k)
     X0 = [[-6, 6], [-5, 5], [-np.pi, np.pi]]
     relaxed = localize(world, sonars, d, X0, 0.15, q=k)
-    assert contains(relaxed, truth) and relaxed.q == k
+    assert relaxed.contains(truth) and relaxed.q == k
     auto = localize(world, sonars, d, X0, 0.15, q="auto")
     assert auto.q <= k
     if auto.q == k:
-        assert contains(auto, truth)
+        assert auto.contains(truth)
 
 
 def test_measurement_box_is_outward():
@@ -337,6 +328,8 @@ def test_bad_inputs_name_the_argument():
         range_inclusion(SQUARE, CROSS, np.zeros((2, 2, 2)))
     with pytest.raises(ValueError, match="lo <= hi"):
         range_inclusion(SQUARE, CROSS, np.array([[[1, 0], [0, 1], [0, 1]]]))
+    with pytest.raises(ValueError, match="pose"):
+        localize(SQUARE, CROSS, simulate_ranges(SQUARE, CROSS, (0, 0, 0)), X0, 0.2).contains((0, 0))
     with pytest.raises(TypeError, match="prior"):
         localize(SQUARE, CROSS, d, X0, 0.1, prior=3)
 
