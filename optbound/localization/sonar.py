@@ -1,0 +1,407 @@
+"""Sonar localization by set inversion, with outliers [LJMW97], [KJWM00].
+
+A belt of sonars on the robot measures, each, the distance to the nearest point of the map's
+reflecting faces inside its emission cone. The simulation function f of [LJMW97, eq. (2)]
+maps a pose ``q = (x, y, theta)`` to those t distances (:func:`simulate_ranges`); its
+inclusion function on boxes of poses (:func:`range_inclusion`) drives SIVIA, which
+characterises the poses consistent with the measured ranges [LJMW97, eq. (3)]
+(:func:`localize`). With ``q > 0`` up to ``q`` sonars may be inconsistent (relaxed
+intersection [KJWM00]); ``q="auto"`` raises ``q`` until the set is not proven empty.
+
+The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_in_cone`,
+one formula for points and boxes. The heading ``theta`` is an angle: an initial box covering
+a whole turn is widened to contain the true circle, and components that meet across the seam
+``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from optbound.interval import (
+    Interval,
+    Paving,
+    constraint,
+    min_outliers,
+    pave,
+    relaxed_test,
+    tri_and,
+)
+from optbound.interval.paving import box_rows
+from optbound.localization import geometry as g
+from optbound.sets import Box
+from optbound.sets import _validate as v
+
+#: Default maximal range d_max [m]: what a sonar returns when its cone meets no reflecting
+#: face [LJMW97, eq. (2)] (the Polaroid sensors' usual limit).
+D_MAX = 10.0
+
+
+@dataclass(frozen=True)
+class Sonar:
+    """One sonar of the belt, in the robot frame [KJWM00, Sect. 2.1].
+
+    Parameters
+    ----------
+    position
+        ``(x, y)`` of the cone's vertex in the robot frame [m].
+    orientation
+        Axis of the cone in the robot frame [rad], counter-clockwise from the robot's heading.
+    half_aperture
+        Half-angle gamma of the cone [rad], in ``(0, pi/2)`` [LJMW97, Fig. 3: +-12 degrees].
+    rel_accuracy
+        Relative accuracy alpha in ``[0, 1)``: a reading ``d`` means the true distance lies in
+        ``[d (1 - alpha), d (1 + alpha)]`` [KJWM00, Sect. 2.1], [LJMW97, eq. (1)].
+    """
+
+    position: tuple[float, float]
+    orientation: float
+    half_aperture: float
+    rel_accuracy: float
+
+    def __post_init__(self):
+        pos = _finite_array("position", self.position)
+        if pos.shape != (2,):
+            raise ValueError(f"position must be a pair (x, y), got shape {pos.shape}")
+        object.__setattr__(self, "position", (float(pos[0]), float(pos[1])))
+        object.__setattr__(self, "orientation", v.finite_scalar("orientation", self.orientation))
+        gamma = v.finite_scalar("half_aperture", self.half_aperture)
+        if not 0.0 < gamma < np.pi / 2:
+            raise ValueError(f"half_aperture must lie in (0, pi/2), got {gamma}")
+        object.__setattr__(self, "half_aperture", gamma)
+        alpha = v.finite_scalar("rel_accuracy", self.rel_accuracy)
+        if not 0.0 <= alpha < 1.0:
+            raise ValueError(f"rel_accuracy must lie in [0, 1), got {alpha}")
+        object.__setattr__(self, "rel_accuracy", alpha)
+
+
+def _finite_array(name: str, value) -> np.ndarray:
+    """``value`` as a finite real float array; a clear ``ValueError`` naming ``name`` if not."""
+    if np.iscomplexobj(value):
+        raise ValueError(f"{name} must be real, got complex values")
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"{name} must be an array of numbers: {err}") from None
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    return arr
+
+
+def _belt(sonars) -> list[Sonar]:
+    belt = [sonars] if isinstance(sonars, Sonar) else list(sonars)
+    if not belt:
+        raise ValueError("sonars must hold at least one Sonar")
+    bad = [type(s).__name__ for s in belt if not isinstance(s, Sonar)]
+    if bad:
+        raise TypeError(f"sonars must be Sonar objects, got {bad[0]}")
+    return belt
+
+
+def _d_max(d_max) -> float:
+    d_max = v.finite_scalar("d_max", d_max)
+    if d_max <= 0.0:
+        raise ValueError(f"d_max must be positive, got {d_max}")
+    return d_max
+
+
+def _ranges(world, sonars, pose, d_max) -> object:
+    """f on poses ``(x, y, theta)`` (float arrays or intervals of one shape), shape (..., t, s).
+
+    Sonars go on the second-to-last axis and segments on the last, so that the segments'
+    minimum (the loop of [LJMW97, eq. (2)]) is one reduction.
+    """
+    x, y, theta = (c[..., None, None] for c in pose)
+    sx, sy, alpha, gamma = (np.array(c)[:, None] for c in zip(*_params(sonars), strict=True))
+    apex = g.to_world((x, y, theta), (sx, sy))
+    a, b = g.segment_points(world)
+    return g.nearest_in_cone(apex, theta + alpha, gamma, a, b, d_max)
+
+
+def _params(sonars) -> list[tuple[float, float, float, float]]:
+    return [(s.position[0], s.position[1], s.orientation, s.half_aperture) for s in sonars]
+
+
+def simulate_ranges(world, sonars, pose, d_max: float = D_MAX) -> np.ndarray:
+    """The simulation function f of [LJMW97, eq. (2)]: noise-free ranges at poses.
+
+    Parameters
+    ----------
+    world
+        (s, 2, 2) oriented segments ``[a, b]``, reflecting face on the left
+        (see :func:`geometry.as_segments`).
+    sonars
+        A :class:`Sonar` or a sequence of t of them.
+    pose
+        ``(x, y, theta)`` or an (m, 3) array of poses (theta the heading, radians).
+    d_max
+        Range returned when no reflecting face is in the cone.
+
+    Returns
+    -------
+    ndarray
+        (t,) ranges for one pose, (m, t) for m poses: per sonar, the distance to the nearest
+        point of a reflecting face inside its cone, at most ``d_max``.
+
+    Notes
+    -----
+    As in [LJMW97, eq. (2)] every segment is considered on its own: a segment seen from
+    behind neither echoes nor hides the segments beyond it (there is no occlusion test).
+    """
+    world = g.as_segments(world)
+    belt = _belt(sonars)
+    d_max = _d_max(d_max)
+    poses = _finite_array("pose", pose)
+    if poses.shape[-1:] != (3,) or poses.ndim not in (1, 2):
+        raise ValueError(f"pose must be (x, y, theta) or an (m, 3) array, got {poses.shape}")
+    per_segment = _ranges(world, belt, tuple(np.moveaxis(poses, -1, 0)), d_max)
+    return per_segment.min(axis=-1)
+
+
+def _pose_boxes(boxes) -> np.ndarray:
+    arr = _finite_array("boxes", boxes)
+    if arr.ndim != 3 or arr.shape[1:] != (3, 2):
+        raise ValueError(
+            f"boxes must have shape (m, 3, 2) ([lo, hi] of x, y, theta), got {arr.shape}"
+        )
+    if np.any(arr[:, :, 0] > arr[:, :, 1]):
+        raise ValueError("boxes must have lo <= hi on every side")
+    return arr
+
+
+def _min_over_segments(per_segment: Interval) -> Interval:
+    return Interval._make(per_segment.lo.min(axis=-1), per_segment.hi.min(axis=-1))
+
+
+def range_inclusion(world, sonars, boxes, d_max: float = D_MAX) -> Interval:
+    """Inclusion function of f on (m, 3, 2) pose boxes: an (m, t) ``Interval``.
+
+    Every pose of box k gives, for sonar i, a range inside entry ``[k, i]`` (outward-rounded:
+    guaranteed for the floats of the map and the boxes read as exact numbers). Vectorized over
+    boxes, sonars and segments; see :func:`geometry.nearest_in_cone` for the bounds.
+    """
+    world = g.as_segments(world)
+    belt = _belt(sonars)
+    arr = _pose_boxes(boxes)
+    pose = tuple(Interval._make(arr[:, k, 0], arr[:, k, 1]) for k in range(3))
+    return _min_over_segments(_ranges(world, belt, pose, _d_max(d_max)))
+
+
+def measurement_box(sonars, ranges) -> np.ndarray:
+    """(t, 2) rows ``[d (1 - alpha), d (1 + alpha)]`` rounded outward [LJMW97, eq. (3)]."""
+    belt = _belt(sonars)
+    d = _finite_array("ranges", ranges)
+    if d.shape != (len(belt),):
+        raise ValueError(f"ranges must have shape ({len(belt)},) (one per sonar), got {d.shape}")
+    if np.any(d <= 0.0):
+        raise ValueError(f"ranges must be positive, got {d.tolist()}")
+    alpha = np.array([s.rel_accuracy for s in belt])
+    lo = np.nextafter(np.nextafter(d * (1.0 - alpha), -np.inf), -np.inf)
+    hi = np.nextafter(np.nextafter(d * (1.0 + alpha), np.inf), np.inf)
+    return np.stack([lo, hi], axis=1)
+
+
+def _initial_box(X0) -> tuple[np.ndarray, bool]:
+    """X0 as (3, 2) rows; a heading range of a whole turn becomes one that covers the circle.
+
+    Returns the rows and whether the heading wraps (covers a full turn).
+    """
+    lo, hi = box_rows("X0", X0, allow_infinite=False)
+    if lo.size != 3:
+        raise ValueError(f"X0 must have 3 rows (x, y, theta), got {lo.size}")
+    if np.any(hi <= lo):
+        raise ValueError("X0 must have volume: lo < hi on x, y and theta")
+    full = hi[2] - lo[2] >= 2 * np.pi
+    if full:
+        # The float 2*pi is below the true 2 pi: two ulps more make [lo, hi] cover the circle.
+        hi[2] = np.nextafter(np.nextafter(lo[2] + 2 * np.pi, np.inf), np.inf)
+    return np.stack([lo, hi], axis=1), bool(full)
+
+
+def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> list:
+    """One three-valued SIVIA test per sonar: ``f_i(q) in [d_i (1 -+ alpha_i)]``."""
+    world = g.as_segments(world)
+    belt = _belt(sonars)
+    Y = measurement_box(belt, ranges)
+    d_max = _d_max(d_max)
+
+    def test_of(i: int):
+        def f(x, y, theta):
+            return _min_over_segments(_ranges(world, [belt[i]], (x, y, theta), d_max))[..., 0]
+
+        return constraint(f, Y[i : i + 1])
+
+    return [test_of(i) for i in range(len(belt))]
+
+
+def _with_prior(test, prior):
+    # Folded into every sonar's test: a pose failing the prior fails all of them, so it is
+    # excluded for every q < t.
+    return lambda *coords: tri_and(test(*coords), prior(*coords))
+
+
+class SonarPaving(Paving):
+    """A :class:`Paving` of poses with the sonar problem it solves.
+
+    Attributes
+    ----------
+    q
+        Number of sonars allowed to be inconsistent (reached by ``q="auto"``).
+    hypothesis
+        For a component (see :meth:`components`): per sonar, the tuple of segment indices
+        that sonar may be seeing on the component's boxes [LJMW97, Sect. 4]; one index per
+        sonar is a single association hypothesis, an empty tuple means "no face (d_max)"
+        or an outlier. ``None`` on the whole paving.
+    """
+
+    def __init__(self, paving: Paving, problem: dict, q: int, wraps: bool, hypothesis=None):
+        super().__init__(paving.inner, paving.boundary, paving.outside, paving.X0, paving.eps)
+        self.problem, self.q, self.wraps, self.hypothesis = problem, q, wraps, hypothesis
+
+    def contains(self, pose) -> bool:
+        """Whether the pose ``(x, y, theta)``, theta read modulo 2 pi, is in inner ∪ boundary."""
+        p = _finite_array("pose", pose)
+        if p.shape != (3,):
+            raise ValueError(f"pose must be (x, y, theta), got shape {p.shape}")
+        boxes = self.outer()
+        turns = np.array([[0.0, 0.0, 2 * np.pi * k] for k in (-1, 0, 1)])
+        q = (p + turns)[:, None, :]  # (3, 1, 3) against (m, 3) bounds
+        return bool(np.any(np.all((boxes[:, :, 0] <= q) & (q <= boxes[:, :, 1]), axis=-1)))
+
+    def components(self) -> list[SonarPaving]:
+        """Connected components with their association hypotheses, largest first.
+
+        When the heading covers the whole circle, components touching at ``theta = lo`` and
+        ``theta = lo + 2 pi`` with overlapping (x, y) are one component; its boxes on the low
+        side are shifted by 2 pi so that its hull is an ordinary box (theta may exceed pi).
+        """
+        parts = Paving.components(self)
+        if self.wraps:
+            parts = _merge_across_seam(parts, self.X0)
+        out = [
+            SonarPaving(p, self.problem, self.q, False, self._hypothesis(p.outer())) for p in parts
+        ]
+        return sorted(out, key=lambda p: -p.volume_bounds()[1])
+
+    def _hypothesis(self, boxes: np.ndarray) -> tuple[tuple[int, ...], ...]:
+        world, belt, Y, d_max = (self.problem[k] for k in ("world", "sonars", "Y", "d_max"))
+        pose = tuple(Interval._make(boxes[:, k, 0], boxes[:, k, 1]) for k in range(3))
+        per = _ranges(world, belt, pose, d_max)  # (m, t, s)
+        nearest_hi = per.hi.min(axis=-1, keepdims=True)
+        can_be = (per.lo <= Y[:, 1, None]) & (per.hi >= Y[:, 0, None]) & (per.lo <= nearest_hi)
+        can_be &= per.lo < d_max  # a segment seen only at d_max is "no face"
+        seen = can_be.any(axis=0)  # (t, s)
+        return tuple(tuple(np.flatnonzero(row).tolist()) for row in seen)
+
+
+def _merge_across_seam(parts: list[Paving], X0: Box) -> list[Paving]:
+    lo, hi = X0.lo[2], X0.hi[2]
+    n = len(parts)
+    group = list(range(n))
+
+    def root(i):
+        while group[i] != i:
+            i = group[i]
+        return i
+
+    low = [p.outer()[p.outer()[:, 2, 0] <= lo] for p in parts]
+    high = [p.outer()[p.outer()[:, 2, 1] >= hi] for p in parts]
+    for i in range(n):
+        for j in range(n):
+            if low[i].size and high[j].size and _xy_touch(low[i], high[j]):
+                group[root(i)] = root(j)
+    merged = {}
+    for i in range(n):
+        merged.setdefault(root(i), []).append(parts[i])
+    return [_shifted_union(members, X0) for members in merged.values()]
+
+
+def _xy_touch(A: np.ndarray, B: np.ndarray) -> bool:
+    a, b = A[:, None, :2], B[None, :, :2]
+    return bool(np.any(np.all((a[..., 0] <= b[..., 1]) & (b[..., 0] <= a[..., 1]), axis=-1)))
+
+
+def _shifted_union(members: list[Paving], X0: Box) -> Paving:
+    if len(members) == 1:
+        return members[0]
+    centre = 0.5 * (X0.lo[2] + X0.hi[2])
+
+    def shift(boxes: np.ndarray, low_side: bool) -> np.ndarray:
+        out = boxes.copy()
+        if low_side:  # theta + 2 pi, rounded outward: the box keeps all its poses (mod 2 pi)
+            out[:, 2, 0] = np.nextafter(np.nextafter(out[:, 2, 0] + 2 * np.pi, -np.inf), -np.inf)
+            out[:, 2, 1] = np.nextafter(np.nextafter(out[:, 2, 1] + 2 * np.pi, np.inf), np.inf)
+        return out
+
+    low_side = [p.hull().lo[2] + p.hull().hi[2] < 2 * centre for p in members]
+    inner = np.concatenate([shift(p.inner, s) for p, s in zip(members, low_side, strict=True)])
+    bound = np.concatenate([shift(p.boundary, s) for p, s in zip(members, low_side, strict=True)])
+    x0 = Box(X0.lo, np.array([X0.hi[0], X0.hi[1], X0.hi[2] + 2 * np.pi]))
+    return Paving(inner, bound, np.empty((0, 3, 2)), x0, members[0].eps)
+
+
+def localize(
+    world,
+    sonars,
+    ranges,
+    X0,
+    eps: float,
+    q: int | str = 0,
+    *,
+    d_max: float = D_MAX,
+    prior=None,
+    max_boxes: int = 20_000_000,
+) -> SonarPaving:
+    """The poses consistent with the sonar ranges, as a paving of (x, y, theta).
+
+    [LJMW97, eq. (3)]: ``Q = {q in X0 : f(q) in D}`` with ``D`` the product of
+    ``[d_i (1 - alpha_i), d_i (1 + alpha_i)]``; with ``q > 0`` the poses where at most ``q``
+    sonars disagree (relaxed intersection [KJWM00]).
+
+    Parameters
+    ----------
+    world, sonars, d_max
+        As in :func:`simulate_ranges`.
+    ranges
+        (t,) positive measured ranges, one per sonar.
+    X0
+        (3, 2) rows ``[lo, hi]`` of x, y, theta with volume; a theta row spanning a whole turn
+        (e.g. ``[-pi, pi]``) is widened by two ulps so that it covers the circle exactly.
+    eps
+        SIVIA's bisection threshold (> 0, same units on every axis: m and rad).
+    q
+        Number of sonars that may be outliers, or ``"auto"``: raise ``q`` from 0 until the
+        set is not proven empty [KJWM00] (the reached ``q`` is ``result.q``).
+    prior
+        Optional three-valued test on ``(x, y, theta)`` that every pose must pass, whatever
+        ``q`` (prior information [KJWM00, Sect. 2.2], e.g.
+        :func:`optbound.localization.rooms.clearance_test`).
+
+    Returns
+    -------
+    SonarPaving
+        ``inner ⊂ Q ⊂ inner ∪ boundary``; ``.components()`` gives the connected components
+        with their association hypotheses [LJMW97, Sect. 4].
+    """
+    world = g.as_segments(world)
+    belt = _belt(sonars)
+    d_max = _d_max(d_max)
+    tests = sonar_tests(world, belt, ranges, d_max)
+    if prior is not None:
+        if not callable(prior):
+            raise TypeError(f"prior must be a test callable, got {type(prior).__name__}")
+        tests = [_with_prior(t, prior) for t in tests]
+    box, wraps = _initial_box(X0)
+    eps = v.finite_scalar("eps", eps)
+    if eps <= 0.0:
+        raise ValueError(f"eps must be positive, got {eps}")
+    if isinstance(q, str):
+        if q != "auto":
+            raise ValueError(f'q must be an integer in [0, {len(belt)}] or "auto", got {q!r}')
+        q, paving = min_outliers(tests, box, eps, max_boxes=max_boxes)
+    else:
+        paving = pave(relaxed_test(tests, q), box, eps, max_boxes=max_boxes)
+    problem = dict(world=world, sonars=belt, Y=measurement_box(belt, ranges), d_max=d_max)
+    return SonarPaving(paving, problem, int(q), wraps)
