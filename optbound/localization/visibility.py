@@ -118,51 +118,84 @@ def _bisect(boxes: np.ndarray) -> np.ndarray:
     return np.stack([left, right], axis=1).reshape(-1, 2, 2)
 
 
+#: Boxes taken per direction and round by the best-first search of :func:`_luvia`.
+BEAM = 4
+
+
+def _refute(cur, pending, others, y, boxes, env) -> np.ndarray:
+    """Test the still-pending measurements on each box of ``cur``; mask of refuted boxes.
+
+    ``pending[k, o]`` (updated in place) is True while the measurement with robot
+    ``others[o]`` is undecided on box k: a box proven consistent with a measurement stays so
+    for its sub-boxes, which therefore skip that test.
+    """
+    k, o = np.nonzero(pending)
+    j = others[o]
+    seen = y[j]
+    result = np.empty(len(k), dtype=np.int8)
+    result[seen] = _meets(cur[k[seen]], boxes[j[seen]], env.packed_inner)
+    result[~seen] = _meets(cur[k[~seen]], boxes[j[~seen]], env.packed_outer)
+    # "visible" is contradicted when no pair sees through E⁻ (Prop. 15); "not visible" when
+    # every pair sees through E⁺ (Prop. 16).
+    refuted = np.where(seen, result == Tri.FALSE, result == Tri.TRUE)
+    decided = result != Tri.UNKNOWN
+    pending[k[decided], o[decided]] = False
+    out = np.zeros(len(cur), dtype=bool)
+    out[k[refuted]] = True
+    return out
+
+
 def _luvia(i: int, y: np.ndarray, boxes: np.ndarray, env: Environment, eps: float, max_depth: int):
-    """LUVIA on validated input; the hull of the consistent sub-boxes or None if none."""
+    """LUVIA on validated input; the hull of the consistent sub-boxes or None if none.
+
+    Algorithm 2 returns only the hull of its kept boxes, so a box inside the hull of boxes
+    already kept need not be bisected: its kept sub-boxes could not enlarge the hull. The
+    search is therefore best-first: each round bisects the boxes that stick out farthest
+    beyond the current hull in each of the four directions, and drops those that no longer
+    stick out. The result is the hull of Algorithm 2 (same bisections, same tests), for a
+    fraction of the box tests.
+    """
     others = np.array([j for j in range(len(boxes)) if j != i], dtype=np.int64)
-    cur = boxes[i][None].copy()
-    # pending[k, o]: the measurement with robot others[o] is not yet decided on box k. A box
-    # proven consistent with a measurement stays so for its sub-boxes: test it no more.
+    pool = boxes[i][None].copy()
     pending = np.ones((1, len(others)), dtype=bool)
-    kept = []
-    for depth in range(max_depth + 1):
-        k, o = np.nonzero(pending)
-        j = others[o]
-        seen = y[j]
-        result = np.empty(len(k), dtype=np.int8)
-        result[seen] = _meets(cur[k[seen]], boxes[j[seen]], env.packed_inner)
-        result[~seen] = _meets(cur[k[~seen]], boxes[j[~seen]], env.packed_outer)
-        # "visible" is contradicted when no pair sees through E⁻ (Prop. 15); "not visible"
-        # when every pair sees through E⁺ (Prop. 16).
-        refuted = np.where(seen, result == Tri.FALSE, result == Tri.TRUE)
-        decided = result != Tri.UNKNOWN
-        pending[k[decided], o[decided]] = False
-        alive = np.ones(len(cur), dtype=bool)
-        alive[k[refuted]] = False
-        open_ = alive & pending.any(axis=1)
+    depth = np.zeros(1, dtype=np.int64)
+    hull = np.array([[np.inf, -np.inf], [np.inf, -np.inf]])  # of the kept boxes; empty
+    while len(pool):
+        beyond = np.stack(
+            [
+                pool[:, a, b] < hull[a, b] if b == 0 else pool[:, a, b] > hull[a, b]
+                for a in (0, 1)
+                for b in (0, 1)
+            ],
+            axis=1,
+        )
+        relevant = beyond.any(axis=1)
+        pool, pending, depth, beyond = (
+            pool[relevant],
+            pending[relevant],
+            depth[relevant],
+            beyond[relevant],
+        )
+        pick = np.zeros(len(pool), dtype=bool)
+        for d, (a, b) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
+            cand = np.flatnonzero(beyond[:, d])
+            if len(cand) > BEAM:
+                key = pool[cand, a, b] if b == 0 else -pool[cand, a, b]
+                cand = cand[np.argpartition(key, BEAM)[:BEAM]]
+            pick[cand] = True
+        cur, cur_pending, cur_depth = pool[pick], pending[pick], depth[pick]
+        alive = ~_refute(cur, cur_pending, others, y, boxes, env)
         size = np.prod(cur[:, :, 1] - cur[:, :, 0], axis=1)
-        split = open_ & (size > eps) & (depth < max_depth)
-        kept.append(cur[alive & ~split])
-        hull = _hull(np.concatenate(kept))
-        if hull is not None:
-            # Bisecting a box inside the hull of boxes already kept cannot change the result
-            # (the hull of Algorithm 2): keep it whole.
-            within = split & np.all((cur[:, :, 0] >= hull[:, 0]) & (cur[:, :, 1] <= hull[:, 1]), 1)
-            kept.append(cur[within])
-            split &= ~within
-        if not split.any():
-            break
-        cur = _bisect(cur[split])
-        pending = np.repeat(pending[split], 2, axis=0)
-    return _hull(np.concatenate(kept))
-
-
-def _hull(boxes: np.ndarray) -> np.ndarray | None:
-    """Smallest box containing all ``boxes`` (n, 2, 2); None if there are none."""
-    if not len(boxes):
-        return None
-    return np.stack([boxes[:, :, 0].min(axis=0), boxes[:, :, 1].max(axis=0)], axis=1)
+        split = alive & cur_pending.any(axis=1) & (size > eps) & (cur_depth < max_depth)
+        leaves = cur[alive & ~split]
+        if len(leaves):
+            hull[:, 0] = np.minimum(hull[:, 0], leaves[:, :, 0].min(axis=0))
+            hull[:, 1] = np.maximum(hull[:, 1], leaves[:, :, 1].max(axis=0))
+        rest = ~pick
+        pool = np.concatenate([pool[rest], _bisect(cur[split])])
+        pending = np.concatenate([pending[rest], np.repeat(cur_pending[split], 2, axis=0)])
+        depth = np.concatenate([depth[rest], np.repeat(cur_depth[split] + 1, 2)])
+    return None if hull[0, 0] > hull[0, 1] else hull
 
 
 def luvia(
