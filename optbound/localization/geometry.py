@@ -336,21 +336,25 @@ def _segments_meet_polygon(b1, b2, verts, s, e, bb):
 
 
 @njit(cache=True)
+def segment_pair_meets(b1, b2, verts, starts, bboxes) -> int:
+    """Compiled: does some polygon meet ``Seg([b1], [b2])``? 2 every segment, 0 none, 1 unknown.
+
+    For compiled loops (LUVIA); ``verts, starts, bboxes`` come from :func:`pack_polygons`.
+    """
+    res = 0
+    for j in range(len(starts) - 1):
+        r = _segments_meet_polygon(b1, b2, verts, starts[j], starts[j + 1], bboxes[j])
+        if r == 2:
+            return 2
+        res = max(res, r)
+    return res
+
+
+@njit(cache=True)
 def _segments_meet_polygons(boxes1, boxes2, verts, starts, bboxes, out):
     """Tri of "some obstacle meets Seg([b1], [b2])" for each box pair, written into ``out``."""
-    n = len(starts) - 1
     for i in range(len(boxes1)):
-        res = 0
-        for j in range(n):
-            r = _segments_meet_polygon(
-                boxes1[i], boxes2[i], verts, starts[j], starts[j + 1], bboxes[j]
-            )
-            if r == 2:
-                res = 2
-                break
-            if r == 1:
-                res = 1
-        out[i] = res
+        out[i] = segment_pair_meets(boxes1[i], boxes2[i], verts, starts, bboxes)
 
 
 @njit(cache=True)
@@ -379,9 +383,7 @@ def intersect_boxes(boxes1: np.ndarray, boxes2: np.ndarray, a: np.ndarray, b: np
     return lo, hi
 
 
-def segments_meet_polygons(
-    boxes1: np.ndarray, boxes2: np.ndarray, polygons: list[np.ndarray] | None, packed=None
-):
+def segments_meet_polygons(boxes1: np.ndarray, boxes2: np.ndarray, polygons: list[np.ndarray]):
     """Tri per box pair: does some polygon meet ``Seg([b1], [b2])`` [GLH12, Def. 7, eq. (5)]?
 
     TRUE: for every ``x1`` in ``boxes1[i]`` and ``x2`` in ``boxes2[i]`` the closed segment meets
@@ -389,10 +391,9 @@ def segments_meet_polygons(
     counts as meeting; a segment lying inside an obstacle meets it. ``boxes1``, ``boxes2`` are
     validated (m, 2, 2) float arrays, ``polygons`` the output of :func:`as_polygons`.
     Degenerate boxes (``lo == hi``) give the answer for points, certified against rounding.
-    ``packed`` (from :func:`pack_polygons`) replaces ``polygons`` in hot loops.
     """
     out = np.zeros(len(boxes1), dtype=np.int8)
-    verts, starts, bboxes = pack_polygons(polygons) if packed is None else packed
+    verts, starts, bboxes = pack_polygons(polygons)
     if len(starts) > 1 and len(out):
         _segments_meet_polygons(
             np.ascontiguousarray(boxes1), np.ascontiguousarray(boxes2), verts, starts, bboxes, out

@@ -207,7 +207,11 @@ def _algorithm2(i, y, boxes, env, eps, max_depth):
             bisect |= t == Tri.UNKNOWN
         if consistent:
             if bisect and np.prod(np.diff(box)) > eps and depth < max_depth:
-                stack.extend((child, depth + 1) for child in v._bisect(box[None]))
+                axis = int(np.argmax(np.diff(box)[:, 0]))  # Bisect(): halve the wider side
+                mid = 0.5 * (box[axis, 0] + box[axis, 1])
+                low, high = box.copy(), box.copy()
+                low[axis, 1] = high[axis, 0] = mid
+                stack.extend([(low, depth + 1), (high, depth + 1)])
             else:
                 kept.append(box)
     if not kept:
