@@ -85,15 +85,18 @@ def bench_visibility(pairs: int, seed: int = 0) -> list[dict]:
     ours = per_call(lambda: visibility_test(b1, b2, env.outer), repeat=3)
     ref = per_call(lambda: _interval_signs(b1, b2, env.outer), repeat=3)
     label = f"{pairs} box pairs x 6 obstacles (E⁺)"
+    return _versus(
+        (f"eq. (19) signs on Interval arrays, {label}", ref),
+        (f"visibility_test (compiled, three-valued), {label}", ours),
+        "faster than eq. (19) on Interval arrays",
+    )
+
+
+def _versus(reference: tuple[str, float], ours: tuple[str, float], ratio_label: str):
+    """The reference's record, then ours with the ratio of the two times."""
     return [
-        speed_record(NAME, f"eq. (19) signs on Interval arrays, {label}", ref),
-        speed_record(
-            NAME,
-            f"visibility_test (compiled, three-valued), {label}",
-            ours,
-            ratio=ref / ours,
-            ratio_label="faster than eq. (19) on Interval arrays",
-        ),
+        speed_record(NAME, *reference),
+        speed_record(NAME, *ours, ratio=reference[1] / ours[1], ratio_label=ratio_label),
     ]
 
 
@@ -111,16 +114,11 @@ def bench_luvia(steps: int, seed: int = 0) -> list[dict]:
     ref = per_call(lambda: [_algorithm2(i, y[i], boxes, run.env, 0.01) for i in range(7)], 3)
     area = float(np.prod(np.diff(boxes), axis=(1, 2)).mean())
     label = f"7 robots, mean box {area:.2f} m², eps 0.01"
-    return [
-        speed_record(NAME, f"Algorithm 2 breadth-first (numpy), {label}", ref),
-        speed_record(
-            NAME,
-            f"luvia (compiled hull search), {label}",
-            ours,
-            ratio=ref / ours,
-            ratio_label="faster than breadth-first Algorithm 2 (same hull)",
-        ),
-    ]
+    return _versus(
+        (f"Algorithm 2 breadth-first (numpy), {label}", ref),
+        (f"luvia (compiled hull search), {label}", ours),
+        "faster than breadth-first Algorithm 2 (same hull)",
+    )
 
 
 def bench_run(steps: int, seed: int = 0) -> list[dict]:

@@ -70,6 +70,17 @@ def to_world(pose: tuple[Any, Any, Any], local: Point) -> Point:
     return x + c * local[0] - s * local[1], y + s * local[0] + c * local[1]
 
 
+def real_array(x, name: str, what: str) -> np.ndarray:
+    """``x`` as a float array; ``ValueError`` naming ``name`` if complex or not numeric."""
+    arr = np.asarray(x)
+    if np.iscomplexobj(arr):
+        raise ValueError(f"{name} must be real, got complex coordinates")
+    try:
+        return arr.astype(float)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"{name} must be {what} of numbers: {err}") from None
+
+
 def as_segments(world, name: str = "world") -> np.ndarray:
     """Validate a map of oriented segments ``[[a_x, a_y], [b_x, b_y]]`` as an (s, 2, 2) array.
 
@@ -77,13 +88,7 @@ def as_segments(world, name: str = "world") -> np.ndarray:
     [KJWM00, eq. (2)]. Raises ``ValueError`` naming ``name`` for an empty map, a wrong shape,
     non-finite or complex coordinates, or a segment of zero length.
     """
-    arr = np.asarray(world)
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex coordinates")
-    try:
-        arr = arr.astype(float)
-    except (TypeError, ValueError) as err:
-        raise ValueError(f"{name} must be an (s, 2, 2) array of numbers: {err}") from None
+    arr = real_array(world, name, "an (s, 2, 2) array")
     if arr.ndim != 3 or arr.shape[1:] != (2, 2):
         raise ValueError(f"{name} must have shape (s, 2, 2) (segments [a, b]), got {arr.shape}")
     if arr.shape[0] == 0:
@@ -124,13 +129,7 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
         raise TypeError(f"{name} must be a list of (k, 2) vertex arrays, got {type(polygons)}")
     out = []
     for j, poly in enumerate(polygons):
-        arr = np.asarray(poly)
-        if np.iscomplexobj(arr):
-            raise ValueError(f"{name}[{j}] must be real, got complex coordinates")
-        try:
-            arr = arr.astype(float)
-        except (TypeError, ValueError) as err:
-            raise ValueError(f"{name}[{j}] must be a (k, 2) array of numbers: {err}") from None
+        arr = real_array(poly, f"{name}[{j}]", "a (k, 2) array")
         if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] < 3:
             raise ValueError(f"{name}[{j}] must have shape (k, 2) with k >= 3, got {arr.shape}")
         if not np.all(np.isfinite(arr)):

@@ -17,7 +17,12 @@ from numba import njit
 
 from optbound.interval import Interval, tri_not
 from optbound.localization.environment import Environment
-from optbound.localization.geometry import as_polygons, segment_pair_meets, segments_meet_polygons
+from optbound.localization.geometry import (
+    as_polygons,
+    real_array,
+    segment_pair_meets,
+    segments_meet_polygons,
+)
 
 #: Default bound on nested bisections per LUVIA call, whatever ``eps``: a box is cut into at
 #: most 2**MAX_DEPTH sub-boxes, which bounds the cost when boxes grow large.
@@ -31,13 +36,7 @@ def as_boxes(boxes, name: str, *, volume: bool = False) -> np.ndarray:
     Raises ``ValueError`` naming ``name`` for a wrong shape, non-finite, complex or
     unordered bounds.
     """
-    arr = np.asarray(boxes)
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex bounds")
-    try:
-        arr = np.ascontiguousarray(arr, dtype=float)
-    except (TypeError, ValueError) as err:
-        raise ValueError(f"{name} must be an (m, 2, 2) array of numbers: {err}") from None
+    arr = np.ascontiguousarray(real_array(boxes, name, "an (m, 2, 2) array"))
     if arr.ndim != 3 or arr.shape[1:] != (2, 2):
         raise ValueError(f"{name} must have shape (m, 2, 2) ([[x_lo, x_hi], [y_lo, y_hi]] rows)")
     if not np.all(np.isfinite(arr)):
