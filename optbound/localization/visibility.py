@@ -248,7 +248,11 @@ def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
         raise ValueError(f"heading must be ({m},) finite readings and distance finite")
     if np.any(d[:, 0] > d[:, 1]):
         raise ValueError("distance: lower bound exceeds upper bound")
-    if not np.isfinite(heading_error) or heading_error < 0:
+    if (
+        not isinstance(heading_error, int | float)
+        or not np.isfinite(heading_error)
+        or heading_error < 0
+    ):
         raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
     theta = Interval(th) + Interval(-heading_error, heading_error)
     step = Interval(d[:, 0], d[:, 1])

@@ -236,3 +236,18 @@ def test_luvia_is_the_hull_of_algorithm_2():
             assert (ours is None) == (ref is None)
             if ref is not None:
                 np.testing.assert_array_equal(ours, ref)
+
+
+@pytest.mark.parametrize(
+    ("distance", "heading", "error", "match"),
+    [
+        ([0.1, 0.1], [0.0], -0.1, "heading_error"),
+        ([0.1, 0.1], [0.0], "a", "heading_error"),
+        ([0.2, 0.1], [0.0], 0.1, "lower bound"),
+        ([0.1, 0.1], [0.0, 1.0], 0.1, "heading"),
+        ([0.1, np.nan], [0.0], 0.1, "finite"),
+    ],
+)
+def test_odometry_rejects_bad_input(distance, heading, error, match):
+    with pytest.raises(ValueError, match=match):
+        v.odometry(np.array([[[0.0, 1.0], [0.0, 1.0]]]), distance, heading, error)
