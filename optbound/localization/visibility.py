@@ -1,0 +1,326 @@
+"""Pose tracking of a team of robots from visibility alone: LUVIA [GLH12].
+
+Two robots see each other when no obstacle meets the segment between them [GLH12, Def. 1].
+On boxes this becomes three-valued [GLH12, Def. 9]: TRUE when every pair of points of the two
+boxes sees each other, FALSE when no pair does, UNKNOWN otherwise (:func:`visibility_test`,
+Algorithm 3). A "visible" measurement is confronted with the inner characterization E⁻, a
+"not visible" one with the outer E⁺ [GLH12, Props. 15-16], so that a box is discarded only
+when it contains no position consistent with the true environment E (:func:`luvia`,
+Algorithm 2). :func:`track` (Algorithm 1) alternates interval odometry with a compass and
+LUVIA for every robot.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from optbound.interval import Interval, tri_not
+from optbound.localization.environment import Environment
+from optbound.localization.geometry import (
+    as_polygons,
+    real_array,
+    segment_pair_meets,
+    segments_meet_polygons,
+)
+
+#: Default bound on nested bisections per LUVIA call, whatever ``eps``: a box is cut into at
+#: most 2**MAX_DEPTH sub-boxes, which bounds the cost when boxes grow large.
+MAX_DEPTH = 10
+
+
+def as_boxes(boxes, name: str, *, volume: bool = False) -> np.ndarray:
+    """Validate an (m, 2, 2) array of boxes ``[[x_lo, x_hi], [y_lo, y_hi]]`` per row.
+
+    ``volume=True`` also requires ``lo < hi`` on both axes (a robot's position box).
+    Raises ``ValueError`` naming ``name`` for a wrong shape, non-finite, complex or
+    unordered bounds.
+    """
+    arr = np.ascontiguousarray(real_array(boxes, name, "an (m, 2, 2) array"))
+    if arr.ndim != 3 or arr.shape[1:] != (2, 2):
+        raise ValueError(f"{name} must have shape (m, 2, 2) ([[x_lo, x_hi], [y_lo, y_hi]] rows)")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    if np.any(arr[:, :, 0] > arr[:, :, 1]):
+        raise ValueError(f"{name}: a lower bound exceeds its upper bound")
+    if volume and np.any(arr[:, :, 0] >= arr[:, :, 1]):
+        bad = np.flatnonzero(np.any(arr[:, :, 0] >= arr[:, :, 1], axis=1)).tolist()
+        raise ValueError(f"{name}: box(es) {bad} have no volume (lo >= hi on an axis)")
+    return arr
+
+
+def visibility_test(boxes1, boxes2, obstacles) -> np.ndarray:
+    """Three-valued visibility of box pairs through polygonal obstacles [GLH12, Algorithm 3].
+
+    Parameters
+    ----------
+    boxes1, boxes2
+        (m, 2, 2) arrays of position boxes, ``[[x_lo, x_hi], [y_lo, y_hi]]`` per row
+        (degenerate boxes are points).
+    obstacles
+        List of polygons, each a (k, 2) array of vertices (closed solid sets); pass E⁻ or E⁺.
+
+    Returns
+    -------
+    (m,) int8 array of :class:`~optbound.interval.Tri`
+        TRUE if for every ``x1`` in ``boxes1[i]`` and ``x2`` in ``boxes2[i]`` no obstacle meets
+        ``Seg(x1, x2)`` (touching counts as meeting), FALSE if for every such pair one does,
+        UNKNOWN otherwise. Proven with [GLH12, eqs. (6)-(7)] in outward-rounded arithmetic,
+        plus the cases eq. (19) alone misses: a segment inside an obstacle, touching.
+    """
+    b1, b2 = as_boxes(boxes1, "boxes1"), as_boxes(boxes2, "boxes2")
+    if b1.shape != b2.shape:
+        raise ValueError(f"boxes1 and boxes2 must have the same shape, got {b1.shape}, {b2.shape}")
+    return tri_not(segments_meet_polygons(b1, b2, as_polygons(obstacles)))
+
+
+def _check_env(env) -> Environment:
+    if not isinstance(env, Environment):
+        raise TypeError(f"env must be an Environment (E⁻ and E⁺), got {type(env).__name__}")
+    return env
+
+
+def _check_eps(eps) -> float:
+    if not isinstance(eps, int | float) or not np.isfinite(eps) or eps <= 0:
+        raise ValueError(f"eps must be a positive finite area, got {eps!r}")
+    return float(eps)
+
+
+def _check_depth(max_depth) -> int:
+    if isinstance(max_depth, bool) or not isinstance(max_depth, int | np.integer) or max_depth < 0:
+        raise ValueError(f"max_depth must be a non-negative integer, got {max_depth!r}")
+    return int(max_depth)
+
+
+def _check_measurements(y, m: int, name: str = "y") -> np.ndarray:
+    arr = np.asarray(y)
+    if arr.dtype != np.bool_:
+        raise TypeError(f"{name} must be booleans (visible or not), got dtype {arr.dtype}")
+    if arr.shape != (m,):
+        raise ValueError(f"{name} must have one entry per robot, shape ({m},), got {arr.shape}")
+    return arr
+
+
+@njit(cache=True)
+def _consistent(box, i, y, boxes, inner, outer, pending) -> int:
+    """Test the pending measurements on ``box``: 0 refuted, 1 undecided, 2 consistent.
+
+    ``pending[j]`` (updated in place) stays True while the measurement with robot ``j`` is
+    undecided: a box proven consistent with a measurement stays so for its sub-boxes, which
+    skip that test. "Visible" is refuted when no pair sees through E⁻ (segments certainly
+    meet it) [GLH12, Prop. 15]; "not visible" when every pair sees through E⁺ [Prop. 16].
+    """
+    undecided = False
+    for j in range(len(boxes)):
+        if not pending[j]:
+            continue
+        if y[j]:
+            r = segment_pair_meets(box, boxes[j], inner[0], inner[1], inner[2])
+            refuted = r == 2
+        else:
+            r = segment_pair_meets(box, boxes[j], outer[0], outer[1], outer[2])
+            refuted = r == 0
+        if refuted:
+            return 0
+        if r == 1:
+            undecided = True
+        else:
+            pending[j] = False
+    return 1 if undecided else 2
+
+
+@njit(cache=True)
+def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
+    """Hull of the boxes kept by [GLH12, Algorithm 2], written into ``hull`` (empty: inf).
+
+    Algorithm 2 returns only the hull of its kept boxes, so each side of the hull is found
+    by its own depth-first pass that visits the more extreme child first and skips any box
+    not sticking out beyond the hull found so far: its kept sub-boxes could not move that
+    side. Same bisections, same tests, same hull as Algorithm 2, for a fraction of the tests.
+    """
+    m = len(boxes)
+    cap = 2 * (max_depth + 2)  # a depth-first stack holds at most one sibling per level
+    stack = np.empty((cap, 2, 2))
+    stack_pending = np.empty((cap, m), dtype=np.bool_)
+    stack_depth = np.empty(cap, dtype=np.int64)
+    hull[:, 0] = np.inf
+    hull[:, 1] = -np.inf
+    for d in range(4):
+        a, side = d // 2, d % 2
+        stack[0] = boxes[i]
+        stack_pending[0] = True
+        stack_pending[0, i] = False
+        stack_depth[0] = 0
+        n = 1
+        while n > 0:
+            n -= 1
+            box = stack[n].copy()
+            pending = stack_pending[n].copy()
+            depth = stack_depth[n]
+            if (box[a, 0] >= hull[a, 0]) if side == 0 else (box[a, 1] <= hull[a, 1]):
+                continue  # cannot move this side of the hull
+            verdict = _consistent(box, i, y, boxes, inner, outer, pending)
+            if verdict == 0:
+                continue
+            w0, w1 = box[0, 1] - box[0, 0], box[1, 1] - box[1, 0]
+            if verdict == 1 and w0 * w1 > eps and depth < max_depth:
+                ax = 0 if w0 >= w1 else 1  # the wider side, as np.argmax would pick
+                mid = 0.5 * (box[ax, 0] + box[ax, 1])
+                low, high = box.copy(), box.copy()
+                low[ax, 1] = mid
+                high[ax, 0] = mid
+                # Push the less extreme child first so that the more extreme one pops first.
+                first, second = (high, low) if side == 0 else (low, high)
+                stack[n] = first
+                stack[n + 1] = second
+                for k in range(n, n + 2):
+                    stack_pending[k] = pending
+                    stack_depth[k] = depth + 1
+                n += 2
+            else:
+                for k in range(2):
+                    hull[k, 0] = min(hull[k, 0], box[k, 0])
+                    hull[k, 1] = max(hull[k, 1], box[k, 1])
+
+
+def _luvia(i: int, y: np.ndarray, boxes: np.ndarray, env: Environment, eps: float, max_depth: int):
+    """LUVIA on validated input; the hull of the consistent sub-boxes or None if none."""
+    hull = np.empty((2, 2))
+    _luvia_kernel(i, y, boxes, env.packed_inner, env.packed_outer, eps, max_depth, hull)
+    return None if hull[0, 0] > hull[0, 1] else hull
+
+
+def luvia(
+    robot: int, y, boxes, env: Environment, eps: float, *, max_depth: int = MAX_DEPTH
+) -> np.ndarray | None:
+    """Contract one robot's position box with its visibility measurements [GLH12, Alg. 2].
+
+    Parameters
+    ----------
+    robot
+        Index ``i`` of the robot in ``boxes``.
+    y
+        (m,) booleans: ``y[l]`` is True when robots ``i`` and ``l`` see each other
+        [GLH12, eq. (18)]; ``y[i]`` is ignored.
+    boxes
+        (m, 2, 2) position boxes of all robots (each with volume), ``[[x_lo, x_hi], [y_lo,
+        y_hi]]``; the other robots' boxes are used as they are.
+    env
+        The :class:`Environment` (E⁻ for "visible", E⁺ for "not visible").
+    eps
+        Boxes of area ``Size([x]) <= eps`` are not bisected further [GLH12, Alg. 2, l. 20].
+    max_depth
+        At most this many nested bisections whatever ``eps`` (not in the paper: it bounds the
+        cost of large boxes; the result is still guaranteed, only coarser).
+
+    Returns
+    -------
+    (2, 2) array or None
+        The hull of the sub-boxes not refuted by any measurement, a subset of ``boxes[robot]``
+        containing every position of it consistent with the measurements, the other boxes
+        and E; None when every sub-box is refuted (the data contradict the boxes).
+    """
+    b = as_boxes(boxes, "boxes", volume=True)
+    m = len(b)
+    if m == 0:
+        raise ValueError("boxes is empty: LUVIA needs a team of robots")
+    if isinstance(robot, bool) or not isinstance(robot, int | np.integer):
+        raise TypeError(f"robot must be an integer index, got {type(robot).__name__}")
+    if not 0 <= robot < m:
+        raise ValueError(f"robot must be in [0, {m}), got {robot}")
+    y = _check_measurements(y, m)
+    return _luvia(int(robot), y, b, _check_env(env), _check_eps(eps), _check_depth(max_depth))
+
+
+def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
+    """Interval odometry with a compass [GLH12, Alg. 1, l. 3]: ``x + d (cos θ, sin θ)``.
+
+    ``boxes`` (m, 2, 2); ``distance`` (m, 2) interval ``[d_lo, d_hi]`` travelled by each robot
+    (or one (2,) interval for all); ``heading`` (m,) compass readings (radians) with error at
+    most ``heading_error``. Outward-rounded: the result contains every position reachable by
+    a travel in ``[d]`` along a heading in ``[θ - δ, θ + δ]``.
+    """
+    b = as_boxes(boxes, "boxes")
+    m = len(b)
+    d = np.broadcast_to(np.asarray(distance, dtype=float), (m, 2))
+    th = np.asarray(heading, dtype=float)
+    if th.shape != (m,) or not np.all(np.isfinite(th)) or not np.all(np.isfinite(d)):
+        raise ValueError(f"heading must be ({m},) finite readings and distance finite")
+    if np.any(d[:, 0] > d[:, 1]):
+        raise ValueError("distance: lower bound exceeds upper bound")
+    if (
+        not isinstance(heading_error, int | float)
+        or not np.isfinite(heading_error)
+        or heading_error < 0
+    ):
+        raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
+    theta = Interval(th) + Interval(-heading_error, heading_error)
+    step = Interval(d[:, 0], d[:, 1])
+    x = Interval(b[:, 0, 0], b[:, 0, 1]) + step * np.cos(theta)
+    yy = Interval(b[:, 1, 0], b[:, 1, 1]) + step * np.sin(theta)
+    return np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+
+
+def track(
+    boxes0,
+    distance,
+    headings,
+    heading_error: float,
+    visibility,
+    env: Environment,
+    eps: float,
+    *,
+    max_depth: int = MAX_DEPTH,
+) -> np.ndarray:
+    """Pose tracking of a team [GLH12, Algorithm 1]: odometry, then LUVIA for every robot.
+
+    Parameters
+    ----------
+    boxes0
+        (m, 2, 2) initial position boxes (with volume), containing the initial positions.
+    distance
+        Interval ``[d_lo, d_hi]`` of one step's travel, shape (2,), (K, 2) or (K, m, 2).
+    headings
+        (K, m) compass readings of the heading of each step (radians).
+    heading_error
+        Compass error bound ``δ`` (radians).
+    visibility
+        (K, m, m) booleans: ``visibility[k, i, l]`` is ``y_il`` after step ``k``.
+    env, eps, max_depth
+        As for :func:`luvia`.
+
+    Returns
+    -------
+    (K + 1, m, 2, 2) array
+        The boxes after each step (index 0 is ``boxes0``). Robots are contracted in order,
+        each with the others' latest boxes (every contraction is guaranteed, so the order
+        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box (the
+        measurements are inconsistent with E⁻, E⁺ and the odometry).
+    """
+    b = as_boxes(boxes0, "boxes0", volume=True)
+    m = len(b)
+    if m == 0:
+        raise ValueError("boxes0 is empty: tracking needs at least one robot")
+    env, eps, max_depth = _check_env(env), _check_eps(eps), _check_depth(max_depth)
+    th = np.asarray(headings, dtype=float)
+    if th.ndim != 2 or th.shape[1] != m:
+        raise ValueError(f"headings must have shape (K, {m}), got {th.shape}")
+    steps = len(th)
+    vis = np.asarray(visibility)
+    if vis.dtype != np.bool_:
+        raise TypeError(f"visibility must be booleans, got dtype {vis.dtype}")
+    if vis.shape != (steps, m, m):
+        raise ValueError(f"visibility must have shape ({steps}, {m}, {m}), got {vis.shape}")
+    dist = np.broadcast_to(np.asarray(distance, dtype=float), (steps, m, 2))
+    out = np.empty((steps + 1, m, 2, 2))
+    out[0] = b
+    for k in range(steps):
+        cur = odometry(out[k], dist[k], th[k], heading_error)
+        for i in range(m):
+            if m > 1:
+                box = _luvia(i, vis[k, i], cur, env, eps, max_depth)
+                if box is None:
+                    raise ValueError(f"step {k}: every position of robot {i} is refuted")
+                cur[i] = box
+        out[k + 1] = cur
+    return out

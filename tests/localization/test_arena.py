@@ -1,0 +1,45 @@
+"""The designed 10 x 10 m world of GLH12 Sect. 5 (Fig. 7 is lost)."""
+
+import numpy as np
+import pytest
+
+from optbound.interval import Tri
+from optbound.localization import arena
+from optbound.localization.geometry import point_in_polygon
+
+
+def test_obstacles_and_starts_fit_the_room():
+    assert len(arena.OBSTACLES) == 11 and len(arena.STARTS) == 11
+    for poly in arena.OBSTACLES:
+        assert np.all((poly > 0) & (poly < arena.SIZE))
+        assert not np.any(point_in_polygon(arena.STARTS, poly) != Tri.FALSE)
+    env = arena.environment(11)
+    assert len(env.inner) == len(env.outer) == 11
+
+
+def test_simulate_follows_the_paper_sensing():
+    run = arena.simulate(5, 6, 60, seed=3)
+    steps = np.linalg.norm(np.diff(run.truth, axis=0), axis=-1)
+    assert np.all((steps >= 0.099 - 1e-12) & (steps <= 0.101 + 1e-12))
+    assert np.all((run.boxes0[..., 0] <= run.truth[0]) & (run.truth[0] <= run.boxes0[..., 1]))
+    np.testing.assert_allclose(np.prod(np.diff(run.boxes0), axis=(1, 2)), 1.0)
+    assert run.visibility.shape == (60, 5, 5)
+    assert np.array_equal(run.visibility, np.swapaxes(run.visibility, 1, 2))
+    assert 0.0 < run.visibility.mean() < 1.0
+    for poly in run.env.exact:  # robots never enter an obstacle
+        assert not np.any(point_in_polygon(run.truth.reshape(-1, 2), poly) != Tri.FALSE)
+
+
+def test_measure_sees_through_free_space_only():
+    pts = np.array([[1.0, 3.0], [4.0, 3.0], [2.5, 1.0]])  # obstacle 0 spans x 2..3, y 2..4.5
+    y = arena.measure(pts, arena.environment(1).exact)
+    assert y.tolist() == [[True, False, True], [False, True, True], [True, True, True]]
+
+
+@pytest.mark.parametrize(
+    ("robots", "obstacles", "match"),
+    [(0, 3, "n_robots"), (12, 3, "n_robots"), (3, 12, "n_obstacles")],
+)
+def test_simulate_rejects_bad_counts(robots, obstacles, match):
+    with pytest.raises(ValueError, match=match):
+        arena.simulate(robots, obstacles, 5, 0)
