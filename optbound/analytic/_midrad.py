@@ -25,6 +25,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound.sets._domain import COND_OUT, MAG, RATIO_OUT
+
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms
 RADIUS_SAFETY = 1.0 + 1e-12
@@ -159,12 +161,13 @@ def lambda_min_estimate(L) -> float:
 
 
 @njit(cache=True)
-def inflate(S, D, d, floor, T, L) -> float:
+def inflate(S, D, c, d, T, L) -> float:
     """Outward shape T (written, symmetric) containing the exact member; see the module doc.
 
-    Parameters: S, D (n, n) the computed shape (lower triangle) and its radii; d (n,) the radii
-    of the computed centre; ``floor`` a lower bound to impose on lambda_min(T) (the widening of
-    near-degenerate results; 0 for none); L is work space (Cholesky factor of S).
+    Parameters: S, D (n, n) the computed shape (lower triangle) and its radii; c, d (n,) the
+    computed centre and its radii; L is work space (Cholesky factor of S). T may be S itself.
+    A near-degenerate result is widened: lambda_min(T) is kept above ``tr(S) / COND_OUT``,
+    ``(|c|_inf / RATIO_OUT)^2`` and ``(2 / MAG)^2`` (the output domain).
 
     Returns the margin ``rho + mu / lambda_min(S)`` (estimated: how much a point at level 1 of
     S may be moved outward, relative), or -1.0 if T could not be formed (not positive
@@ -174,6 +177,12 @@ def inflate(S, D, d, floor, T, L) -> float:
     if not cholesky(S, L):
         return -1.0
     lmin = lambda_min_estimate(L)
+    trace = 0.0
+    cmax = 0.0
+    for i in range(n):
+        trace += S[i, i]
+        cmax = max(cmax, abs(c[i]))
+    floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
     dd = 0.0
     for i in range(n):
         dd += d[i] * d[i]

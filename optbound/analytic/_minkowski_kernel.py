@@ -18,7 +18,7 @@ import numpy as np
 from numba import njit, prange
 
 from optbound.analytic._midrad import U, cholesky, inflate, mr_add, mr_div, mr_mul
-from optbound.sets._domain import COND_OUT, MAG, RATIO_OUT, check_ellipsoid
+from optbound.sets._domain import check_ellipsoid
 
 P_VOLUME, P_TRACE, P_GIVEN = range(3)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -112,18 +112,13 @@ def sum_one(c1, C1, c2, C2, mode, p_in, out_c, out_C, out_L, work):
     else:
         p = p_volume(C1, C2, L1, L2, A, out_L, X)
     onep, ronep = mr_add(1.0, 0.0, p, 0.0)
-    cmax = 0.0
-    trace = 0.0
     for i in range(n):
         out_c[i], dc[i] = mr_add(c1[i], 0.0, c2[i], 0.0)
-        cmax = max(cmax, abs(out_c[i]))
         for j in range(i + 1):
             q, rq = mr_div(C1[i, j], 0.0, p, 0.0)
             s, rs = mr_add(q, rq, C2[i, j], 0.0)
             out_C[i, j], D[i, j] = mr_mul(onep, ronep, s, rs)
-        trace += out_C[i, i]
-    floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
-    margin = inflate(out_C, D, dc, floor, out_C, out_L)
+    margin = inflate(out_C, D, out_c, dc, out_C, out_L)
     if margin < 0.0 or check_ellipsoid(out_c, out_C, out_L) != 0:
         return OUT_OF_DOMAIN, p, 0.0
     return 0, p, margin
@@ -155,6 +150,8 @@ def sum_batch(c1, C1, c2, C2, mode, p_in):
     for k in prange(n_chunks):
         work = np.zeros((6, max(n, 1), n))
         for i in range(k * CHUNK, min(B, (k + 1) * CHUNK)):
-            r = sum_one(c1[i], C1[i], c2[i], C2[i], mode, p_in[i], out_c[i], out_C[i], out_L[i], work)
+            r = sum_one(
+                c1[i], C1[i], c2[i], C2[i], mode, p_in[i], out_c[i], out_C[i], out_L[i], work
+            )
             code[i], p[i], margin[i] = r
     return out_c, out_C, out_L, code, p, margin

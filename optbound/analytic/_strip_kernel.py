@@ -30,7 +30,7 @@ from optbound.analytic._midrad import (
     mr_mul,
     offset,
 )
-from optbound.sets._domain import COND_OUT, MAG, RATIO_OUT, check_ellipsoid
+from optbound.sets._domain import MAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 VOLUME, GIVEN, ROBUST = range(3)
@@ -177,21 +177,15 @@ def member(c, C, lam, epsn, repsn, Gn, rGn, wn, rwn, out_c, out_C, L, D, dc):
     if not K - rK > 0.0:
         return -1.0
     f, rf = mr_mul(gam, rgam, epsn, repsn)
-    cmax = 0.0
     for i in range(n):
         fw, rfw = mr_mul(f, rf, wn[i], rwn[i])
         out_c[i], dc[i] = mr_add(c[i], 0.0, fw, rfw)
-        cmax = max(cmax, abs(out_c[i]))
         for j in range(i + 1):
             p, rp = mr_mul(wn[i], rwn[i], wn[j], rwn[j])
             gp, rgp = mr_mul(gam, rgam, p, rp)
             c0, rc0 = mr_add(C[i, j], 0.0, -gp, rgp)
             out_C[i, j], D[i, j] = mr_mul(K, rK, c0, rc0)
-    trace = 0.0
-    for i in range(n):
-        trace += out_C[i, i]
-    floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
-    margin = inflate(out_C, D, dc, floor, out_C, L)
+    margin = inflate(out_C, D, out_c, dc, out_C, L)
     if margin < 0.0 or check_ellipsoid(out_c, out_C, L) != 0:
         return -1.0
     return margin

@@ -61,7 +61,14 @@ from optbound.sets.strip import Halfspace, Strip
 
 CASES = ("no_reduction", "consistent", "partial", "inconsistent")
 CRITERIA = ("volume", "trace", "projection", "robust")
-__all__ = ["CASES", "LAMG_MAX", "LAM_MAX", "MIN_REL_WIDTH", "intersect_strip", "intersect_strip_batch"]
+__all__ = [
+    "CASES",
+    "LAMG_MAX",
+    "LAM_MAX",
+    "MIN_REL_WIDTH",
+    "intersect_strip",
+    "intersect_strip_batch",
+]
 
 
 @dataclass(frozen=True)
@@ -201,7 +208,7 @@ def _fuse_single(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
 
 def _lam_numpy(c, C, a, b, halfspace, clip, criterion, idx, steepness, midpoint, names, batched):
     """lambda of the criteria solved in numpy (trace, projection, robust with dims)."""
-    code, case, cons, eps, Gs, ws = prepare_batch(c, C, a, b, halfspace, clip)
+    code, _, cons, eps, Gs, ws = prepare_batch(c, C, a, b, halfspace, clip)
     bad = np.flatnonzero(code)
     if bad.size:
         _raise(int(code[bad[0]]), int(bad[0]), names, batched)
@@ -226,7 +233,9 @@ def _mode(criterion, dims, lam, n_batch, n):
     if lam is not None:
         lam = np.ascontiguousarray(_batch.per_instance("lam", lam, n_batch, ()))
         if np.any(lam < 0):
-            raise ValueError(f"lam must be >= 0 (every lambda >= 0 gives an outer bound), got {lam}")
+            raise ValueError(
+                f"lam must be >= 0 (every lambda >= 0 gives an outer bound), got {lam}"
+            )
         return GIVEN, lam, idx
     if criterion == "volume":
         return VOLUME, np.zeros(n_batch), idx

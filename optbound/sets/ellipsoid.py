@@ -161,7 +161,9 @@ class Ellipsoid(ConvexSet):
         try:
             return Ellipsoid(self._center, shape)
         except ValueError as err:
-            raise ValueError(f"factor={factor} takes the ellipsoid out of the domain: {err}") from None
+            raise ValueError(
+                f"factor={factor} takes the ellipsoid out of the domain: {err}"
+            ) from None
 
     def bounding_box(self) -> Box:
         """Tightest axis-aligned box: half-widths ``sqrt(diag C)``."""
