@@ -142,21 +142,20 @@ def cholesky(A, L) -> bool:
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
 
-    Only an estimate (it chooses rho and the widening); no guarantee rests on it.
+    Only an estimate (it chooses rho and the widening); no guarantee rests on it. The strict
+    lower part of L^{-1} is stored transposed in L's (unused) strict upper triangle.
     """
     n = L.shape[0]
     total = 0.0
-    col = np.empty(n)
     for j in range(n):  # column j of L^{-1} by forward substitution
-        for i in range(n):
-            if i < j:
-                col[i] = 0.0
-                continue
-            s = 1.0 if i == j else 0.0
-            for k in range(j, i):
-                s -= L[i, k] * col[k]
-            col[i] = s / L[i, i]
-            total += col[i] * col[i]
+        xjj = 1.0 / L[j, j]
+        total += xjj * xjj
+        for i in range(j + 1, n):
+            s = L[i, j] * xjj
+            for k in range(j + 1, i):
+                s += L[i, k] * L[j, k]
+            L[j, i] = -s / L[i, i]
+            total += L[j, i] * L[j, i]
     return 1.0 / total
 
 

@@ -15,7 +15,7 @@ has converged (no eigendecomposition needed).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from optbound.analytic._midrad import U, cholesky, inflate, mr_add, mr_div, mr_mul
 from optbound.sets._domain import check_ellipsoid
@@ -24,7 +24,6 @@ P_VOLUME, P_TRACE, P_GIVEN = range(3)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
 BAD_KAPPA, OUT_OF_DOMAIN = 21, 22
 NEWTON_MAX_STEPS = 100
-CHUNK = 256
 
 
 @njit(cache=True)
@@ -136,22 +135,25 @@ def sum_single(c1, C1, c2, C2, mode, p_in):
     return out_c, out_C, out_L, r
 
 
-@njit(cache=True, parallel=True)
-def sum_batch(c1, C1, c2, C2, mode, p_in):
-    """``sum_one`` over B instances (p_in broadcast by the caller to (B,))."""
-    B, n = c1.shape
-    out_c = np.empty((B, n))
-    out_C = np.empty((B, n, n))
-    out_L = np.empty((B, n, n))
-    code = np.zeros(B, np.int8)
-    p = np.zeros(B)
-    margin = np.zeros(B)
-    n_chunks = (B + CHUNK - 1) // CHUNK
-    for k in prange(n_chunks):
-        work = np.zeros((6, max(n, 1), n))
-        for i in range(k * CHUNK, min(B, (k + 1) * CHUNK)):
-            r = sum_one(
-                c1[i], C1[i], c2[i], C2[i], mode, p_in[i], out_c[i], out_C[i], out_L[i], work
-            )
-            code[i], p[i], margin[i] = r
-    return out_c, out_C, out_L, code, p, margin
+@njit(cache=True, nogil=True)
+def sum_range(c1, C1, c2, C2, mode, p_in, out, start, stop):
+    """``sum_one`` on instances ``start..stop`` (p_in broadcast to (B,) by the caller).
+    ``out`` = (centres, shapes, chol, code, p, margin)."""
+    out_c, out_C, out_L, code, p, margin = out
+    n = c1.shape[1]
+    work = np.zeros((6, max(n, 1), n))
+    for i in range(start, stop):
+        r = sum_one(c1[i], C1[i], c2[i], C2[i], mode, p_in[i], out_c[i], out_C[i], out_L[i], work)
+        code[i], p[i], margin[i] = r
+
+
+def batch_outputs(B: int, n: int) -> tuple:
+    """Output arrays of ``sum_range``."""
+    return (
+        np.empty((B, n)),
+        np.empty((B, n, n)),
+        np.empty((B, n, n)),
+        np.zeros(B, np.int8),
+        np.zeros(B),
+        np.zeros(B),
+    )

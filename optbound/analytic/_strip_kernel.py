@@ -19,11 +19,13 @@ so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centr
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from optbound.analytic._midrad import (
     TINY,
     U,
+    _two_prod,
+    _two_sum,
     inflate,
     mr_add,
     mr_div,
@@ -41,7 +43,6 @@ MIN_REL_WIDTH = 1e-6
 # lambda is capped here (a larger one only gives a bound >= 1e8 times E in some direction).
 LAM_MAX = 1e8
 LAMG_MAX = 1e16
-CHUNK = 256
 
 
 @njit(cache=True, inline="always")
@@ -66,33 +67,48 @@ def _strip_ok(a, b) -> int:
 
 
 @njit(cache=True)
-def prepare(c, C, a, b, halfspace, clip, L, wn, rwn):
-    """Steps 1-3. Writes C's Cholesky factor into L and the normalized ``C a'`` (with radii)
-    into wn, rwn. Returns (code, case, consistency, eps', r_eps', G', r_G')."""
+def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
+    """Steps 1-3. Writes C's Cholesky factor into L and ``w = C a`` as ``wh + wl`` with error
+    bounds ``we``. Returns (code, case, consistency, mid, half, G, G_lo, r_G): the fused strip
+    is ``|a^T (x - c) - mid| <= half`` (mid, half exact floats), ``G + G_lo`` (exactly) is
+    within r_G of a^T C a."""
     n = c.shape[0]
     code = check_ellipsoid(c, C, L)
     if code == 0:
         code = _strip_ok(a, b)
     if code != 0:
-        return code, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0
-    gn = n * U / (1.0 - n * U)
+        return code, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    g2 = 2.0 * (2 * n * U / (1.0 - 2 * n * U)) ** 2
     eps, reps = offset(b, a, c)
-    G = 0.0
-    mG = 0.0
-    rGw = 0.0
+    # w = C a and G = a^T C a in twice the working precision (Dot2): a plain dot product has
+    # a relative error of cond(C) U when a is close to a thin axis of E, and the member's
+    # error would grow like cond(C)^2 U. Each w_i = s_i + t_i before rounding, with
+    # |s_i + t_i - w_i| <= g2 m_i.
+    Gs = 0.0
+    Gt = 0.0
+    mG = 0.0  # sum |a_i s_i| (Dot2 bound) ...
+    dG = 0.0  # ... sum |a_i| g2 m_i (the w_i's own error) + 4 n U sum |a_i t_i| (plain part)
     for i in range(n):
-        s = 0.0
-        m = 0.0
+        si = 0.0
+        ti = 0.0
+        mi = 0.0
         for j in range(n):
             cij = C[i, j] if j <= i else C[j, i]
-            s += cij * a[j]
-            m += abs(cij * a[j])
-        wn[i] = s
-        rwn[i] = gn * m
-        G += a[i] * s
-        mG += abs(a[i] * s)
-        rGw += abs(a[i]) * rwn[i]
-    rG = gn * mG + rGw
+            p, e = _two_prod(cij, a[j])
+            si, f = _two_sum(si, p)
+            ti += e + f
+            mi += abs(p)
+        wh[i] = si
+        wl[i] = ti
+        we[i] = g2 * mi + TINY
+        p, e = _two_prod(a[i], si)
+        Gs, f = _two_sum(Gs, p)
+        Gt += e + f + a[i] * ti
+        mG += abs(p)
+        dG += abs(a[i]) * (g2 * mi + 4.0 * n * U * abs(ti))
+    G, G_lo = _two_sum(Gs, Gt)  # G + G_lo = Gs + Gt exactly, within rG of a^T C a
+    rG_dd = g2 * mG + dG + TINY
+    rG = rG_dd + abs(G_lo)
     g = np.sqrt(G)
     g_hi = np.sqrt(G + rG) * (1.0 + 4.0 * U) + TINY
     g_lo = np.sqrt(max(G - rG, 0.0)) * (1.0 - 4.0 * U)
@@ -118,7 +134,7 @@ def prepare(c, C, a, b, halfspace, clip, L, wn, rwn):
     overlap = max(min(hi, g) - max(lo, -g), 0.0)
     consistency = min(max(overlap / (2.0 * np.sqrt(g)), 0.0), 1.0)  # [HS96, eq. (29)]
     if lo_dn > g_hi or hi_up < -g_hi:
-        return 0, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0  # proven disjoint
+        return 0, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0  # proven disjoint
     if lo_up <= -g_lo and hi_dn >= g_lo:
         case = NO_REDUCTION  # proven: S covers E
     elif (-g < lo < g) and (-g < hi < g):
@@ -138,13 +154,7 @@ def prepare(c, C, a, b, halfspace, clip, L, wn, rwn):
         mid = min(max(mid, -g_lo + floor), g_lo - floor)
     half = max(hi_f - mid, mid - lo_f) * (1.0 + 2.0 * U)
     half = max(half, floor)
-    # Normalized strip |a^T (x - c) / half - mid / half| <= 1 (half, mid exact floats).
-    epsn, repsn = mr_div(mid, 0.0, half, 0.0)
-    for i in range(n):
-        wn[i], rwn[i] = mr_div(wn[i], rwn[i], half, 0.0)
-    hh, rhh = mr_mul(half, 0.0, half, 0.0)
-    Gn, rGn = mr_div(G, rG, hh, rhh)
-    return 0, case, consistency, epsn, repsn, Gn, rGn
+    return 0, case, consistency, mid, half, G, G_lo, rG_dd
 
 
 @njit(cache=True, inline="always")
@@ -161,30 +171,55 @@ def lam_volume(Gn, e, n):
 
 
 @njit(cache=True)
-def member(c, C, lam, epsn, repsn, Gn, rGn, wn, rwn, out_c, out_C, L, D, dc):
-    """Steps 5-6 for lambda > 0: writes the inflated member into out_c, out_C and its Cholesky
-    factor into L. Returns the margin, or -1.0 if the member cannot be certified (the caller
-    falls back to E)."""
+def member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, L, D, dc):
+    """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), written into
+    out_c, out_C (inflated) with its Cholesky factor in L. Returns the margin, or -1.0 if it
+    cannot be certified (the caller falls back to E).
+
+    Parametrized by ``gam = lambda / (u half^2)`` itself, the member of [HS96, eq. (24)] for
+    the fused strip reads, with w = C a exactly and ``lambda' = gam half^2 / (1 - gam G)``:
+
+        centre = c + gam mid w,   shape = K (C - gam w w^T),   K = 1 + lambda' - gam mid^2,
+
+    so no rounding of lambda, u or the normalization enters the matrix; ``C - gam w w^T``
+    (where the cancellation is) is formed in twice the working precision.
+    """
     n = c.shape[0]
-    lg, rlg = mr_mul(lam, 0.0, Gn, rGn)
-    u, ru = mr_add(1.0, 0.0, lg, rlg)
-    gam, rgam = mr_div(lam, 0.0, u, ru)
-    e2, re2 = mr_mul(epsn, repsn, epsn, repsn)
-    t, rt = mr_div(e2, re2, u, ru)
-    lt, rlt = mr_mul(lam, 0.0, t, rt)
-    k1, rk1 = mr_add(1.0, 0.0, lam, 0.0)
-    K, rK = mr_add(k1, rk1, -lt, rlt)
+    # 1 - gam G without cancellation error (it is ~ 1 / u, small when lambda G is large).
+    p, e = _two_prod(gam, G)
+    q = e + gam * G_lo
+    om = (1.0 - p) - q
+    rom = U * abs(1.0 - p) + 2.0 * U * (abs(q) + abs(om)) + gam * rG + TINY
+    if not om - rom > 0.0:
+        return -1.0
+    hh, rhh = mr_mul(half, 0.0, half, 0.0)
+    gh, rgh = mr_mul(gam, 0.0, hh, rhh)
+    lp, rlp = mr_div(gh, rgh, om, rom)
+    gm, rgm = mr_mul(gam, 0.0, mid, 0.0)
+    gm2, rgm2 = mr_mul(gm, rgm, mid, 0.0)
+    k1, rk1 = mr_add(1.0, 0.0, lp, rlp)
+    K, rK = mr_add(k1, rk1, -gm2, rgm2)
     if not K - rK > 0.0:
         return -1.0
-    f, rf = mr_mul(gam, rgam, epsn, repsn)
     for i in range(n):
-        fw, rfw = mr_mul(f, rf, wn[i], rwn[i])
+        fw, rfw = mr_mul(gm, rgm, wh[i], abs(wl[i]) + we[i])
         out_c[i], dc[i] = mr_add(c[i], 0.0, fw, rfw)
+        Wi = abs(wh[i]) + abs(wl[i]) + we[i]
         for j in range(i + 1):
-            p, rp = mr_mul(wn[i], rwn[i], wn[j], rwn[j])
-            gp, rgp = mr_mul(gam, rgam, p, rp)
-            c0, rc0 = mr_add(C[i, j], 0.0, -gp, rgp)
-            out_C[i, j], D[i, j] = mr_mul(K, rK, c0, rc0)
+            Wj = abs(wh[j]) + abs(wl[j]) + we[j]
+            ph, pl = _two_prod(wh[i], wh[j])
+            cross = wh[i] * wl[j] + wl[i] * wh[j]
+            pl += cross
+            qh, ql = _two_prod(gam, ph)
+            ql += gam * pl
+            sh, sl = _two_sum(C[i, j], -qh)
+            sl -= ql
+            c0 = sh + sl
+            err = gam * (
+                Wi * we[j] + we[i] * Wj + abs(wl[i] * wl[j])
+                + 4.0 * U * (abs(wh[i] * wl[j]) + abs(wl[i] * wh[j]))
+            ) + 4.0 * U * (abs(ql) + abs(sl)) + U * abs(c0)  # fmt: skip
+            out_C[i, j], D[i, j] = mr_mul(K, rK, c0, err)
     margin = inflate(out_C, D, out_c, dc, out_C, L)
     if margin < 0.0 or check_ellipsoid(out_c, out_C, L) != 0:
         return -1.0
@@ -203,13 +238,13 @@ def _copy_input(c, C, L, out_c, out_C, out_L):
 
 @njit(cache=True)
 def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_C, out_L, work):
-    """One full update (steps 1-6). ``work`` is (3, max(n, 3), n) scratch.
+    """One full update (steps 1-6). ``work`` is (3, max(n, 4), n) scratch.
 
     Returns (code, case, consistency, lam, empty, margin).
     """
     n = c.shape[0]
-    wn, rwn, dc, D, L = work[0, 0], work[0, 1], work[0, 2], work[1, :n], work[2, :n]
-    code, case, cons, epsn, repsn, Gn, rGn = prepare(c, C, a, b, halfspace, clip, L, wn, rwn)
+    wh, wl, we, dc, D, L = work[0, 0], work[0, 1], work[0, 2], work[0, 3], work[1, :n], work[2, :n]
+    code, case, cons, mid, half, G, G_lo, rG = prepare(c, C, a, b, halfspace, clip, L, wh, wl, we)
     if code != 0:
         return code, case, 0.0, 0.0, True, 0.0
     if mode == GIVEN and not (np.isfinite(lam_in) and lam_in >= 0.0):
@@ -222,61 +257,86 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_
                 out_L[i, j] = 0.0
         return 0, case, 0.0, 0.0, True, 0.0
     lam = 0.0
+    Gn = G / (half * half)
     if case != NO_REDUCTION:
         if mode == GIVEN:
             lam = lam_in
         else:
-            lam = lam_volume(Gn, epsn, n)
+            lam = lam_volume(Gn, mid / half, n)
             if mode == ROBUST:
                 lam = lam / (1.0 + np.exp(-steep * (cons - midp)))  # [HS96, eq. (30)]
         lam = min(lam, LAM_MAX, LAMG_MAX / Gn)
     margin = 0.0
     if lam > 0.0:
-        margin = member(c, C, lam, epsn, repsn, Gn, rGn, wn, rwn, out_c, out_C, out_L, D, dc)
+        gam = lam / ((1.0 + lam * Gn) * (half * half))
+        margin = member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, out_L, D, dc)
     if not lam > 0.0 or margin < 0.0:
         _copy_input(c, C, L, out_c, out_C, out_L)
         return 0, case, cons, 0.0, False, 0.0
     return 0, case, cons, lam, False, margin
 
 
-@njit(cache=True, parallel=True)
-def fuse_batch(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
-    """``fuse_one`` over B instances (a, b, lam broadcast by the caller to (B, ...))."""
-    B, n = c.shape
-    out_c = np.empty((B, n))
-    out_C = np.empty((B, n, n))
-    out_L = np.empty((B, n, n))
-    code = np.zeros(B, np.int8)
-    case = np.zeros(B, np.int8)
-    cons = np.zeros(B)
-    lam_out = np.zeros(B)
-    empty = np.zeros(B, np.bool_)
-    margin = np.zeros(B)
-    n_chunks = (B + CHUNK - 1) // CHUNK
-    for k in prange(n_chunks):
-        work = np.zeros((3, max(n, 3), n))
-        for i in range(k * CHUNK, min(B, (k + 1) * CHUNK)):
-            r = fuse_one(
-                c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], steep, midp,
-                out_c[i], out_C[i], out_L[i], work,
-            )  # fmt: skip
-            code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
-    return out_c, out_C, out_L, code, case, cons, lam_out, empty, margin
+@njit(cache=True)
+def fuse_single(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
+    """One instance, without slicing (the same ``fuse_one`` as the batch)."""
+    n = c.shape[0]
+    out_c = np.empty(n)
+    out_C = np.empty((n, n))
+    out_L = np.empty((n, n))
+    work = np.zeros((3, max(n, 4), n))
+    r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out_c, out_C, out_L, work)
+    return out_c, out_C, out_L, r
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out, start, stop):
+    """``fuse_one`` on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
+    caller). ``out`` = (centres, shapes, chol, code, case, consistency, lam, empty, margin)."""
+    out_c, out_C, out_L, code, case, cons, lam_out, empty, margin = out
+    n = c.shape[1]
+    work = np.zeros((3, max(n, 4), n))
+    for i in range(start, stop):
+        r = fuse_one(
+            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], steep, midp,
+            out_c[i], out_C[i], out_L[i], work,
+        )  # fmt: skip
+        code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
+
+
+def batch_outputs(B: int, n: int) -> tuple:
+    """Output arrays of ``fuse_range``."""
+    return (
+        np.empty((B, n)),
+        np.empty((B, n, n)),
+        np.empty((B, n, n)),
+        np.zeros(B, np.int8),
+        np.zeros(B, np.int8),
+        np.zeros(B),
+        np.zeros(B),
+        np.zeros(B, np.bool_),
+        np.zeros(B),
+    )
+
+
+@njit(cache=True)
 def prepare_batch(c, C, a, b, halfspace, clip):
-    """Steps 1-3 over B instances, for the criteria whose lambda is chosen in numpy."""
+    """Steps 1-3 over B instances, for the criteria whose lambda is chosen in numpy: the
+    normalized strip's eps' = mid / half, G' = G / half^2 and C a' = w / half (floats)."""
     B, n = c.shape
-    wn = np.empty((B, n))
+    ws = np.empty((B, n))
     code = np.zeros(B, np.int8)
     case = np.zeros(B, np.int8)
     cons = np.zeros(B)
     epsn = np.zeros(B)
     Gn = np.ones(B)
-    for i in prange(B):
-        L = np.empty((n, n))
-        rwn = np.empty(n)
-        r = prepare(c[i], C[i], a[i], b[i], halfspace, clip, L, wn[i], rwn)
-        code[i], case[i], cons[i], epsn[i], _, Gn[i], _ = r
-    return code, case, cons, epsn, Gn, wn
+    L = np.empty((n, n))
+    wl = np.empty(n)
+    we = np.empty(n)
+    for i in range(B):
+        r = prepare(c[i], C[i], a[i], b[i], halfspace, clip, L, ws[i], wl, we)
+        code[i], case[i], cons[i], mid, half, G, _, _ = r
+        if code[i] == 0 and case[i] != INCONSISTENT:
+            epsn[i] = mid / half
+            Gn[i] = G / (half * half)
+            ws[i] /= half
+    return code, case, cons, epsn, Gn, ws

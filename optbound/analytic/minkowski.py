@@ -27,10 +27,12 @@ from optbound.analytic._minkowski_kernel import (
     P_GIVEN,
     P_TRACE,
     P_VOLUME,
-    sum_batch,
+    batch_outputs,
+    sum_range,
     sum_single,
 )
 from optbound.analytic._roots import argmin_candidates, real_roots
+from optbound.analytic._threads import run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -229,7 +231,9 @@ def minkowski_sum_batch(
         if C.shape != (*c1.shape, c1.shape[1]):
             raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
     mode, p = _mode(criterion, kappa, dims, C1, C2)
-    out_c, out_C, _, code, p_used, margin = sum_batch(c1, C1, c2, C2, mode, p)
+    out = batch_outputs(c1.shape[0], c1.shape[1])
+    run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, out)
+    out_c, out_C, _, code, p_used, margin = out
     bad = np.flatnonzero(code)
     if bad.size:
         _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)

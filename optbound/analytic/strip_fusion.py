@@ -35,7 +35,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 from scipy.special import expit
 
 from optbound.analytic import _batch
@@ -50,10 +49,12 @@ from optbound.analytic._strip_kernel import (
     MIN_REL_WIDTH,
     ROBUST,
     VOLUME,
-    fuse_batch,
-    fuse_one,
+    batch_outputs,
+    fuse_range,
+    fuse_single,
     prepare_batch,
 )
+from optbound.analytic._threads import run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -194,18 +195,6 @@ def _raise(code: int, index: int, names: tuple[str, str, str, str], batched: boo
     raise_for(code, names[0], names[1], where)
 
 
-@njit(cache=True)
-def _fuse_single(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
-    """One instance, without the thread pool's start-up cost (same ``fuse_one`` as the batch)."""
-    n = c.shape[0]
-    out_c = np.empty(n)
-    out_C = np.empty((n, n))
-    out_L = np.empty((n, n))
-    work = np.zeros((3, max(n, 3), n))
-    r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out_c, out_C, out_L, work)
-    return out_c, out_C, out_L, r
-
-
 def _lam_numpy(c, C, a, b, halfspace, clip, criterion, idx, steepness, midpoint, names, batched):
     """lambda of the criteria solved in numpy (trace, projection, robust with dims)."""
     code, _, cons, eps, Gs, ws = prepare_batch(c, C, a, b, halfspace, clip)
@@ -319,7 +308,7 @@ def intersect_strip(
             E.center[None], E.shape[None], a[None], np.array([b]), halfspace, clip,
             criterion, idx, steep, midp, _NAMES_SINGLE, False,
         )  # fmt: skip
-    c, C, L, r = _fuse_single(E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp)
+    c, C, L, r = fuse_single(E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp)
     code, case, consistency, lam_used, empty, margin = r
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)
@@ -389,9 +378,9 @@ def intersect_strip_batch(
         lams = _lam_numpy(
             c, C, a, b, halfspace, clip, criterion, idx, steep, midp, _NAMES_BATCH, True
         )
-    out_c, out_C, _, code, case, cons, lam_used, empty, margin = fuse_batch(
-        c, C, a, b, halfspace, clip, mode, lams, steep, midp
-    )
+    out = batch_outputs(n_batch, n)
+    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, steep, midp, out)
+    out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)
     if bad.size:
         _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
