@@ -23,14 +23,14 @@ operations underestimates by at most a factor (1 - U)^k, covered by ``RADIUS_SAF
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import intrinsic
 
-from optbound.sets._domain import COND_OUT, MAG, RATIO_OUT
+from optbound.sets._domain import COND_OUT, MAG, MAX_DIAG, RATIO_OUT
 
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms
 RADIUS_SAFETY = 1.0 + 1e-12
-SPLIT = 134217729.0  # 2^27 + 1, Dekker's splitter
 
 
 def gamma(k: int) -> float:
@@ -59,18 +59,22 @@ def mr_div(x, rx, y, ry):
     return z, (rx + abs(z) * ry) / (abs(y) - ry) + U * abs(z)
 
 
+@intrinsic
+def _fma(typingctx, x, y, z):
+    """``x * y + z`` with one rounding (the hardware instruction, LLVM's ``llvm.fma.f64``)."""
+    sig = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context, builder, signature, args):
+        return builder.fma(*args)
+
+    return sig, codegen
+
+
 @njit(cache=True, inline="always")
 def _two_prod(a, b):
-    """a * b = p + e exactly (Dekker; no FMA needed, exact without overflow/underflow)."""
+    """a * b = p + e exactly (no overflow/underflow): e is the fused multiply-add's residual."""
     p = a * b
-    t = SPLIT * a
-    ah = t - (t - a)
-    al = a - ah
-    t = SPLIT * b
-    bh = t - (t - b)
-    bl = b - bh
-    e = al * bl - (((p - ah * bh) - al * bh) - ah * bl)
-    return p, e
+    return p, _fma(a, b, -p)
 
 
 @njit(cache=True, inline="always")
@@ -164,31 +168,37 @@ def inflate(S, D, c, d, T, L) -> float:
     """Outward shape T (written, symmetric) containing the exact member; see the module doc.
 
     Parameters: S, D (n, n) the computed shape (lower triangle) and its radii; c, d (n,) the
-    computed centre and its radii; L is work space (Cholesky factor of S). T may be S itself.
-    A near-degenerate result is widened: lambda_min(T) is kept above ``tr(S) / COND_OUT``,
-    ``(|c|_inf / RATIO_OUT)^2`` and ``(2 / MAG)^2`` (the output domain).
+    computed centre and its radii; L is work space. T may be S itself.
+
+    A near-degenerate result is widened (never refused): lambda_min(T) is kept above twice
+    ``floor = max(tr(S) / COND_OUT, (|c|_inf / RATIO_OUT)^2, (2 / MAG)^2)``, so T lies in the
+    supported domain with a factor >= 50 to spare (``optbound.sets._domain``) and needs no
+    second validation; only its magnitude is checked here.
 
     Returns the margin ``rho + mu / lambda_min(S)`` (estimated: how much a point at level 1 of
-    S may be moved outward, relative), or -1.0 if T could not be formed (not positive
-    definite in floating point), in which case the caller falls back to a safe result.
+    S may be moved outward, relative), or -1.0 if T is too large for the domain (the caller
+    falls back to a safe result or reports it).
     """
     n = S.shape[0]
-    if not cholesky(S, L):
-        return -1.0
-    lmin = lambda_min_estimate(L)
     trace = 0.0
     cmax = 0.0
     for i in range(n):
         trace += S[i, i]
         cmax = max(cmax, abs(c[i]))
     floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
+    lmin = 0.0  # lambda_min(S) estimated; 0 if S is (numerically) singular: full widening
+    if cholesky(S, L):
+        lmin = lambda_min_estimate(L)
+        if not trace <= 1e14 * lmin:  # beyond the estimate's accuracy (~ cond U)
+            lmin = 0.0
+    lref = max(lmin, floor)
     dd = 0.0
     for i in range(n):
         dd += d[i] * d[i]
     scale = 1.0
     if dd > 0.0:
         # The guarantee uses rho = scale - 1 exactly (Sterbenz): at least one ulp above 1.
-        scale = max(1.0 + np.sqrt(dd / lmin), 1.0 + 2.0 * U)
+        scale = max(1.0 + np.sqrt(dd / lref), 1.0 + 2.0 * U)
     rho = scale - 1.0
     DF = 0.0
     SF = 0.0
@@ -203,12 +213,16 @@ def inflate(S, D, c, d, T, L) -> float:
     # Rounding of forming T: |F_ij| <= 2 U |T_ij|, and ||T||_F <= scale ||S||_F + sqrt(n) mu.
     need = scale * DF + centre + 2.0 * U * scale * SF
     mu = need * RADIUS_SAFETY / (1.0 - 2.0 * U * np.sqrt(n) * RADIUS_SAFETY) + TINY
-    mu = max(mu, floor - scale * lmin)  # widening (only ever adds to mu)
+    mu = max(mu, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
     for i in range(n):
         for j in range(i + 1):
             t = scale * S[i, j]
             if i == j:
                 t += mu
+                if not t <= MAX_DIAG:
+                    return -1.0
             T[i, j] = t
             T[j, i] = t
-    return rho + mu / lmin
+    if not cmax <= MAG:
+        return -1.0
+    return rho + mu / lref

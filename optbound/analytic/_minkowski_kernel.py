@@ -3,7 +3,7 @@
 Shared by :func:`minkowski_sum` and :func:`minkowski_sum_batch` (bitwise agreement). Steps:
 validate both summands (``check_ellipsoid``), choose p = (1 - kappa) / kappa, evaluate the
 member ``(1 + p) (C1 / p + C2)`` and the centre ``c1 + c2`` in midpoint-radius arithmetic,
-inflate by the certified margin (``_midrad.inflate``) and validate the output.
+inflate by the certified margin (``_midrad.inflate``, which keeps the output in the domain).
 
 The volume-optimal p is the root of the increasing ``h(p) = p (p + 1) tr((C1 + p C2)^{-1} C2)
 - n`` (the module docstring of :mod:`optbound.analytic.minkowski`: with the generalized
@@ -118,21 +118,23 @@ def sum_one(c1, C1, c2, C2, mode, p_in, out_c, out_C, out_L, work):
             s, rs = mr_add(q, rq, C2[i, j], 0.0)
             out_C[i, j], D[i, j] = mr_mul(onep, ronep, s, rs)
     margin = inflate(out_C, D, out_c, dc, out_C, out_L)
-    if margin < 0.0 or check_ellipsoid(out_c, out_C, out_L) != 0:
+    if margin < 0.0:
         return OUT_OF_DOMAIN, p, 0.0
     return 0, p, margin
 
 
 @njit(cache=True)
 def sum_single(c1, C1, c2, C2, mode, p_in):
-    """One instance without the thread pool's start-up cost (same ``sum_one`` as the batch)."""
+    """One instance (the same ``sum_one`` as the batch), plus the result's Cholesky factor and
+    its validation code (0 by construction, see ``_midrad.inflate``)."""
     n = c1.shape[0]
     out_c = np.empty(n)
     out_C = np.empty((n, n))
     out_L = np.empty((n, n))
     work = np.zeros((6, max(n, 1), n))
     r = sum_one(c1, C1, c2, C2, mode, p_in, out_c, out_C, out_L, work)
-    return out_c, out_C, out_L, r
+    valid = check_ellipsoid(out_c, out_C, out_L)
+    return out_c, out_C, out_L, valid, r
 
 
 @njit(cache=True, nogil=True)

@@ -12,7 +12,7 @@ so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centr
 4. choose lambda (volume root [HS96, eq. (26)], robust [HS96, eq. (30)], or given);
 5. evaluate the member [HS96, eq. (24)] in midpoint-radius arithmetic and inflate it by the
    certified margin of ``_midrad.inflate`` (widened to the output domain if needed);
-6. validate the output (``check_ellipsoid``); any failure falls back to E itself (lambda = 0),
+6. any failure (K not provably positive, output too large) falls back to E itself (lambda = 0),
    which always contains E ∩ S.
 """
 
@@ -221,8 +221,6 @@ def member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, L, D, dc
             ) + 4.0 * U * (abs(ql) + abs(sl)) + U * abs(c0)  # fmt: skip
             out_C[i, j], D[i, j] = mr_mul(K, rK, c0, err)
     margin = inflate(out_C, D, out_c, dc, out_C, L)
-    if margin < 0.0 or check_ellipsoid(out_c, out_C, L) != 0:
-        return -1.0
     return margin
 
 
@@ -278,14 +276,16 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_
 
 @njit(cache=True)
 def fuse_single(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
-    """One instance, without slicing (the same ``fuse_one`` as the batch)."""
+    """One instance, without slicing (the same ``fuse_one`` as the batch), plus the result's
+    Cholesky factor and its validation code (0 by construction, see ``_midrad.inflate``)."""
     n = c.shape[0]
     out_c = np.empty(n)
     out_C = np.empty((n, n))
     out_L = np.empty((n, n))
     work = np.zeros((3, max(n, 4), n))
     r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out_c, out_C, out_L, work)
-    return out_c, out_C, out_L, r
+    valid = check_ellipsoid(out_c, out_C, out_L)
+    return out_c, out_C, out_L, valid, r
 
 
 @njit(cache=True, nogil=True)

@@ -192,12 +192,14 @@ def minkowski_sum(
     if E1.dim != E2.dim:
         raise ValueError(f"E1 and E2 must have the same dimension, got {E1.dim} and {E2.dim}")
     mode, p = _mode(criterion, kappa, dims, E1.shape[None], E2.shape[None])
-    c, C, L, (code, p_used, margin) = sum_single(
+    c, C, L, valid, (code, p_used, margin) = sum_single(
         E1.center, E1.shape, E2.center, E2.shape, mode, p[0]
     )
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)
-    return MinkowskiResult(Ellipsoid._trusted(c, C, L), 1.0 / (1.0 + p_used), margin)
+    # Validated in the kernel; the full constructor only if that ever failed.
+    E = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
+    return MinkowskiResult(E, 1.0 / (1.0 + p_used), margin)
 
 
 def minkowski_sum_batch(

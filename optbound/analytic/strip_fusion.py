@@ -308,7 +308,9 @@ def intersect_strip(
             E.center[None], E.shape[None], a[None], np.array([b]), halfspace, clip,
             criterion, idx, steep, midp, _NAMES_SINGLE, False,
         )  # fmt: skip
-    c, C, L, r = fuse_single(E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp)
+    c, C, L, valid, r = fuse_single(
+        E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp
+    )
     code, case, consistency, lam_used, empty, margin = r
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)
@@ -316,8 +318,8 @@ def intersect_strip(
         ellipsoid = None
     elif lam_used == 0.0:
         ellipsoid = E
-    else:
-        ellipsoid = Ellipsoid._trusted(c, C, L)
+    else:  # validated in the kernel; the full constructor only if that ever failed
+        ellipsoid = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
     return StripFusion(ellipsoid, float(lam_used), CASES[case], float(consistency), float(margin))
 
 
