@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._midrad import cholesky
 from optbound.analytic._minkowski_kernel import p_volume
 from optbound.analytic._strip_kernel import lam_volume
+from optbound.sets._domain import cholesky
 
 
 @njit(cache=True, nogil=True)

@@ -26,7 +26,7 @@ import numpy as np
 from numba import njit, types
 from numba.extending import intrinsic
 
-from optbound.sets._domain import COND_OUT, MAG, MAX_DIAG, RATIO_OUT
+from optbound.sets._domain import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
 
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms
@@ -121,28 +121,6 @@ def up(x):
 
 
 @njit(cache=True)
-def cholesky(A, L) -> bool:
-    """Float Cholesky of the lower triangle of A into L; False if a pivot is not positive."""
-    n = A.shape[0]
-    for j in range(n):
-        d = A[j, j]
-        for k in range(j):
-            d -= L[j, k] * L[j, k]
-        if not d > 0.0:
-            return False
-        ljj = np.sqrt(d)
-        L[j, j] = ljj
-        for i in range(j + 1, n):
-            s = A[i, j]
-            for k in range(j):
-                s -= L[i, k] * L[j, k]
-            L[i, j] = s / ljj
-        for i in range(j):
-            L[i, j] = 0.0
-    return True
-
-
-@njit(cache=True)
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
 
@@ -187,7 +165,7 @@ def inflate(S, D, c, d, T, L) -> float:
         cmax = max(cmax, abs(c[i]))
     floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
     lmin = 0.0  # lambda_min(S) estimated; 0 if S is (numerically) singular: full widening
-    if cholesky(S, L):
+    if cholesky(S, L) > 0.0:
         lmin = lambda_min_estimate(L)
         if not trace <= 1e14 * lmin:  # beyond the estimate's accuracy (~ cond U)
             lmin = 0.0

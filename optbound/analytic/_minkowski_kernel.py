@@ -17,8 +17,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._midrad import U, cholesky, inflate, mr_add, mr_div, mr_mul
-from optbound.sets._domain import check_ellipsoid
+from optbound.analytic._midrad import U, inflate, mr_add, mr_div, mr_mul
+from optbound.sets._domain import check_ellipsoid, cholesky
 
 P_VOLUME, P_TRACE, P_GIVEN = range(3)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -33,7 +33,7 @@ def _h(C1, C2, p, A, L, X):
     for i in range(n):
         for j in range(i + 1):
             A[i, j] = C1[i, j] + p * C2[i, j]
-    if not cholesky(A, L):
+    if not cholesky(A, L) > 0.0:
         return np.nan, np.nan
     for col in range(n):  # X[:, col] = L^{-T} L^{-1} C2[:, col]
         for i in range(n):
@@ -147,15 +147,3 @@ def sum_range(c1, C1, c2, C2, mode, p_in, out, start, stop):
     for i in range(start, stop):
         r = sum_one(c1[i], C1[i], c2[i], C2[i], mode, p_in[i], out_c[i], out_C[i], out_L[i], work)
         code[i], p[i], margin[i] = r
-
-
-def batch_outputs(B: int, n: int) -> tuple:
-    """Output arrays of ``sum_range``."""
-    return (
-        np.empty((B, n)),
-        np.empty((B, n, n)),
-        np.empty((B, n, n)),
-        np.zeros(B, np.int8),
-        np.zeros(B),
-        np.zeros(B),
-    )

@@ -303,21 +303,6 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out, start, 
         code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
 
 
-def batch_outputs(B: int, n: int) -> tuple:
-    """Output arrays of ``fuse_range``."""
-    return (
-        np.empty((B, n)),
-        np.empty((B, n, n)),
-        np.empty((B, n, n)),
-        np.zeros(B, np.int8),
-        np.zeros(B, np.int8),
-        np.zeros(B),
-        np.zeros(B),
-        np.zeros(B, np.bool_),
-        np.zeros(B),
-    )
-
-
 @njit(cache=True)
 def prepare_batch(c, C, a, b, halfspace, clip):
     """Steps 1-3 over B instances, for the criteria whose lambda is chosen in numpy: the

@@ -27,12 +27,11 @@ from optbound.analytic._minkowski_kernel import (
     P_GIVEN,
     P_TRACE,
     P_VOLUME,
-    batch_outputs,
     sum_range,
     sum_single,
 )
 from optbound.analytic._roots import argmin_candidates, real_roots
-from optbound.analytic._threads import run_sliced
+from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -233,7 +232,7 @@ def minkowski_sum_batch(
         if C.shape != (*c1.shape, c1.shape[1]):
             raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
     mode, p = _mode(criterion, kappa, dims, C1, C2)
-    out = batch_outputs(c1.shape[0], c1.shape[1])
+    out = ellipsoid_outputs(c1.shape[0], c1.shape[1], np.int8, float, float)
     run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, out)
     out_c, out_C, _, code, p_used, margin = out
     bad = np.flatnonzero(code)

@@ -49,12 +49,11 @@ from optbound.analytic._strip_kernel import (
     MIN_REL_WIDTH,
     ROBUST,
     VOLUME,
-    batch_outputs,
     fuse_range,
     fuse_single,
     prepare_batch,
 )
-from optbound.analytic._threads import run_sliced
+from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -380,7 +379,7 @@ def intersect_strip_batch(
         lams = _lam_numpy(
             c, C, a, b, halfspace, clip, criterion, idx, steep, midp, _NAMES_BATCH, True
         )
-    out = batch_outputs(n_batch, n)
+    out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
     run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, steep, midp, out)
     out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)

@@ -49,6 +49,31 @@ MESSAGES = {
 }
 
 
+@njit(cache=True)
+def cholesky(A, L) -> float:
+    """Float Cholesky of the lower triangle of A into L (upper part zeroed); returns the
+    smallest pivot, or 0.0 as soon as a pivot is not positive."""
+    n = A.shape[0]
+    min_pivot = np.inf
+    for j in range(n):
+        d = A[j, j]
+        for k in range(j):
+            d -= L[j, k] * L[j, k]
+        if not d > 0.0:
+            return 0.0
+        min_pivot = min(min_pivot, d)
+        ljj = np.sqrt(d)
+        L[j, j] = ljj
+        for i in range(j + 1, n):
+            s = A[i, j]
+            for k in range(j):
+                s -= L[i, k] * L[j, k]
+            L[i, j] = s / ljj
+        for i in range(j):
+            L[i, j] = 0.0
+    return min_pivot
+
+
 @njit(cache=True, nogil=True)
 def check_ellipsoid(c, C, L) -> int:
     """Validate centre ``c`` (n,) and shape ``C`` (n, n); write its Cholesky factor into ``L``.
@@ -69,25 +94,12 @@ def check_ellipsoid(c, C, L) -> int:
         for j in range(i):
             if abs(C[i, j] - C[j, i]) > SYMMETRY_RTOL * big:
                 return ASYMMETRIC
+    min_pivot = cholesky(C, L)
+    if not min_pivot > 0.0:
+        return NOT_PD
     max_diag = 0.0
-    min_pivot = np.inf
     for j in range(n):
-        d = C[j, j]
-        for k in range(j):
-            d -= L[j, k] * L[j, k]
-        if not d > 0.0:
-            return NOT_PD
-        min_pivot = min(min_pivot, d)
         max_diag = max(max_diag, C[j, j])
-        ljj = np.sqrt(d)
-        L[j, j] = ljj
-        for i in range(j + 1, n):
-            s = C[i, j]
-            for k in range(j):
-                s -= L[i, k] * L[j, k]
-            L[i, j] = s / ljj
-        for i in range(j):
-            L[i, j] = 0.0
     if max_diag > COND_MAX * min_pivot:
         return ILL_CONDITIONED
     if max_diag > MAX_DIAG or min_pivot < MIN_PIVOT:

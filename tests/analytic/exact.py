@@ -170,6 +170,18 @@ def strip_points(center, shape, a, b, rng, count: int = 40, halfspace: bool = Fa
     return pts
 
 
+def disjoint(center, shape, a, b, halfspace: bool = False) -> bool:
+    """E ∩ S = {} exactly: E's exact extent along a misses ``|a^T x - b| <= 1`` (or a^T x <= b)."""
+    with mp.workdps(DPS):
+        av, c, C = _vec(a), _vec(center), _mat(shape)
+        g = mp.sqrt((av.T * C * av)[0])
+        ac = (av.T * c)[0]
+        bb = mp.mpf(float(b))
+        if halfspace:
+            return bb < ac - g
+        return bb - 1 > ac + g or bb + 1 < ac - g
+
+
 def max_level(center, shape, points) -> mp.mpf:
     """Largest ``(x - c)^T C^{-1} (x - c)`` over the points, with c, C read exactly."""
     with mp.workdps(DPS):
