@@ -13,7 +13,8 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 MIN_SLICE = 8192  # below this, one thread (start-up costs more than it saves)
-_POOL: ThreadPoolExecutor | None = None
+_POOL: tuple[int, ThreadPoolExecutor] | None = None  # (owner pid, pool): a forked child
+# inherits the pool object but not its threads, so it makes its own.
 
 
 def run_sliced(kernel, n_batch: int, *args) -> None:
@@ -23,10 +24,14 @@ def run_sliced(kernel, n_batch: int, *args) -> None:
     if workers == 1:
         kernel(*args, 0, n_batch)
         return
-    if _POOL is None:
-        _POOL = ThreadPoolExecutor(os.cpu_count() or 1, thread_name_prefix="optbound")
+    if _POOL is None or _POOL[0] != os.getpid():
+        _POOL = (
+            os.getpid(),
+            ThreadPoolExecutor(os.cpu_count() or 1, thread_name_prefix="optbound"),
+        )
+    pool = _POOL[1]
     bounds = np.linspace(0, n_batch, workers + 1).astype(int)
-    jobs = [_POOL.submit(kernel, *args, bounds[k], bounds[k + 1]) for k in range(workers)]
+    jobs = [pool.submit(kernel, *args, bounds[k], bounds[k + 1]) for k in range(workers)]
     for job in jobs:
         job.result()
 
