@@ -116,59 +116,52 @@ def _one_call_records(what: str, ours: float, ref: float) -> list[dict]:
     ]  # fmt: skip
 
 
+def _timings(one, ours, reference_range, inputs, batches) -> dict:
+    """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
+    batch size, ``ours(*inputs[:count])`` against ``reference_range`` on the same slices."""
+    from optbound.analytic._threads import run_sliced
+
+    out = {"one": alternating_calls(*one)}
+    for count in batches:
+        args = tuple(x[:count] for x in inputs)
+        oc, oC = np.empty((count, DIM)), np.empty((count, DIM, DIM))
+        out[count] = alternating(
+            lambda args=args: ours(*args),
+            lambda args=args, oc=oc, oC=oC, k=count: run_sliced(reference_range, k, *args, oc, oC),
+        )
+    return out
+
+
 def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
-    from optbound.analytic._threads import run_sliced
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
-    out = {
-        "one": alternating_calls(
-            lambda: analytic.intersect_strip(E, S),
-            lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
-        )
-    }
-    for count in batches:
-        cc, CC, aa, bb = c[:count], C[:count], a[:count], b[:count]
-        oc, oC = np.empty((count, DIM)), np.empty((count, DIM, DIM))
-        out[count] = alternating(
-            lambda cc=cc, CC=CC, aa=aa, bb=bb: analytic.intersect_strip_batch(cc, CC, aa, bb),
-            lambda cc=cc, CC=CC, aa=aa, bb=bb, oc=oc, oC=oC: run_sliced(
-                ref.strip_range, len(cc), cc, CC, aa, bb, oc, oC
-            ),
-        )
-    return out
+    one = (
+        lambda: analytic.intersect_strip(E, S),
+        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
+    )
+    return _timings(one, analytic.intersect_strip_batch, ref.strip_range, (c, C, a, b), batches)
 
 
 def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
-    from optbound.analytic._threads import run_sliced
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
     E1, E2 = Ellipsoid(c1[0], C1[0]), Ellipsoid(c2[0], C2[0])
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
-    out = {
-        "one": alternating_calls(
-            lambda: analytic.minkowski_sum(E1, E2),
-            lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
-        )
-    }
-    for count in batches:
-        args = (c1[:count], C1[:count], c2[:count], C2[:count])
-        oc, oC = np.empty((count, DIM)), np.empty((count, DIM, DIM))
-        out[count] = alternating(
-            lambda args=args: analytic.minkowski_sum_batch(*args),
-            lambda args=args, oc=oc, oC=oC: run_sliced(
-                ref.minkowski_range, len(args[0]), *args, oc, oC
-            ),
-        )
-    return out
+    one = (
+        lambda: analytic.minkowski_sum(E1, E2),
+        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
+    )
+    inputs = (c1, C1, c2, C2)
+    return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_range, inputs, batches)
 
 
 def run_strip(task: dict) -> list[dict]:
