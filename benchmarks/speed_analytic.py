@@ -1,11 +1,29 @@
-"""Speed of the analytic updates: one call, a vectorised batch, and the SDP that they replace.
+"""Speed of the analytic updates against a plain numba kernel of the same formula, and vs SDP.
 
-Every ratio is taken between two timings of the same run on the same machine:
-batch speed-up = (seconds per single call) / (seconds per update inside a batch), and
-SDP cost = (seconds per SDP solve) / (seconds per analytic call).
+Every ratio is taken between two timings of the same run on the same machine, measured
+alternately (ours, reference, ours, ...) and summarized by their medians, so that the load of
+a shared machine hits both alike:
+
+- batch: seconds per update of ``intersect_strip_batch`` / ``minkowski_sum_batch`` (3-D,
+  volume criterion, including validation and the certified margin) over seconds per update of
+  the plain kernels of ``benchmarks.analytic_reference`` (same formula, same threads, no
+  validation, no margin), B = 1e3 ... 1e6;
+- one call: ``intersect_strip(E, S)`` / ``minkowski_sum(E1, E2)`` end to end (including the
+  result's Ellipsoid) over one call of the reference kernel;
+- SDP cost: one SDP solve over one analytic call.
+
+``python -m benchmarks.speed_analytic [--suite quick]`` prints the ratio table, the JIT
+warm-up (a fresh compile in a subprocess with an empty cache) and the margin distribution.
 """
 
 from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
 
 import numpy as np
 
@@ -15,31 +33,135 @@ from benchmarks.timing import per_call, speed_record
 
 NAME = "speed_analytic"
 DIM = 3
-BATCHES = {"tiny": (10**3,), "quick": (10**4, 10**5), "full": (10**4, 10**5, 10**6)}
+BATCHES = {
+    "tiny": (10**3,),
+    "quick": (10**3, 10**4, 10**5),
+    "full": (10**3, 10**4, 10**5, 10**6),
+}
+REPEATS = 7
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
     s1, s2 = task_seeds(seed, NAME, 2)
     return [
         {"seed": s1, "what": "strip", "batches": list(BATCHES[suite])},
-        {"seed": s2, "what": "minkowski"},
+        {"seed": s2, "what": "minkowski", "batches": list(BATCHES[suite])},
     ]
 
 
-def batch_instances(rng: np.random.Generator, count: int, dim: int):
+def batch_instances(rng: np.random.Generator, count: int, dim: int, cond: float | None = None):
     """``count`` random ellipsoids (centres, shapes) and one strip normal/offset per ellipsoid.
 
-    Shapes are ``A A^T + 0.1 I`` for Gaussian A; each strip passes near its ellipsoid's centre
-    so that most updates are genuine reductions, not the trivial "no reduction" case.
+    Shapes are ``A A^T + 0.1 I`` for Gaussian A (or, with ``cond``, random rotations of
+    eigenvalues log-spaced over ``cond``); each strip passes near its ellipsoid's centre so
+    that most updates are genuine reductions, not the trivial "no reduction" case.
     """
-    A = rng.standard_normal((count, dim, dim))
-    shapes = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(dim)
+    if cond is None:
+        A = rng.standard_normal((count, dim, dim))
+        shapes = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(dim)
+    else:
+        q, r = np.linalg.qr(rng.standard_normal((count, dim, dim)))
+        q = q * np.sign(np.diagonal(r, axis1=1, axis2=2))[:, None, :]
+        eig = np.logspace(0.0, -np.log10(cond), dim)
+        shapes = (q * eig) @ q.transpose(0, 2, 1)
+    shapes = 0.5 * (shapes + shapes.transpose(0, 2, 1))
     centers = rng.standard_normal((count, dim))
     a = rng.standard_normal((count, dim))
     half = np.sqrt(np.einsum("bi,bij,bj->b", a, shapes, a))
     b = np.einsum("bi,bi->b", a, centers) + rng.uniform(-0.5, 0.5, count) * half
     scale = 2.0 / (rng.uniform(0.2, 1.0, count) * half)  # strip width 20-100 % of the extent
     return centers, shapes, a * scale[:, None], b * scale
+
+
+def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
+    t_ours, t_ref = [], []
+    for _ in range(repeat):
+        for fn, out in ((ours, t_ours), (reference, t_ref)):
+            start = time.perf_counter()
+            fn()
+            out.append(time.perf_counter() - start)
+    return float(np.median(t_ours)), float(np.median(t_ref))
+
+
+def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """As :func:`alternating` for microsecond calls: each sample is a mean over a loop."""
+    number = 1
+    while per_call(ours, repeat=1, min_time=0.0) * number < 0.02:
+        number *= 2
+
+    def looped(fn):
+        return lambda: [fn() for _ in range(number)]
+
+    t_ours, t_ref = alternating(looped(ours), looped(reference), repeat)
+    return t_ours / number, t_ref / number
+
+
+def _ratio_records(what: str, count: int, ours: float, ref: float) -> list[dict]:
+    label = f"{what}, batch of {count:.0e} ({DIM}-D, volume)"
+    return [
+        speed_record(NAME, f"{label}, reference kernel", ref / count, unit="s/update",
+                     throughput=count / ref),
+        speed_record(NAME, f"{label}, optbound", ours / count, unit="s/update",
+                     throughput=count / ours, ratio=ours / ref,
+                     ratio_label="time / plain numba reference"),
+    ]  # fmt: skip
+
+
+def _one_call_records(what: str, ours: float, ref: float) -> list[dict]:
+    return [
+        speed_record(NAME, f"{what}, one call, reference kernel ({DIM}-D, volume)", ref),
+        speed_record(NAME, f"{what}, one call, optbound ({DIM}-D, volume)", ours,
+                     ratio=ours / ref, ratio_label="time / plain numba reference"),
+    ]  # fmt: skip
+
+
+def _timings(one, ours, reference_range, inputs, batches) -> dict:
+    """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
+    batch size, ``ours(*inputs[:count])`` against ``reference_range`` on the same slices."""
+    from optbound.analytic._threads import run_sliced
+
+    out = {"one": alternating_calls(*one)}
+    for count in batches:
+        args = tuple(x[:count] for x in inputs)
+        oc, oC = np.empty((count, DIM)), np.empty((count, DIM, DIM))
+        out[count] = alternating(
+            lambda args=args: ours(*args),
+            lambda args=args, oc=oc, oC=oC, k=count: run_sliced(reference_range, k, *args, oc, oC),
+        )
+    return out
+
+
+def strip_timings(rng: np.random.Generator, batches) -> dict:
+    """Seconds (median) of ours and of the reference: one call and each batch size."""
+    from benchmarks import analytic_reference as ref
+    from optbound import Ellipsoid, Strip, analytic
+
+    c, C, a, b = batch_instances(rng, max(batches), DIM)
+    E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
+    oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
+    one = (
+        lambda: analytic.intersect_strip(E, S),
+        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
+    )
+    return _timings(one, analytic.intersect_strip_batch, ref.strip_range, (c, C, a, b), batches)
+
+
+def minkowski_timings(rng: np.random.Generator, batches) -> dict:
+    """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
+    from benchmarks import analytic_reference as ref
+    from optbound import Ellipsoid, analytic
+
+    c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
+    c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
+    E1, E2 = Ellipsoid(c1[0], C1[0]), Ellipsoid(c2[0], C2[0])
+    oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
+    one = (
+        lambda: analytic.minkowski_sum(E1, E2),
+        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
+    )
+    inputs = (c1, C1, c2, C2)
+    return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_range, inputs, batches)
 
 
 def run_strip(task: dict) -> list[dict]:
@@ -53,26 +175,10 @@ def run_strip(task: dict) -> list[dict]:
         lambda: optimal.outer_ellipsoid(intersection=[E, S], objective="volume"), repeat=3
     )
     out = one_vs_sdp("strip update, one call", one, "SDP outer_ellipsoid, one solve", sdp)
-    for count in task["batches"]:
-        centers, shapes, a, b = batch_instances(rng, count, DIM)
-        total = per_call(
-            lambda c=centers, q=shapes, a=a, b=b: analytic.intersect_strip_batch(
-                c, q, a, b, criterion="volume"
-            ),
-            repeat=3,
-            min_time=0.0,
-        )
-        out.append(
-            speed_record(
-                NAME,
-                f"strip updates, batch of {count:.0e} ({DIM}-D, volume)",
-                total / count,
-                unit="s/update",
-                throughput=count / total,
-                ratio=one / (total / count),
-                ratio_label="speed-up vs one call",
-            )
-        )
+    timings = strip_timings(rng, task["batches"])
+    out += _one_call_records("strip update", *timings.pop("one"))
+    for count, (ours, ref) in timings.items():
+        out += _ratio_records("strip updates", count, ours, ref)
     return out
 
 
@@ -83,7 +189,12 @@ def run_minkowski(task: dict) -> list[dict]:
     E1, E2 = random_ellipsoid(rng, DIM, 1e2), random_ellipsoid(rng, DIM, 1e2, scale=0.1)
     one = per_call(lambda: analytic.minkowski_sum(E1, E2, criterion="volume"))
     sdp = per_call(lambda: optimal.minkowski_outer(E1, E2, objective="volume"), repeat=3)
-    return one_vs_sdp("Minkowski sum, one call", one, "SDP minkowski_outer, one solve", sdp)
+    out = one_vs_sdp("Minkowski sum, one call", one, "SDP minkowski_outer, one solve", sdp)
+    timings = minkowski_timings(rng, task["batches"])
+    out += _one_call_records("Minkowski sum", *timings.pop("one"))
+    for count, (ours, ref) in timings.items():
+        out += _ratio_records("Minkowski sums", count, ours, ref)
+    return out
 
 
 def one_vs_sdp(analytic: str, one: float, solver: str, sdp: float) -> list[dict]:
@@ -105,14 +216,84 @@ def run(task: dict) -> dict:
     return {"records": runner(task)}
 
 
+def margin_distribution(seed: int = 0, count: int = 10**4) -> list[tuple]:
+    """Certified margins (relative inflation, see ``optbound.analytic._midrad``) over random
+    3-D instances per condition number: (operation, cond, median, 99th percentile, max)."""
+    from optbound import analytic
+
+    rng = np.random.default_rng(seed)
+    rows = []
+    for cond in (1.0, 1e2, 1e4, 1e6, 1e8, 1e10):
+        c, C, a, b = batch_instances(rng, count, DIM, cond)
+        out = analytic.intersect_strip_batch(c, C, a, b)
+        m = out.margin[out.lam > 0]
+        rows.append(("strip", cond, *np.quantile(m, [0.5, 0.99, 1.0])))
+        c2, C2, _, _ = batch_instances(rng, count, DIM, cond)
+        m = analytic.minkowski_sum_batch(c, C, c2, C2).margin
+        rows.append(("minkowski", cond, *np.quantile(m, [0.5, 0.99, 1.0])))
+    return rows
+
+
+def jit_warmup() -> float:
+    """Seconds of the first strip and Minkowski calls in a fresh process with an empty numba
+    cache (a full compile), minus the same process's import time."""
+    code = (
+        "import time, numpy as np; t0 = time.perf_counter(); "
+        "from optbound import Ellipsoid, Strip, analytic; t1 = time.perf_counter(); "
+        "E = Ellipsoid(np.zeros(3), np.eye(3)); "
+        "analytic.intersect_strip(E, Strip([1.0, 0, 0], 0.5), lam=0.5); "
+        "analytic.intersect_strip_batch(np.zeros((1, 3)), np.eye(3)[None], [1.0, 0, 0], 0.5); "
+        "analytic.minkowski_sum(E, E); "
+        "analytic.minkowski_sum_batch(np.zeros((1, 3)), np.eye(3)[None], np.zeros((1, 3)), "
+        "np.eye(3)[None]); print(time.perf_counter() - t1)"
+    )
+    with tempfile.TemporaryDirectory() as cache:
+        env = {**os.environ, "NUMBA_CACHE_DIR": cache}
+        res = subprocess.run(
+            [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+        )
+    return float(res.stdout.strip().splitlines()[-1])
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--suite", choices=tuple(BATCHES), default="full")
+    parser.add_argument("--seed", type=int, default=0)
+    args = parser.parse_args(argv)
+    rng = np.random.default_rng(args.seed)
+    batches = BATCHES[args.suite]
+    print(f"JIT warm-up (fresh compile, empty cache): {jit_warmup():.1f} s\n")
+    for what, timings in (
+        ("strip (intersect_strip)", strip_timings(rng, batches)),
+        ("Minkowski (minkowski_sum)", minkowski_timings(rng, batches)),
+    ):
+        print(f"{what}, {DIM}-D, volume; medians of {REPEATS} alternating runs")
+        print("| B | optbound | numba reference | time ratio |")
+        print("|---|---|---|---|")
+        ours, ref = timings.pop("one")
+        print(f"| one call | {ours * 1e6:.1f} µs | {ref * 1e6:.1f} µs | {ours / ref:.2f} |")
+        for count, (ours, ref) in timings.items():
+            print(
+                f"| {count:.0e} | {count / ours / 1e6:.2f} M/s | {count / ref / 1e6:.2f} M/s "
+                f"| {ours / ref:.2f} |"
+            )
+        print()
+    print("certified margin (relative inflation), random 3-D instances, 1e4 per row")
+    print("| operation | cond | median | 99 % | max |")
+    print("|---|---|---|---|---|")
+    for op, cond, med, p99, top in margin_distribution(args.seed):
+        print(f"| {op} | {cond:.0e} | {med:.1e} | {p99:.1e} | {top:.1e} |")
+
+
 FAMILY = Family(
     name=NAME,
-    title="Speed: analytic updates (latency, batch throughput) vs SDP",
+    title="Speed: analytic updates (latency, batch throughput) vs a plain numba kernel and SDP",
     kind="speed",
     requires=(
         "optbound.analytic:intersect_strip",
         "optbound.analytic:intersect_strip_batch",
         "optbound.analytic:minkowski_sum",
+        "optbound.analytic:minkowski_sum_batch",
         "optbound.optimal:outer_ellipsoid",
         "optbound.optimal:minkowski_outer",
     ),
@@ -120,3 +301,6 @@ FAMILY = Family(
     run=run,
     parallel=False,
 )
+
+if __name__ == "__main__":
+    main()

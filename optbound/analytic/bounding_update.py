@@ -24,10 +24,12 @@ strip family [HS96, eq. (24)].
 from __future__ import annotations
 
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 from scipy.optimize import brentq
 
+from optbound.analytic._exact import enclose, matmul, rational, solve, transpose
 from optbound.sets import _validate as v
 from optbound.sets.ellipsoid import Ellipsoid
 
@@ -43,11 +45,13 @@ class BoundingUpdate:
     """Result of :func:`bounding_update`.
 
     ``ellipsoid`` is the outer bound (None if the feasible set is empty); ``lam`` the lambda
-    used, or for an empty result the lambda whose s(lambda) < 0 certifies emptiness.
+    used, or for an empty result the lambda whose s(lambda) < 0 certifies emptiness;
+    ``margin`` the certified relative inflation of the float member (0 for E itself).
     """
 
     ellipsoid: Ellipsoid | None
     lam: float
+    margin: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -136,16 +140,21 @@ def bounding_update(
     Returns
     -------
     BoundingUpdate
-        ``ellipsoid`` is None when the feasible set is certified empty (s(lambda) < 0 for some
-        lambda). If s(lambda) is zero up to rounding somewhere (the set is at most one point),
-        or an explicit lambda gives s <= 0 without certifying emptiness, lambda = 0 is used:
-        E itself, always a valid outer bound.
+        Guarantee: ``ellipsoid``, its floats read as exact numbers, contains the feasible set
+        exactly. The member at the chosen (float) lambda is evaluated in exact rational
+        arithmetic, rounded, and inflated by the certified margin of
+        ``optbound.analytic._midrad``. ``ellipsoid`` is None only when the feasible set is
+        proven empty (s(lambda) < 0 exactly for some lambda). If s(lambda) = 0 (the set is at
+        most one point) or the member leaves the supported domain, lambda = 0 is used: E
+        itself, always a valid outer bound.
 
     Raises
     ------
     ValueError
         Non-finite or mismatched inputs, V not SPD, unknown criterion, negative lambda.
     """
+    if not isinstance(E, Ellipsoid):
+        raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
     n = E.dim
@@ -167,15 +176,42 @@ def bounding_update(
     f = _Scalarized(n, mu, (U.T @ rw) ** 2, np.sum(CHtU**2, axis=0), float(np.trace(E.shape)))
 
     s_min_lam = _minimize(f.s, lambda x: f.slope(x, "s"))
-    if f.s(s_min_lam) < -S_TOL:
-        return BoundingUpdate(None, s_min_lam)  # lambda certifying emptiness
+    if _member(E, H, z, V, s_min_lam)[2] < 0:
+        return BoundingUpdate(None, s_min_lam)  # s(lambda) < 0 exactly: proven empty
     if lam is None:
         lam = _minimize(lambda x: f.size(x, criterion), lambda x: f.slope(x, criterion))
-    if not f.s(lam) > S_TOL:
-        lam = 0.0
+    if lam == 0.0:
+        return BoundingUpdate(E, 0.0)
+    centre, shape, s = _member(E, H, z, V, lam)
+    if s < 0:
+        return BoundingUpdate(None, lam)
+    if s > 0:
+        out, margin = enclose(centre, [[s * x for x in row] for row in shape])
+        if out is not None:
+            return BoundingUpdate(out, float(lam), margin)
+    return BoundingUpdate(E, 0.0)  # a single point, or outside the domain: E itself
 
-    # Assemble the ellipsoid in the eigenbasis: S^{-1} = R^{-T} U diag(1/(1+lam mu)) U^T R^{-1}.
-    d = lam / (1 + lam * mu)
-    centre = E.center + CHtU @ (d * (U.T @ rw))
-    shape = f.s(lam) * (E.shape - (CHtU * d) @ CHtU.T)
-    return BoundingUpdate(Ellipsoid(centre, 0.5 * (shape + shape.T)), float(lam))
+
+def _member(E: Ellipsoid, H, z, V, lam: float):
+    """The member [BH, eq. (7)] at ``lam`` in exact rational arithmetic: (centre, P, s)."""
+    lf = Fraction(float(lam))
+    C, c = rational(E.shape), rational(E.center)
+    Hq = rational(H)
+    r = [[zi[0] - hc[0]] for zi, hc in zip(rational(z), matmul(Hq, c), strict=True)]
+    HC = matmul(Hq, C)
+    HCHt = matmul(HC, transpose(Hq))
+    S = [
+        [v + lf * w for v, w in zip(rv, rw, strict=True)]
+        for rv, rw in zip(rational(V), HCHt, strict=True)
+    ]
+    X = solve(S, [row_hc + row_r for row_hc, row_r in zip(HC, r, strict=True)])
+    Sinv_HC = [row[:-1] for row in X]
+    Sinv_r = [[row[-1]] for row in X]
+    s = 1 + lf - lf * matmul(transpose(r), Sinv_r)[0][0]
+    gain = transpose(HC)
+    centre = [[ci[0] + lf * g[0]] for ci, g in zip(c, matmul(gain, Sinv_r), strict=True)]
+    P = [
+        [x - lf * y for x, y in zip(rc, rg, strict=True)]
+        for rc, rg in zip(C, matmul(gain, Sinv_HC), strict=True)
+    ]
+    return centre, P, s

@@ -21,13 +21,23 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.analytic import _batch
+from optbound.analytic._minkowski_kernel import (
+    BAD_KAPPA,
+    OUT_OF_DOMAIN,
+    P_GIVEN,
+    P_TRACE,
+    P_VOLUME,
+    sum_range,
+    sum_single,
+)
 from optbound.analytic._roots import argmin_candidates, real_roots
+from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
+from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 
 CRITERIA = ("volume", "trace", "size_xy_psi")
 DEFAULT_XY_PSI = ((0, 1), (2,))
-NEWTON_MAX_STEPS = 100
 
 
 @dataclass(frozen=True)
@@ -40,15 +50,17 @@ class MinkowskiResult:
 
     ellipsoid: Ellipsoid
     kappa: float
+    margin: float = 0.0
 
 
 @dataclass(frozen=True)
 class MinkowskiBatch:
-    """Batched result: ``centers`` (B, n), ``shapes`` (B, n, n), ``kappa`` (B,)."""
+    """Batched result: ``centers`` (B, n), ``shapes`` (B, n, n), ``kappa`` (B,), ``margin`` (B,)."""
 
     centers: np.ndarray
     shapes: np.ndarray
     kappa: np.ndarray
+    margin: np.ndarray | None = None
 
 
 def _xy_psi_dims(dims, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -67,33 +79,6 @@ def _xy_psi_dims(dims, n: int) -> tuple[np.ndarray, np.ndarray]:
     if set(planar.tolist()) & set(heading.tolist()):
         raise ValueError(f"planar and heading coordinates must be disjoint, got {dims}")
     return planar, heading
-
-
-def _p_volume(C1: np.ndarray, C2: np.ndarray) -> np.ndarray:
-    """Exact min-volume p = (1 - kappa) / kappa: the root of the monotone h(p) (module doc)."""
-    n = C1.shape[-1]
-    L2 = np.linalg.cholesky(C2)
-    X = np.linalg.solve(L2, C1)
-    M = np.linalg.solve(L2, X.transpose(0, 2, 1))  # L2^-1 C1 L2^-T: same spectrum as C2^-1 C1
-    lam = np.linalg.eigvalsh(0.5 * (M + M.transpose(0, 2, 1)))
-    lam = np.maximum(lam, np.finfo(float).tiny)
-    lo, hi = np.sqrt(lam[:, 0]), np.sqrt(lam[:, -1])
-    p = np.sqrt(lo * hi)
-    for _ in range(NEWTON_MAX_STEPS):
-        pc = p[:, None]
-        h = np.sum(pc * (pc + 1.0) / (lam + pc), axis=1) - n
-        dh = np.sum((pc * pc + 2.0 * pc * lam + lam) / (lam + pc) ** 2, axis=1)
-        lo = np.where(h < 0, p, lo)
-        hi = np.where(h > 0, p, hi)
-        step = p - h / dh
-        # Fall back to bisection whenever Newton leaves the bracket.
-        step = np.where((step > lo) & (step < hi), step, 0.5 * (lo + hi))
-        step = np.where(h == 0, p, step)
-        done = np.abs(step - p) <= 4.0 * np.finfo(float).eps * p
-        p = step
-        if done.all():
-            break
-    return p
 
 
 def _p_trace(C1: np.ndarray, C2: np.ndarray) -> np.ndarray:
@@ -130,38 +115,49 @@ def _p_xy_psi(C1: np.ndarray, C2: np.ndarray, planar, heading) -> np.ndarray:
     return (1.0 - kappa) / kappa
 
 
-def _check_kappa(kappa, n_batch: int) -> np.ndarray:
-    k = _batch.per_instance("kappa", kappa, n_batch, ())
-    if np.any((k <= 0) | (k >= 1)):
-        raise ValueError(f"kappa must lie in the open interval (0, 1), got {kappa}")
-    return k
+_NAMES_SINGLE = (("E1.center", "E1.shape"), ("E2.center", "E2.shape"))
+_NAMES_BATCH = (("centers1", "shapes1"), ("centers2", "shapes2"))
 
 
-def _sum_core(c1, C1, c2, C2, criterion: str, kappa, dims) -> MinkowskiBatch:
-    """Shared core of the single and batched sums; inputs are already validated arrays."""
+def _raise(code: int, index: int, names, batched: bool) -> None:
+    """The ``ValueError`` of a kernel error code, naming the argument (and the instance)."""
+    where = f" (instance {index})" if batched else ""
+    if code == BAD_KAPPA:
+        raise ValueError("kappa must lie in the open interval (0, 1)" + where)
+    if code == OUT_OF_DOMAIN:
+        raise ValueError(
+            "the sum leaves the supported domain (semi-axes up to 1e60, see "
+            "optbound.sets._domain)" + where
+        )
+    raise_for(code % 10, *names[code // 10], where)
+
+
+def _mode(criterion: str, kappa, dims, C1, C2) -> tuple[int, np.ndarray]:
+    """Kernel mode and per-instance p = (1 - kappa) / kappa (zeros where the kernel solves)."""
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
+    n_batch = C1.shape[0]
     if kappa is not None:
-        k = _check_kappa(kappa, c1.shape[0])
-        p = (1.0 - k) / k
-    else:
-        if criterion == "volume":
-            p = _p_volume(C1, C2)
-        elif criterion == "trace":
-            p = _p_trace(C1, C2)
-        else:
-            p = _p_xy_psi(C1, C2, *_xy_psi_dims(dims, c1.shape[1]))
-        k = 1.0 / (1.0 + p)
-    # C1 / (1 - kappa) + C2 / kappa written in p = (1 - kappa) / kappa: no 1 / (1 - kappa)
-    # overflow when kappa rounds to 1 for very differently sized summands.
-    shapes = (1.0 + p)[:, None, None] * (C1 / p[:, None, None] + C2)
-    return MinkowskiBatch(centers=c1 + c2, shapes=shapes, kappa=k)
+        k = _batch.per_instance("kappa", kappa, n_batch, ())
+        if np.any((k <= 0) | (k >= 1)):
+            raise ValueError(f"kappa must lie in the open interval (0, 1), got {kappa}")
+        return P_GIVEN, np.ascontiguousarray((1.0 - k) / k)
+    if criterion == "volume":
+        return P_VOLUME, np.zeros(n_batch)
+    if criterion == "trace":
+        return P_TRACE, np.zeros(n_batch)
+    return P_GIVEN, _p_xy_psi(C1, C2, *_xy_psi_dims(dims, C1.shape[-1]))
 
 
 def minkowski_sum(
     E1: Ellipsoid, E2: Ellipsoid, criterion: str = "volume", kappa=None, dims=None
 ) -> MinkowskiResult:
-    """Outer ellipsoid of the Minkowski sum ``E1 + E2`` [HS96, eq. (14)].
+    """Outer ellipsoid of the Minkowski sum ``E1 + E2`` [HS96, eq. (14)], guaranteed in floats.
+
+    Guarantee: the returned ellipsoid, its floats read as exact numbers, contains E1 + E2
+    exactly (for every criterion and every kappa in (0, 1)): the member is evaluated with
+    certified error bounds and inflated by a certified margin (``optbound.analytic._midrad``);
+    near-degenerate results are widened to the output domain (``optbound.sets._domain``).
 
     Parameters
     ----------
@@ -178,40 +174,68 @@ def minkowski_sum(
     Returns
     -------
     MinkowskiResult
-        ``ellipsoid`` contains E1 + E2 for every kappa; ``kappa`` is the value used.
+        ``ellipsoid`` contains E1 + E2; ``kappa`` is the value used; ``margin`` the certified
+        relative inflation of the float member.
 
     Raises
     ------
+    TypeError
+        If E1 or E2 is not an Ellipsoid.
     ValueError
-        On dimension mismatch, unknown criterion, kappa outside (0, 1), or invalid dims.
+        On dimension mismatch, unknown criterion, kappa outside (0, 1), invalid dims, or a sum
+        outside the supported domain.
     """
+    for name, E in (("E1", E1), ("E2", E2)):
+        if not isinstance(E, Ellipsoid):
+            raise TypeError(f"{name} must be an Ellipsoid, got {type(E).__name__}")
     if E1.dim != E2.dim:
         raise ValueError(f"E1 and E2 must have the same dimension, got {E1.dim} and {E2.dim}")
-    out = _sum_core(
-        E1.center[None], E1.shape[None], E2.center[None], E2.shape[None], criterion, kappa, dims
+    mode, p = _mode(criterion, kappa, dims, E1.shape[None], E2.shape[None])
+    c, C, L, valid, (code, p_used, margin) = sum_single(
+        E1.center, E1.shape, E2.center, E2.shape, mode, p[0]
     )
-    return MinkowskiResult(Ellipsoid(out.centers[0], out.shapes[0]), float(out.kappa[0]))
+    if code:
+        _raise(code, 0, _NAMES_SINGLE, False)
+    # Validated in the kernel; the full constructor only if that ever failed.
+    E = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
+    return MinkowskiResult(E, 1.0 / (1.0 + p_used), margin)
 
 
 def minkowski_sum_batch(
     centers1, shapes1, centers2, shapes2, criterion: str = "volume", kappa=None, dims=None
 ) -> MinkowskiBatch:
-    """Vectorized :func:`minkowski_sum` over B pairs.
+    """Batched :func:`minkowski_sum` over B pairs: one compiled, parallel pass.
+
+    Each pair is computed by the same kernel as :func:`minkowski_sum` (bitwise agreement, same
+    guarantee).
 
     Parameters
     ----------
     centers1, centers2 : array_like, shape (B, n)
     shapes1, shapes2 : array_like, shape (B, n, n)
-        Symmetric positive-definite shape matrices.
+        Symmetric positive-definite shape matrices in the supported domain (the lower triangle
+        defines the matrix; the upper one must agree up to rounding).
     criterion, dims
         As in :func:`minkowski_sum`.
     kappa : float or array_like of shape (B,), optional
         Explicit Schweppe parameters in (0, 1).
     """
-    c1, C1 = _batch.ellipsoid_stack("centers1", centers1, "shapes1", shapes1)
-    c2, C2 = _batch.ellipsoid_stack("centers2", centers2, "shapes2", shapes2)
+    c1 = _batch.float_array("centers1", centers1, 2)
+    C1 = _batch.float_array("shapes1", shapes1, 3)
+    c2 = _batch.float_array("centers2", centers2, 2)
+    C2 = _batch.float_array("shapes2", shapes2, 3)
     if c1.shape != c2.shape:
         raise ValueError(
             f"centers1 and centers2 must have the same shape, got {c1.shape}, {c2.shape}"
         )
-    return _sum_core(c1, C1, c2, C2, criterion, kappa, dims)
+    for name, C in (("shapes1", C1), ("shapes2", C2)):
+        if C.shape != (*c1.shape, c1.shape[1]):
+            raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
+    mode, p = _mode(criterion, kappa, dims, C1, C2)
+    out = ellipsoid_outputs(c1.shape[0], c1.shape[1], np.int8, float, float)
+    run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, out)
+    out_c, out_C, _, code, p_used, margin = out
+    bad = np.flatnonzero(code)
+    if bad.size:
+        _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
+    return MinkowskiBatch(out_c, out_C, 1.0 / (1.0 + p_used), margin)

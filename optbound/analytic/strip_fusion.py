@@ -13,16 +13,21 @@ interval ``[b - 1, b + 1]`` for a^T x with the ellipsoid's ``[a^T c - sqrt(G), a
 
 Conventions of this module (numerical decisions, all conservative):
 
-- ``clip=True`` first clips each plane to the ellipsoid's extent (a plane missing the ellipsoid
-  moves to the tangent plane). This does not change E ∩ S but shrinks the result a lot in the
-  partial case.
-- The strip used for fusion is never thinner than ``MIN_REL_WIDTH`` times the ellipsoid's extent
-  along a (it is widened, which can only enlarge the bound). This keeps the shape matrix well
-  conditioned, and handles a plane that merely *touches* E: the intersection is a single point,
-  and the result is a thin ellipsoid containing it (case "partial", consistency 0).
-- The strip is declared disjoint ("inconsistent", no ellipsoid) only when the gap exceeds
-  ``TOUCH_RTOL`` relative to the problem's scale; a smaller gap is treated as touching.
-- If rounding makes a chosen member degenerate (K <= 0), lambda falls back to 0 (E itself).
+- Guarantee: the result's floats, read exactly, contain E ∩ S. The member is evaluated in the
+  local frame of E's centre with certified error bounds (``eps = b - a^T c`` in twice the
+  working precision, everything else in midpoint-radius arithmetic) and inflated by a
+  certified margin (``optbound.analytic._midrad``); ``margin`` reports it. Near-degenerate
+  results are widened to the output domain (``optbound.sets._domain``), never refused.
+- ``clip=True`` first clips each plane to the ellipsoid's (outward) extent: a plane missing the
+  ellipsoid moves to the tangent plane. This does not change E ∩ S but shrinks the result a lot
+  in the partial case. A half-space is always clipped (its open side ends at E's extent).
+- The strip used for fusion is never thinner than ``MIN_REL_WIDTH`` times the ellipsoid's
+  extent along a (it is widened, which can only enlarge the bound); a plane that merely
+  *touches* E gives a thin ellipsoid containing the touching point.
+- "inconsistent" (no ellipsoid) is declared only when it is proven: even the outward-rounded
+  strip misses the outward-rounded extent of E.
+- If a chosen member cannot be certified (K not provably positive, output outside the domain),
+  lambda falls back to 0: E itself, always an outer bound.
 """
 
 from __future__ import annotations
@@ -34,16 +39,36 @@ from scipy.special import expit
 
 from optbound.analytic import _batch
 from optbound.analytic._roots import argmin_candidates, real_roots
+from optbound.analytic._strip_kernel import (
+    BAD_A,
+    BAD_B,
+    BAD_LAM,
+    GIVEN,
+    LAM_MAX,
+    LAMG_MAX,
+    MIN_REL_WIDTH,
+    ROBUST,
+    VOLUME,
+    fuse_range,
+    fuse_single,
+    prepare_batch,
+)
+from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
+from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
-from optbound.sets.strip import Strip
+from optbound.sets.strip import Halfspace, Strip
 
 CASES = ("no_reduction", "consistent", "partial", "inconsistent")
-NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 CRITERIA = ("volume", "trace", "projection", "robust")
-MIN_REL_WIDTH = 1e-6
-TOUCH_RTOL = 1e-12
-K_RTOL = 1e-12
+__all__ = [
+    "CASES",
+    "LAMG_MAX",
+    "LAM_MAX",
+    "MIN_REL_WIDTH",
+    "intersect_strip",
+    "intersect_strip_batch",
+]
 
 
 @dataclass(frozen=True)
@@ -60,12 +85,16 @@ class StripFusion:
         One of ``CASES`` [HS96, Fig. 1].
     consistency : float
         Consistency measure [HS96, eq. (29)] in [0, 1]; 0 when inconsistent.
+    margin : float
+        Certified inflation of the float member, relative (``rho + mu / lambda_min``, see
+        ``optbound.analytic._midrad``); 0 when E itself is returned.
     """
 
     ellipsoid: Ellipsoid | None
     lam: float
     case: str
     consistency: float
+    margin: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -73,7 +102,8 @@ class StripFusionBatch:
     """Batched result of :func:`intersect_strip_batch`.
 
     ``centers`` (B, n) and ``shapes`` (B, n, n) are zero where ``empty`` (B,) is True;
-    ``lam`` (B,), ``case`` (B,) integer codes into ``CASES``, ``consistency`` (B,).
+    ``lam`` (B,), ``case`` (B,) integer codes into ``CASES``, ``consistency`` (B,),
+    ``margin`` (B,) the certified relative inflation (as in :class:`StripFusion`).
     """
 
     centers: np.ndarray
@@ -82,27 +112,10 @@ class StripFusionBatch:
     case: np.ndarray
     consistency: np.ndarray
     empty: np.ndarray
+    margin: np.ndarray | None = None
 
 
 # ------------------------------------------------------------------------ choice of lambda
-def _lam_volume(G: np.ndarray, eps: np.ndarray, n: int) -> np.ndarray:
-    """Most positive root of [HS96, eq. (26)] with N = n; 0 if there is none.
-
-    A positive root exists iff G > n (1 - eps^2) (constant term negative, leading term
-    positive); the roots have opposite signs then, and the stable quadratic formula is used.
-    """
-    qa = (n - 1) * G * G
-    qb = (2 * n - 1 + eps * eps - G) * G
-    qc = n * (1 - eps * eps) - G
-    root = np.zeros_like(G)
-    pos = qc < 0
-    sq = np.sqrt(qb[pos] ** 2 - 4 * qa[pos] * qc[pos])
-    root[pos] = np.where(
-        qb[pos] >= 0, 2 * qc[pos] / (-qb[pos] - sq), (-qb[pos] + sq) / (2 * qa[pos])
-    )
-    return root
-
-
 def _shape_factor(lam, G, eps):
     """K of [HS96, eq. (24)] for candidate arrays lam (B, k) and per-instance G, eps (B,)."""
     u = 1 + lam * G[:, None]
@@ -166,9 +179,38 @@ def _lam_trace(C, w, G, eps) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- the core
-def _fuse(c, C, a, b, criterion, dims, lam, clip, steepness, midpoint) -> StripFusionBatch:
-    """Shared core of :func:`intersect_strip` and :func:`intersect_strip_batch` (valid arrays)."""
-    n_batch, n = c.shape
+_BAD = {
+    BAD_A: "{a} must be finite and non-zero, with a norm in [1e-60, 1e60] (the supported domain)",
+    BAD_B: "{b} must be finite with |b| <= 1e120 (the supported domain)",
+    BAD_LAM: "lam must be finite and >= 0 (every lambda >= 0 gives an outer bound)",
+}
+
+
+def _raise(code: int, index: int, names: tuple[str, str, str, str], batched: bool) -> None:
+    """The ``ValueError`` of a kernel error code, naming the argument (and the instance)."""
+    where = f" (instance {index})" if batched else ""
+    if code in _BAD:
+        raise ValueError(_BAD[code].format(a=names[2], b=names[3]) + where)
+    raise_for(code, names[0], names[1], where)
+
+
+def _lam_numpy(c, C, a, b, halfspace, clip, criterion, idx, steepness, midpoint, names, batched):
+    """lambda of the criteria solved in numpy (trace, projection, robust with dims)."""
+    code, _, cons, eps, Gs, ws = prepare_batch(c, C, a, b, halfspace, clip)
+    bad = np.flatnonzero(code)
+    if bad.size:
+        _raise(int(code[bad[0]]), int(bad[0]), names, batched)
+    if criterion == "trace":
+        lam = _lam_trace(C, ws, Gs, eps)
+    else:
+        lam = _lam_projection(C, ws, Gs, eps, idx)
+    if criterion == "robust":
+        lam = lam * expit(steepness * (cons - midpoint))  # [HS96, eq. (30)]
+    return np.where(np.isfinite(lam) & (lam > 0), lam, 0.0)
+
+
+def _mode(criterion, dims, lam, n_batch, n):
+    """Kernel mode and per-instance lambda array (NaN where the kernel chooses it)."""
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
     if n < 2:
@@ -177,79 +219,26 @@ def _fuse(c, C, a, b, criterion, dims, lam, clip, steepness, midpoint) -> StripF
     if criterion == "projection" and idx is None:
         raise ValueError("dims is required for criterion='projection' (the subspace to project on)")
     if lam is not None:
-        lam = _batch.per_instance("lam", lam, n_batch, ())
+        lam = np.ascontiguousarray(_batch.per_instance("lam", lam, n_batch, ()))
         if np.any(lam < 0):
             raise ValueError(
                 f"lam must be >= 0 (every lambda >= 0 gives an outer bound), got {lam}"
             )
-
-    w = np.einsum("bij,bj->bi", C, a)  # C a
-    G = np.einsum("bi,bi->b", a, w)
-    g = np.sqrt(G)  # half-extent of E along a, in strip units
-    ac = np.einsum("bi,bi->b", a, c)
-    lo, hi = b - ac - 1, b - ac + 1  # strip interval relative to a^T c
-
-    # Cases [HS96, Fig. 1]; a gap below the tolerance counts as touching, never as empty.
-    lower_cuts = (-g < lo) & (lo < g)
-    upper_cuts = (-g < hi) & (hi < g)
-    covers = (lo <= -g) & (hi >= g)
-    gap = np.maximum(lo - g, -g - hi)
-    empty = gap > TOUCH_RTOL * (g + np.abs(b) + np.abs(ac))
-    case = np.where(lower_cuts & upper_cuts, CONSISTENT, PARTIAL)
-    case = np.where(covers, NO_REDUCTION, np.where(empty, INCONSISTENT, case))
-
-    # Consistency [HS96, eq. (29)]: widths along a of E ∩ S (W_E), E (W_P = 2g) and S (W_M = 2).
-    overlap = np.clip(np.minimum(hi, g) - np.maximum(lo, -g), 0.0, None)
-    consistency = np.clip(overlap / (2.0 * np.sqrt(g)), 0.0, 1.0)
-
-    # The strip actually fused: optionally clipped to E's extent, never thinner than the floor.
-    if clip:
-        lo, hi = np.maximum(lo, -g), np.minimum(hi, g)
-    width = np.maximum(hi - lo, MIN_REL_WIDTH * 2 * g)
-    mid = 0.5 * (lo + hi)
-    if clip:
-        mid = np.clip(mid, -g + 0.5 * width, g - 0.5 * width)
-    half = 0.5 * width
-    # Normalized strip |a'^T x - b'| <= 1 with a' = a / half: eps' = mid / half, G' = G / half^2.
-    eps = mid / half
-    Gs = G / half**2
-    ws = w / half[:, None]
-
-    if lam is None:
-        # "robust" scales the volume- (with dims: projection-) optimal lambda.
-        if criterion == "trace":
-            lam = _lam_trace(C, ws, Gs, eps)
-        elif criterion == "projection" or (criterion == "robust" and idx is not None):
-            lam = _lam_projection(C, ws, Gs, eps, idx)
-        else:
-            lam = _lam_volume(Gs, eps, n)
-        if criterion == "robust":
-            lam = lam * expit(steepness * (consistency - midpoint))  # [HS96, eq. (30)]
-    lam = np.where((case == NO_REDUCTION) | empty, 0.0, lam)
-
-    u = 1 + lam * Gs
-    K = 1 + lam - lam * eps**2 / u
-    degenerate = K <= K_RTOL * (1 + lam)  # rounding only: fall back to E itself
-    lam = np.where(degenerate, 0.0, lam)
-    u = np.where(degenerate, 1.0, u)
-    K = np.where(degenerate, 1.0, K)
-
-    gamma = lam / u
-    shapes = K[:, None, None] * (C - gamma[:, None, None] * ws[:, :, None] * ws[:, None, :])
-    centers = c + (gamma * eps)[:, None] * ws
-    shapes = 0.5 * (shapes + shapes.transpose(0, 2, 1))
-    shapes[empty] = 0.0
-    centers[empty] = 0.0
-    return StripFusionBatch(centers, shapes, lam, case.astype(np.int8), consistency, empty)
+        return GIVEN, lam, idx
+    if criterion == "volume":
+        return VOLUME, np.zeros(n_batch), idx
+    if criterion == "robust" and idx is None:
+        return ROBUST, np.zeros(n_batch), idx
+    return None, None, idx
 
 
-def _robust_params(steepness, midpoint) -> tuple[float, float]:
+def _check_robust(steepness, midpoint) -> tuple[float, float]:
     return v.finite_scalar("steepness", steepness), v.finite_scalar("midpoint", midpoint)
 
 
 def intersect_strip(
     E: Ellipsoid,
-    S: Strip,
+    S: Strip | Halfspace,
     criterion: str = "volume",
     dims=None,
     lam: float | None = None,
@@ -257,14 +246,20 @@ def intersect_strip(
     steepness: float = 10.0,
     midpoint: float = 0.5,
 ) -> StripFusion:
-    """Outer ellipsoid of ``E ∩ S`` from the family [HS96, eq. (24)].
+    """Outer ellipsoid of ``E ∩ S`` from the family [HS96, eq. (24)], guaranteed in floating point.
+
+    Guarantee: the returned ellipsoid, its floats read as exact numbers, contains E ∩ S exactly
+    (for every criterion and every lambda >= 0): the member is evaluated with certified error
+    bounds and inflated by a certified margin (module docstring). ``ellipsoid`` is None only
+    when E and S are *proven* disjoint.
 
     Parameters
     ----------
     E : Ellipsoid
         Prior (predicted) set, dimension n >= 2.
-    S : Strip
-        Measurement strip ``|a^T x - b| <= 1`` [HS96, eq. (23)].
+    S : Strip or Halfspace
+        Measurement strip ``|a^T x - b| <= 1`` [HS96, eq. (23)], or a half-space
+        ``a^T x <= b`` (fused as the strip between E's lower tangent plane and ``a^T x = b``).
     criterion : {"volume", "trace", "projection", "robust"}
         ``"volume"``: most positive root of [HS96, eq. (26)] with N = n (lambda = 0 if none;
         a positive root exists iff G > n (1 - eps^2)). ``"trace"``: minimizes tr(shape).
@@ -276,7 +271,8 @@ def intersect_strip(
         Coordinate subspace; required for ``"projection"``.
     lam : float, optional
         Explicit lambda >= 0; overrides the criterion. It refers to the strip actually fused
-        (the clipped one when ``clip=True``); ignored for "no_reduction" and "inconsistent".
+        (the clipped one when ``clip=True``); ignored for "no_reduction" and "inconsistent";
+        capped at ``LAM_MAX`` and at ``LAMG_MAX / G`` (the returned ``lam`` is the one used).
     clip : bool
         Clip the strip to E's extent first (see the module docstring).
     steepness, midpoint : float
@@ -285,34 +281,49 @@ def intersect_strip(
     Returns
     -------
     StripFusion
-        ``ellipsoid`` (None if E and S are disjoint), ``lam``, ``case``, ``consistency``.
+        ``ellipsoid`` (None if E and S are disjoint), ``lam``, ``case``, ``consistency``,
+        ``margin`` (the certified inflation, relative to the float member).
 
     Raises
     ------
+    TypeError
+        ``E`` not an Ellipsoid, ``S`` neither a Strip nor a Halfspace.
     ValueError
         Dimension mismatch, unknown criterion, missing or invalid ``dims``, negative ``lam``.
     """
+    if not isinstance(E, Ellipsoid):
+        raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")
+    if not isinstance(S, (Strip, Halfspace)):
+        raise TypeError(f"S must be a Strip or a Halfspace, got {type(S).__name__}")
     if E.dim != S.dim:
         raise ValueError(f"E and S must have the same dimension, got {E.dim} and {S.dim}")
-    out = _fuse(
-        E.center[None],
-        E.shape[None],
-        S.a[None],
-        np.array([S.b]),
-        criterion,
-        dims,
-        lam,
-        clip,
-        *_robust_params(steepness, midpoint),
+    mode, lams, idx = _mode(criterion, dims, lam, 1, E.dim)
+    steep, midp = _check_robust(steepness, midpoint)
+    halfspace = isinstance(S, Halfspace)
+    a, b = S.a, S.b
+    if mode is None:
+        mode = GIVEN
+        lams = _lam_numpy(
+            E.center[None], E.shape[None], a[None], np.array([b]), halfspace, clip,
+            criterion, idx, steep, midp, _NAMES_SINGLE, False,
+        )  # fmt: skip
+    c, C, L, valid, r = fuse_single(
+        E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp
     )
-    case = int(out.case[0])
-    if out.empty[0]:
+    code, case, consistency, lam_used, empty, margin = r
+    if code:
+        _raise(code, 0, _NAMES_SINGLE, False)
+    if empty:
         ellipsoid = None
-    elif case == NO_REDUCTION:
+    elif lam_used == 0.0:
         ellipsoid = E
-    else:
-        ellipsoid = Ellipsoid(out.centers[0], out.shapes[0])
-    return StripFusion(ellipsoid, float(out.lam[0]), CASES[case], float(out.consistency[0]))
+    else:  # validated in the kernel; the full constructor only if that ever failed
+        ellipsoid = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
+    return StripFusion(ellipsoid, float(lam_used), CASES[case], float(consistency), float(margin))
+
+
+_NAMES_SINGLE = ("E.center", "E.shape", "S.a", "S.b")
+_NAMES_BATCH = ("centers", "shapes", "a", "b")
 
 
 def intersect_strip_batch(
@@ -326,14 +337,19 @@ def intersect_strip_batch(
     clip: bool = True,
     steepness: float = 10.0,
     midpoint: float = 0.5,
+    halfspace: bool = False,
 ) -> StripFusionBatch:
-    """Vectorized :func:`intersect_strip` over B instances (no Python loop over B).
+    """Batched :func:`intersect_strip` over B instances: one compiled, parallel pass.
+
+    Each instance is computed by the same kernel as :func:`intersect_strip`, so the results
+    agree bitwise with single calls, and carry the same guarantee.
 
     Parameters
     ----------
     centers : array_like, shape (B, n)
     shapes : array_like, shape (B, n, n)
-        Symmetric positive-definite shape matrices.
+        Symmetric positive-definite shape matrices in the supported domain (the lower triangle
+        defines the matrix; the upper one must agree up to rounding).
     a : array_like, shape (n,) or (B, n)
         Strip normals (shared or per instance), non-zero.
     b : float or array_like of shape (B,)
@@ -342,15 +358,31 @@ def intersect_strip_batch(
         As in :func:`intersect_strip`.
     lam : float or array_like of shape (B,), optional
         Explicit lambdas >= 0.
+    halfspace : bool
+        Read each (a, b) as the half-space ``a^T x <= b`` instead of the strip.
 
     Returns
     -------
     StripFusionBatch
     """
-    c, C = _batch.ellipsoid_stack("centers", centers, "shapes", shapes)
+    c = _batch.float_array("centers", centers, 2)
+    C = _batch.float_array("shapes", shapes, 3)
     n_batch, n = c.shape
-    a = _batch.per_instance("a", a, n_batch, (n,))
-    if np.any(~a.any(axis=1)):
-        raise ValueError("a must be non-zero for every instance")
-    b = _batch.per_instance("b", b, n_batch, ())
-    return _fuse(c, C, a, b, criterion, dims, lam, clip, *_robust_params(steepness, midpoint))
+    if C.shape != (n_batch, n, n):
+        raise ValueError(f"shapes must have shape {(n_batch, n, n)}, got {C.shape}")
+    a = np.ascontiguousarray(_batch.per_instance("a", a, n_batch, (n,)))
+    b = np.ascontiguousarray(_batch.per_instance("b", b, n_batch, ()))
+    mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
+    steep, midp = _check_robust(steepness, midpoint)
+    if mode is None:
+        mode = GIVEN
+        lams = _lam_numpy(
+            c, C, a, b, halfspace, clip, criterion, idx, steep, midp, _NAMES_BATCH, True
+        )
+    out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, steep, midp, out)
+    out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
+    bad = np.flatnonzero(code)
+    if bad.size:
+        _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
+    return StripFusionBatch(out_c, out_C, lam_used, case, cons, empty, margin)

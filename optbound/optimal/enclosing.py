@@ -21,9 +21,11 @@ from optbound.optimal.result import OuterResult
 from optbound.optimal.solver import solve
 from optbound.sets import Ellipsoid
 from optbound.sets import _validate as v
+from optbound.sets._domain import COND_MAX, MAG, RATIO_MAX
 
-# Relative singular value below which a point cloud counts as flat (no enclosing ellipsoid).
-_FLAT_RTOL = 1e-10
+# Relative singular value below which a point cloud counts as flat: its enclosing ellipsoid
+# would be (nearly) degenerate, beyond the supported condition number (optbound.sets._domain).
+_FLAT_RTOL = 10.0 / np.sqrt(COND_MAX)
 
 
 @dataclass(frozen=True)
@@ -51,9 +53,24 @@ def validated_points(points) -> np.ndarray:
     m, n = X.shape
     if m < n + 1:
         raise ValueError(f"points must hold at least n + 1 = {n + 1} points, got {m}")
-    sv = np.linalg.svd(X - X.mean(axis=0), compute_uv=False)
+    # Magnitudes checked before any arithmetic that could overflow or underflow.
+    top = float(np.max(np.abs(X)))
+    if top > MAG:
+        raise ValueError(f"points must have coordinates <= {MAG:.0e} (the supported domain)")
+    centre = X.mean(axis=0)
+    spread = float(np.max(np.abs(X - centre)))
+    if not spread >= max(1.0 / MAG, top / RATIO_MAX):
+        raise ValueError(
+            f"points must spread over more than {1 / MAG:.0e} and {1 / RATIO_MAX:.0e} times "
+            "their distance from the origin (the supported domain)"
+        )
+    sv = np.linalg.svd((X - centre) / spread, compute_uv=False)
     if sv[-1] <= _FLAT_RTOL * sv[0]:
-        raise ValueError("points lie in a lower-dimensional affine subspace: no ellipsoid fits")
+        raise ValueError(
+            "points lie in (or within relative thickness "
+            f"{_FLAT_RTOL:.0e} of) a lower-dimensional affine subspace: no ellipsoid in the "
+            "supported domain fits"
+        )
     return X
 
 

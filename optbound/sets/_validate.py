@@ -8,15 +8,15 @@ from __future__ import annotations
 
 import numpy as np
 
-# Relative asymmetry below which a matrix is treated as symmetric up to rounding.
-SYMMETRY_RTOL = 1e-9
+from optbound.sets._domain import SYMMETRY_RTOL, real_array
+
 # Smallest Cholesky pivot, relative to the largest diagonal entry, still counted as definite.
 SINGULAR_RTOL = 1e-13
 
 
 def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
     """Return ``value`` as a finite float64 1-D array (a scalar becomes length 1)."""
-    arr = np.atleast_1d(np.asarray(value, dtype=float))
+    arr = np.atleast_1d(real_array(name, value))
     if arr.ndim != 1:
         raise ValueError(f"{name} must be a 1-D vector, got shape {arr.shape}")
     if arr.size == 0:
@@ -30,7 +30,7 @@ def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
 
 def finite_scalar(name: str, value) -> float:
     """Return ``value`` as a finite Python float."""
-    arr = np.asarray(value, dtype=float)
+    arr = real_array(name, value)
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
     if not np.isfinite(arr):
@@ -42,7 +42,7 @@ def finite_matrix(
     name: str, value, shape: tuple[int | None, int | None] = (None, None)
 ) -> np.ndarray:
     """Return ``value`` as a finite float64 2-D array, optionally of a given shape."""
-    arr = np.asarray(value, dtype=float)
+    arr = real_array(name, value)
     if arr.ndim != 2:
         raise ValueError(f"{name} must be a 2-D matrix, got shape {arr.shape}")
     for axis, want in enumerate(shape):
@@ -87,7 +87,7 @@ def spd_matrix(name: str, value, dim: int | None = None) -> tuple[np.ndarray, np
 
 def points(name: str, value, dim: int) -> tuple[np.ndarray, bool]:
     """Return ``value`` as an (m, dim) array and whether a single point (dim,) was given."""
-    arr = np.asarray(value, dtype=float)
+    arr = real_array(name, value)
     single = arr.ndim == 1
     arr = np.atleast_2d(arr)
     if arr.ndim != 2 or arr.shape[1] != dim:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound.sets import _validate as v
+from optbound.sets._domain import real_array
 from optbound.sets.base import ConvexSet
 
 
@@ -15,8 +16,8 @@ class Box(ConvexSet):
     """
 
     def __init__(self, lo, hi):
-        lo = np.atleast_1d(np.asarray(lo, dtype=float))
-        hi = np.atleast_1d(np.asarray(hi, dtype=float))
+        lo = np.atleast_1d(real_array("lo", lo)).copy()
+        hi = np.atleast_1d(real_array("hi", hi)).copy()
         for name, arr in (("lo", lo), ("hi", hi)):
             if arr.ndim != 1 or arr.size == 0:
                 raise ValueError(f"{name} must be a non-empty 1-D vector, got shape {arr.shape}")
@@ -72,9 +73,15 @@ class Box(ConvexSet):
         return f"Box(lo={self._lo.tolist()}, hi={self._hi.tolist()})"
 
     def volume(self) -> float:
+        """Product of the widths; ``inf`` for an unbounded box (even if another width is 0)."""
+        if not self.is_bounded:
+            return np.inf
         return float(np.prod(self.widths))
 
     def log_volume(self) -> float:
+        """Sum of the log-widths; ``inf`` for an unbounded box, ``-inf`` for a flat one."""
+        if not self.is_bounded:
+            return np.inf
         with np.errstate(divide="ignore"):
             return float(np.sum(np.log(self.widths)))
 

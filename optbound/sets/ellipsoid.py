@@ -14,6 +14,7 @@ import numpy as np
 from scipy.linalg import solve_triangular
 
 from optbound.sets import _validate as v
+from optbound.sets._domain import check_ellipsoid, raise_for, real_array
 from optbound.sets.base import ConvexSet
 from optbound.sets.box import Box
 
@@ -31,15 +32,40 @@ class Ellipsoid(ConvexSet):
     Raises
     ------
     ValueError
-        If either argument is non-finite, the dimensions disagree, or ``shape`` is not
-        symmetric positive definite.
+        If either argument is non-finite, the dimensions disagree, ``shape`` is not symmetric
+        positive definite, or the ellipsoid lies outside the supported domain (condition
+        number, magnitudes, centre against size: see ``optbound.sets._domain``).
+    TypeError
+        If an argument is complex or not numeric.
     """
 
     def __init__(self, center, shape):
-        self._center = v.finite_vector("center", center)
-        self._shape, self._chol = v.spd_matrix("shape", shape, self._center.shape[0])
-        for arr in (self._center, self._shape, self._chol):
+        c = real_array("center", center)
+        C = real_array("shape", shape)
+        if c.ndim != 1 or c.size == 0:
+            raise ValueError(f"center must be a non-empty 1-D vector, got shape {c.shape}")
+        n = c.shape[0]
+        if C.shape != (n, n):
+            raise ValueError(f"shape must have shape {(n, n)}, got {C.shape}")
+        L = np.zeros((n, n))
+        raise_for(check_ellipsoid(c, C, L), "center", "shape")
+        if not np.array_equal(C, C.T):  # asymmetry at rounding level: symmetrize, refactor
+            C = 0.5 * (C + C.T)
+            raise_for(check_ellipsoid(c, C, L), "center", "shape")
+        self._set(c.copy(), C.copy(), L)
+
+    def _set(self, center: np.ndarray, shape: np.ndarray, chol: np.ndarray) -> None:
+        self._center, self._shape, self._chol = center, shape, chol
+        for arr in (center, shape, chol):
             arr.setflags(write=False)
+
+    @classmethod
+    def _trusted(cls, center: np.ndarray, shape: np.ndarray, chol: np.ndarray) -> Ellipsoid:
+        """Wrap arrays already validated by ``check_ellipsoid`` (the analytic kernels' fast path:
+        they validate their outputs in the same compiled pass that computes them)."""
+        E = cls.__new__(cls)
+        E._set(center, shape, chol)
+        return E
 
     # ----------------------------------------------------------------- basic attributes
     @property
@@ -130,7 +156,14 @@ class Ellipsoid(ConvexSet):
         factor = v.finite_scalar("factor", factor)
         if factor <= 0:
             raise ValueError(f"factor must be positive, got {factor}")
-        return Ellipsoid(self._center, self._shape * factor**2)
+        with np.errstate(over="ignore", under="ignore"):
+            shape = self._shape * factor * factor
+        try:
+            return Ellipsoid(self._center, shape)
+        except ValueError as err:
+            raise ValueError(
+                f"factor={factor} takes the ellipsoid out of the domain: {err}"
+            ) from None
 
     def bounding_box(self) -> Box:
         """Tightest axis-aligned box: half-widths ``sqrt(diag C)``."""

@@ -5,13 +5,22 @@ from __future__ import annotations
 import numpy as np
 
 from optbound.sets import _validate as v
+from optbound.sets._domain import MAG
 from optbound.sets.base import ConvexSet
 
 
 def _normal(name: str, a) -> np.ndarray:
-    a = v.finite_vector(name, a)
+    a = v.finite_vector(name, a).copy()
     if not np.any(a):
         raise ValueError(f"{name} must be a non-zero vector")
+    # Scaled norm: no overflow or underflow in forming it.
+    top = np.max(np.abs(a))
+    norm = top * np.linalg.norm(a / top)
+    if not 1.0 / MAG <= norm <= MAG:
+        raise ValueError(
+            f"{name} must have a norm in [{1 / MAG:.0e}, {MAG:.0e}] (the supported domain; the "
+            f"width 2 / ||a|| of a strip), got {norm:.3e}"
+        )
     a.setflags(write=False)
     return a
 
@@ -22,6 +31,8 @@ class _LinearSet(ConvexSet):
     def __init__(self, a, b):
         self._a = _normal("a", a)
         self._b = v.finite_scalar("b", b)
+        if abs(self._b) > MAG * MAG:
+            raise ValueError(f"b must satisfy |b| <= {MAG * MAG:.0e} (the supported domain)")
 
     @property
     def a(self) -> np.ndarray:
@@ -74,8 +85,9 @@ class Strip(_LinearSet):
         if not lo < hi:
             raise ValueError(f"lo must be smaller than hi, got lo={lo}, hi={hi}")
         a = _normal("a", a)
-        half = 0.5 * (hi - lo)
-        return cls(a / half, 0.5 * (hi + lo) / half)
+        half = 0.5 * hi - 0.5 * lo  # no overflow for bounds near the float range
+        with np.errstate(over="ignore", under="ignore"):
+            return cls(a / half, (0.5 * hi + 0.5 * lo) / half)
 
     @property
     def width(self) -> float:

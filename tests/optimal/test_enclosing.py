@@ -33,6 +33,10 @@ def test_agrees_with_khachiyan(m, n):
         (np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [3.0, 3.0]]), "lower-dimensional"),
         (np.array([[0.0, np.nan], [1.0, 0.0], [0.0, 1.0]]), "finite"),
         (np.ones(4), "2-D"),
+        # Issue 8: 1e-9 from a line, and magnitudes 1e+-200: a clear message, never NaN.
+        (np.column_stack([np.linspace(0.0, 1.0, 10), 1e-9 * np.sin(np.arange(10.0))]), "thickness"),
+        (1e200 * np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), "coordinates <="),
+        (1e-200 * np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), "spread"),
     ],
 )
 def test_bad_points(points, word):

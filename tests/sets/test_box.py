@@ -40,3 +40,9 @@ def test_unbounded_box():
 def test_bad_input(lo, hi, word):
     with pytest.raises(ValueError, match=word):
         Box(lo, hi)
+
+
+def test_volume_of_an_unbounded_box_is_inf_not_nan():
+    B = Box([-np.inf, 0.0], [np.inf, 0.0])
+    assert B.volume() == np.inf and B.log_volume() == np.inf
+    assert Box([0.0, 0.0], [1.0, 0.0]).volume() == 0.0

@@ -143,3 +143,32 @@ def test_bad_method_arguments():
         Ellipsoid(np.zeros(3), np.eye(3)).boundary()
     with pytest.raises(ValueError, match="factor"):
         E.scaled(-1.0)
+
+
+@pytest.mark.parametrize(
+    ("center", "shape", "err", "word"),
+    [
+        ([1j, 0.0], np.eye(2), TypeError, "center must be real"),
+        ([0.0, 0.0], np.eye(2) * (1 + 1e-3j), TypeError, "shape must be real"),
+        ([0.0, 0.0], np.diag([1.0, 1e-13]), ValueError, "ill-conditioned"),
+        ([1e12, 0.0], np.eye(2), ValueError, "center is too far"),
+        ([1.0, 0.0], 1e-24 * np.eye(2), ValueError, "center is too far"),
+        ([0.0, 0.0], 1e-130 * np.eye(2), ValueError, "semi-axes outside"),
+        ([0.0, 0.0], 1e130 * np.eye(2), ValueError, "semi-axes outside"),
+    ],
+)
+def test_inputs_outside_the_domain_are_refused(center, shape, err, word):
+    with pytest.raises(err, match=word):
+        Ellipsoid(center, shape)
+
+
+def test_domain_edges_are_accepted():
+    Ellipsoid([0.0, 0.0], np.diag([1.0, 1e-11]))
+    Ellipsoid([1e10, 0.0], np.eye(2))
+    Ellipsoid([0.0, 0.0], 1e-118 * np.eye(2))
+
+
+def test_scaling_out_of_the_domain_is_a_value_error_not_an_overflow():
+    E = Ellipsoid([0.0, 0.0], np.eye(2))
+    with pytest.raises(ValueError, match="factor=1e\\+200"):
+        E.scaled(1e200)

@@ -42,3 +42,18 @@ def test_halfspace_contains_and_support():
 def test_bad_input(make, word):
     with pytest.raises(ValueError, match=word):
         make()
+
+
+@pytest.mark.parametrize("a", [[5e-324, 0.0], [1e61, 0.0], [0.0, 1e-61]])
+def test_normals_outside_the_domain_are_refused_not_a_zero_division(a):
+    with pytest.raises(ValueError, match="norm in"):
+        Strip(a, 0.0)
+    with pytest.raises(ValueError, match="norm in"):
+        Halfspace(a, 0.0)
+
+
+def test_complex_input_is_refused():
+    with pytest.raises(TypeError, match="a must be real"):
+        Strip([1.0 + 1e-3j, 0.0], 0.0)
+    with pytest.raises(TypeError, match="b must be real"):
+        Strip([1.0, 0.0], 1j)

@@ -1,0 +1,73 @@
+"""Plain numba reference kernels for the speed benchmark: the same formulas, nothing else.
+
+No validation, no certified error bounds, no margin, no output checks: what the analytic core
+would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
+reports our kernels' time as a ratio to these, measured in the same run (same threads).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from optbound.analytic._minkowski_kernel import p_volume
+from optbound.analytic._strip_kernel import lam_volume
+from optbound.sets._domain import cholesky
+
+
+@njit(cache=True, nogil=True)
+def strip_one(c, C, a, b, out_c, out_C):
+    """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula."""
+    n = c.shape[0]
+    w = np.empty(n)
+    G = 0.0
+    ac = 0.0
+    for i in range(n):
+        s = 0.0
+        for j in range(n):
+            s += C[i, j] * a[j]
+        w[i] = s
+        G += a[i] * s
+        ac += a[i] * c[i]
+    g = np.sqrt(G)
+    lo = max(b - ac - 1.0, -g)
+    hi = min(b - ac + 1.0, g)
+    half = max(0.5 * (hi - lo), 1e-6 * g)
+    eps = 0.5 * (lo + hi) / half
+    Gs = G / (half * half)
+    lam = lam_volume(Gs, eps, n)
+    u = 1.0 + lam * Gs
+    K = 1.0 + lam - lam * eps * eps / u
+    gam = lam / u / (half * half)
+    for i in range(n):
+        out_c[i] = c[i] + gam * half * eps * w[i]
+        for j in range(n):
+            out_C[i, j] = K * (C[i, j] - gam * w[i] * w[j])
+
+
+@njit(cache=True, nogil=True)
+def strip_range(c, C, a, b, out_c, out_C, start, stop):
+    for i in range(start, stop):
+        strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i])
+
+
+@njit(cache=True, nogil=True)
+def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
+    """Volume-optimal Schweppe member [HS96, eq. (14)] with the same Newton solver as ours."""
+    n = c1.shape[0]
+    L1, L2, A, L, X = work[0], work[1], work[2], work[3], work[4]
+    cholesky(C1, L1)
+    cholesky(C2, L2)
+    p = p_volume(C1, C2, L1, L2, A, L, X)
+    for i in range(n):
+        out_c[i] = c1[i] + c2[i]
+        for j in range(n):
+            out_C[i, j] = (1.0 + p) * (C1[i, j] / p + C2[i, j])
+
+
+@njit(cache=True, nogil=True)
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
+    n = c1.shape[1]
+    work = np.empty((5, n, n))
+    for i in range(start, stop):
+        minkowski_one(c1[i], C1[i], c2[i], C2[i], out_c[i], out_C[i], work)
