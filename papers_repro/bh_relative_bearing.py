@@ -32,6 +32,7 @@ import numpy as np
 from optbound import optimal
 from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
+from optbound.localization.geometry import wrap_angle
 from optbound.report.tables import markdown_table
 from optbound.sets import Box
 from papers_repro._common import (
@@ -56,7 +57,7 @@ RELATIVE_PAVING = 100  # sweep: paving width relative to the exact set's hull
 def bearings(x: np.ndarray, landmarks: np.ndarray, pairs) -> np.ndarray:
     """Noise-free relative bearings [BH, eq. (2)] seen from ``x``."""
     ang = np.arctan2(x[1] - landmarks[:, 1], x[0] - landmarks[:, 0])
-    return rb.wrap_angle([ang[i] - ang[j] for i, j in pairs])
+    return wrap_angle([ang[i] - ang[j] for i, j in pairs])
 
 
 def _box_rows(box: Box) -> np.ndarray:
@@ -267,7 +268,7 @@ def random_instance(
         if min(dists) > 0.3 and np.all(
             (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
         ):
-            return L, PAIRS, rb.wrap_angle(gam), eps, x
+            return L, PAIRS, wrap_angle(gam), eps, x
 
 
 def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:

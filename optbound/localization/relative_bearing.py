@@ -9,8 +9,9 @@ measured as ``gamma_hat = gamma_ij(x) + v``, ``|v| <= eps``. The feasible set of
 measurement is the crescent ``M_ij`` between two circles through the landmarks.
 
 - **Exact set** (:func:`exact_paving`): SIVIA on ``|wrap(gamma_ij(x) - gamma_hat)| <= eps``
-  written with one interval ``atan2`` (:func:`bearing_residual`), conjoined with the same
-  constraint in sign form (:func:`bearing_sides`), independent of the rings.
+  written with one interval ``atan2`` (:func:`~.geometry.bearing_residual`), conjoined with
+  the same constraint in sign form (:func:`~.geometry.bearing_sides`), independent of the
+  rings.
 - **Circle of constant bearing** (:func:`circle`) [BH, eqs. (17)-(19)]: centre
   ``M = (L_i + L_j) / 2 - cot(gamma) Delta_perp / 2`` (``Delta_perp`` the counter-clockwise
   rotation of ``L_j - L_i``), radius ``|L_j - L_i| / (2 |sin gamma|)``; for ``gamma > 0`` the
@@ -48,7 +49,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.analytic import lifted_update, parabola_arc_ellipse
-from optbound.interval import Interval, Paving, constraint, pave, tri_and
+from optbound.interval import Paving, constraint, pave, tri_and
+from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
 from optbound.sets import Box, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
@@ -75,12 +77,6 @@ class Measurements:
         """``(L_i, L_j, gamma_hat, eps)`` of measurement k."""
         i, j = self.pairs[k]
         return self.landmarks[i], self.landmarks[j], float(self.gammas[k]), float(self.eps[k])
-
-
-def wrap_angle(a):
-    """Angles wrapped to (-pi, pi]."""
-    w = np.mod(np.asarray(a, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
-    return np.where(w == -np.pi, np.pi, w)
 
 
 def measurements(landmarks, pairs, gammas, eps) -> Measurements:
@@ -135,47 +131,12 @@ def _real(name: str, value) -> np.ndarray:
 
 
 # ------------------------------------------------------------------------- the exact set
-def bearing_residual(x, y, li, lj, gamma):
-    """``wrap(gamma_ij(x, y) - gamma)`` [BH, eq. (2)], on float arrays or ``Interval`` boxes.
-
-    ``gamma_ij = angle(x - L_i) - angle(x - L_j)`` is the angle of the complex product
-    ``(x - L_i) conj(x - L_j)``; rotating that product by ``-gamma`` and taking one ``atan2``
-    gives the wrapped residual, with the branch cut at residual ``±pi``, far from the
-    constraint ``|residual| <= eps < pi/2``. For intervals ``cos gamma``, ``sin gamma`` are
-    enclosed too, so the residual's enclosure is guaranteed.
-    """
-    ux, uy = x - lj[0], y - lj[1]
-    wx, wy = x - li[0], y - li[1]
-    dot = ux * wx + uy * wy
-    cross = ux * wy - uy * wx
-    g = Interval(gamma) if isinstance(x, Interval) else gamma
-    c, s = np.cos(g), np.sin(g)
-    return np.arctan2(c * cross - s * dot, c * dot + s * cross)
-
-
-def bearing_sides(x, y, li, lj, gamma, eps):
-    """``|x - L_i| |x - L_j|`` times ``(sin(r + eps), -sin(r - eps))``, ``r = gamma_ij - gamma``.
-
-    Both are >= 0 exactly when ``|wrap(gamma_ij - gamma)| <= eps`` (for eps < pi/2): the same
-    constraint as :func:`bearing_residual`, written as two cross products with the rotated
-    vectors, polynomial in x and free of atan2's branch cut (where the residual is near
-    ±pi, on the other arc of the circle, interval atan2 cannot exclude a box). Float arrays or
-    ``Interval`` boxes, from one formula; at the landmarks both vanish.
-    """
-    ux, uy = x - lj[0], y - lj[1]
-    wx, wy = x - li[0], y - li[1]
-    dot = ux * wx + uy * wy
-    cross = ux * wy - uy * wx
-    g, e = (Interval(gamma), Interval(eps)) if isinstance(x, Interval) else (gamma, eps)
-    lo, hi = g - e, g + e
-    return cross * np.cos(lo) - dot * np.sin(lo), dot * np.sin(hi) - cross * np.cos(hi)
-
-
 def exact_tests(data: Measurements) -> list:
     """Two SIVIA tests per measurement: ``|bearing_residual| <= eps`` and its sign form.
 
-    The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`bearing_sides` states the
-    same set without a branch cut, so that boxes on the circle's other arc can be excluded.
+    The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`~.geometry.bearing_sides`
+    states the same set without a branch cut, so that boxes on the circle's other arc can be
+    excluded.
     """
     tests = []
     for k in range(len(data)):
@@ -466,8 +427,6 @@ __all__ = [
     "Measurements",
     "Ring",
     "Rings",
-    "bearing_residual",
-    "bearing_sides",
     "bound_ellipse_quadratics",
     "certify_contains",
     "circle",
@@ -482,5 +441,4 @@ __all__ = [
     "prior_box",
     "ring_rows",
     "rings",
-    "wrap_angle",
 ]
