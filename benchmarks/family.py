@@ -48,6 +48,10 @@ class Family:
     isolated : bool
         Run each (serial) task in a fresh child process, for code that changes process-wide
         state; codac, for one, leaves the FPU rounding mode set to upward.
+    cost : callable
+        ``cost(task) -> float``, the task's rough cost in seconds on one core. Parallel tasks
+        start longest first, and the progress bar's ETA weighs tasks by it; results.json
+        records the measured ``task_seconds`` to check it against. Default: 1 per task.
     """
 
     name: str
@@ -58,6 +62,7 @@ class Family:
     run: Callable[[dict], dict]
     parallel: bool = True
     isolated: bool = False
+    cost: Callable[[dict], float] = lambda task: 1.0
 
     def __post_init__(self):
         if self.kind not in KINDS:
