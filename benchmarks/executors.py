@@ -24,6 +24,7 @@ from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 
 EXECUTORS = ("process", "dask")
+CONNECT_TIMEOUT = "10s"  # an unreachable scheduler fails fast (dask's default waits 30 s)
 
 
 class _Inline:
@@ -109,7 +110,7 @@ def _dask_client(jobs: int, scheduler: str | None):
             'the dask executor needs dask.distributed: pip install "optbound[dask]"'
         ) from None
     if scheduler is not None:
-        with Client(scheduler) as client:
+        with Client(scheduler, timeout=CONNECT_TIMEOUT) as client:
             yield client
         return
     with (

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 SUITES = ("tiny", "quick", "full")
-KINDS = ("tightness", "recursive", "speed")
+KINDS = ("tightness", "recursive", "speed", "papers")
 
 
 @dataclass(frozen=True)
@@ -33,8 +33,9 @@ class Family:
         Short identifier used in results.json, CSV and file names.
     title : str
         Human-readable heading for the report.
-    kind : {"tightness", "recursive", "speed"}
-        Decides how the report presents the records.
+    kind : {"tightness", "recursive", "speed", "papers"}
+        Decides how the report presents the records (``papers``: each record's Markdown
+        and its attached figures).
     requires : tuple of str
         ``"module:attribute"`` names the family needs; a family whose requirement is missing
         is reported as skipped (with the reason) instead of failing the run.

@@ -20,6 +20,7 @@ import os
 import platform
 import time
 import warnings
+from collections.abc import Callable
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -42,6 +43,7 @@ def run_suite(
     names: list[str] | None = None,
     executor: str = "process",
     scheduler: str | None = None,
+    where: Callable[[dict], bool] | None = None,
 ) -> dict:
     """Run every available family of ``suite`` and return the results dict.
 
@@ -61,6 +63,9 @@ def run_suite(
         Where parallel tasks run (:mod:`benchmarks.executors`); the results are the same.
     scheduler : str, optional
         Address of a running Dask scheduler (implies ``executor="dask"``).
+    where : callable, optional
+        Run only the tasks for which ``where(task)`` is true (``optbound repro KEY`` selects
+        papers this way); the run is then not complete.
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
@@ -85,6 +90,7 @@ def run_suite(
         (fam, i, task, float(fam.cost(task)))
         for fam in runnable
         for i, task in enumerate(fam.tasks(suite, seed))
+        if where is None or where(task)
     ]
     # Longest first: a long task started last would leave the other workers idle at the end.
     pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
@@ -112,7 +118,8 @@ def run_suite(
         "jobs": jobs,
         "executor": "dask" if scheduler else executor,
         "families_run": [fam.name for fam in fams],
-        "complete": not names or set(names) >= {f.name for f in registered_families()},
+        "complete": where is None
+        and (not names or set(names) >= {f.name for f in registered_families()}),
         "started": started.isoformat(timespec="seconds"),
         "wall_time_s": time.perf_counter() - start,
         "load_average": _load_average(),
@@ -158,6 +165,7 @@ def _family_entry(fam: Family) -> dict:
         "warnings": [],
         "errors": [],
         "task_seconds": [],
+        "attachments": {},
     }
 
 
@@ -195,6 +203,7 @@ def _merge(entry: dict, index: int, result: dict) -> None:
         entry[key].extend({**item, "task_index": index} for item in result.get(key, []))
     for key in ("notes", "warnings"):
         entry[key].extend(n for n in result.get(key, []) if n not in entry[key])
+    entry["attachments"].update(result.get("attachments", {}))
     entry["task_seconds"].append([index, round(result["seconds"], 4)])
 
 

@@ -92,6 +92,8 @@ def _family_section(name: str, fam: dict, out: Path) -> list[str]:
             parts += _tightness_section(name, fam["records"], out)
         elif fam["kind"] == "recursive":
             parts += _recursive_section(fam["records"], out)
+        elif fam["kind"] == "papers":
+            parts += papers_section(fam["records"])
         else:
             parts.append(_speed_table(fam["records"]))
     parts += [f"> {note}" for note in fam["notes"]]
@@ -220,6 +222,32 @@ def _k_table(records: list[dict], field: str) -> str:
         "worst (max) instance",
     ]
     return markdown_table(headers, rows)
+
+
+PAPERS_NOTE = (
+    "One `quantity | paper | optbound` table per reproduction script (`papers_repro/`): the "
+    '**paper** column holds values and claims typed from the paper (quoted; "—" where the '
+    "paper gives none), the **optbound** column is computed by the script in this run."
+)
+
+
+def papers_section(records: list[dict], level: int = 3) -> list[str]:
+    """Each script's Markdown, its headings moved to ``level``, then its figures."""
+    parts = [PAPERS_NOTE]
+    for rec in records:
+        variant = " (quick variant)" if rec["quick"] else ""
+        parts.append(f"Paper **{rec['paper']}**, `papers_repro/{rec['script']}.py`{variant}:")
+        parts.append(_demote(rec["markdown"], level))
+        parts.extend(f"![{Path(fig).stem}]({fig})" for fig in rec["figures"])
+    return parts
+
+
+def _demote(markdown: str, level: int) -> str:
+    """Headings of ``markdown`` shifted so that its top level becomes ``level``."""
+    lines = markdown.splitlines()
+    depths = [len(line) - len(line.lstrip("#")) for line in lines if line.startswith("#")]
+    shift = level - min(depths) if depths else 0
+    return "\n".join("#" * shift + line if line.startswith("#") else line for line in lines)
 
 
 def _speed_table(records: list[dict]) -> str:

@@ -22,6 +22,8 @@ def headline_rows(results: dict) -> list[tuple[str, str]]:
             rows.extend(_tightness_rows(name, fam["records"]))
         elif fam["kind"] == "recursive":
             rows.extend(_recursive_rows(fam["records"]))
+        elif fam["kind"] == "papers":
+            rows.extend(_paper_rows(fam["records"]))
         else:
             rows.extend(_speed_rows(fam))
     return rows
@@ -46,6 +48,15 @@ def _recursive_rows(records: list[dict]) -> list[tuple[str, str]]:
         if low["n"]:
             text += f"; vs lower bound on the optimum: median {fmt_ratio(low['median'])}"
         rows.append((f"recursive · analytic filter after k={k} strips / batch SDP", text))
+    return rows
+
+
+def _paper_rows(records: list[dict]) -> list[tuple[str, str]]:
+    rows = []
+    for (paper,), recs in group(records, ("paper",)).items():
+        names = ", ".join(f"`{rec['script']}`" for rec in recs)
+        variant = "quick variants" if all(rec["quick"] for rec in recs) else "full"
+        rows.append((f"papers · {paper}", f"reproduced by {names} ({variant}); tables in report"))
     return rows
 
 

@@ -6,7 +6,7 @@ import tempfile
 from pathlib import Path
 
 #: Files whose presence marks a folder as holding a report of optbound bench or repro.
-REPORT_MARKERS = ("results.json", "report.md", "papers.md")
+REPORT_MARKERS = ("results.json", "report.md")
 
 
 class OutDirError(ValueError):
