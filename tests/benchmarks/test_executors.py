@@ -11,12 +11,27 @@ def _square(x):
     return x * x
 
 
-def _records(results):
-    """Every record without its timings (``*_s`` fields), which differ from run to run."""
-    return {
-        name: [{k: v for k, v in rec.items() if not k.endswith("_s")} for rec in fam["records"]]
-        for name, fam in results["families"].items()
-    }
+def _assert_same_records(a, b):
+    """Same records, field by field, except timings (``*_s``), which differ from run to run.
+
+    SDP-derived floats may differ in the last digits: a worker's first solve of a problem
+    shape goes through ``problem.solve``, later ones through the direct Clarabel path
+    (``optimal/solver.py``), which agree to about 1e-9; which task comes first in a worker
+    depends on scheduling, with any executor.
+    """
+    assert a.keys() == b.keys()
+    for name in a:
+        recs_a, recs_b = a[name]["records"], b[name]["records"]
+        assert len(recs_a) == len(recs_b) > 0, name
+        for ra, rb in zip(recs_a, recs_b, strict=True):
+            assert ra.keys() == rb.keys()
+            for key in ra:
+                if key.endswith("_s"):
+                    continue
+                if isinstance(ra[key], float) and isinstance(rb[key], float):
+                    assert ra[key] == pytest.approx(rb[key], rel=1e-7, abs=1e-12), (name, key)
+                else:
+                    assert ra[key] == rb[key], (name, key)
 
 
 @pytest.mark.parametrize(("kind", "jobs"), [("process", 1), ("process", 2)])
@@ -57,5 +72,4 @@ def test_dask_local_cluster_gives_the_same_results_as_jobs():
     dask = runner.run_suite("tiny", seed=2, jobs=2, progress=False, names=names, executor="dask")
     pool = runner.run_suite("tiny", seed=2, jobs=2, progress=False, names=names)
     assert dask["meta"]["executor"] == "dask"
-    assert _records(dask) == _records(pool)
-    assert all(fam["records"] for fam in dask["families"].values())
+    _assert_same_records(dask["families"], pool["families"])
