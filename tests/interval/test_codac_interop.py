@@ -84,7 +84,8 @@ theirs = codac.sivia(codac.IntervalVector([[-2.5, 2.5], [-2, 2]]),
 q = from_codac(theirs)
 print(json.dumps({
   'lo': back.lo.tolist(), 'hi': back.hi.tolist(),
-  'empty': [empty.is_empty.tolist(), bool(empty_scalar.is_empty)], 'box': [box.lo.tolist(), box.hi.tolist()],
+  'empty': [empty.is_empty.tolist(), bool(empty_scalar.is_empty)],
+  'box': [box.lo.tolist(), box.hi.tolist()],
   'rows': [rows.lo.tolist(), rows.hi.tolist()], 'scalar': [float(scalar.lo), float(scalar.hi)],
   'sizes': {k: len(v) for k, v in parts.items()},
   'first_inner': [[parts['inner'][0][i].lb(), parts['inner'][0][i].ub()] for i in range(2)],
