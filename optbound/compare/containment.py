@@ -53,5 +53,29 @@ def max_level(outer, inner) -> float:
 
 
 def contains(outer, inner, tol: float = 1e-9) -> bool:
-    """True if the ellipsoid ``inner`` lies in ``outer`` (max level <= 1 + tol)."""
+    """True if the ellipsoid ``inner`` lies in ``outer`` up to the relative tolerance ``tol``.
+
+    The test is ``max_level(outer, inner) <= 1 + tol``: ``inner`` lies in ``outer`` scaled
+    about its centre by ``sqrt(1 + tol)`` (about ``1 + tol / 2``; 5e-10 for the default).
+    ``max_level`` is computed in float64 from Cholesky factors and an eigendecomposition, so
+    for two equal ellipsoids, or an inner one touching the outer, it comes out at 1 up to a
+    few ulps times the condition number of ``outer``'s shape; ``tol`` absorbs that. It is
+    therefore a numerical comparison of two bounds (e.g. an analytic bound against an SDP
+    optimum), not a guarantee: ``tol=0`` asks for ``max_level <= 1`` exactly in float64,
+    which can still be off by that rounding either way.
+
+    Parameters
+    ----------
+    outer, inner : Ellipsoid
+        Ellipsoids of one dimension.
+    tol : float
+        Relative slack on the level, >= 0 (default 1e-9).
+
+    Raises
+    ------
+    ValueError
+        If ``tol`` is negative or not finite.
+    """
+    if not np.isfinite(tol) or tol < 0:
+        raise ValueError(f"tol must be a finite number >= 0, got {tol}")
     return max_level(outer, inner) <= 1.0 + tol

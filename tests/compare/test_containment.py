@@ -46,3 +46,13 @@ def test_hard_case_center_offset_orthogonal_to_the_long_axis():
     t = np.linspace(0, 2 * np.pi, 200_001)
     brute = np.max((0.9 * np.cos(t)) ** 2 + (0.1 + 0.1 * np.sin(t)) ** 2)
     assert max_level(outer, inner) == pytest.approx(brute, rel=1e-8)
+
+
+def test_tolerance_is_a_relative_slack_on_the_level():
+    outer = Ellipsoid([0.0, 0.0], np.eye(2))
+    slightly = Ellipsoid([0.0, 0.0], (1.0 + 1e-6) * np.eye(2))  # level 1 + 1e-6
+    assert not contains(outer, slightly)
+    assert contains(outer, slightly, tol=2e-6)
+    for bad in (-1e-9, float("nan")):
+        with pytest.raises(ValueError, match="tol must be"):
+            contains(outer, slightly, tol=bad)
