@@ -49,7 +49,10 @@ def max_level(outer, inner) -> float:
     t_min = 1e-15 * (abs(top) + gnorm)
     if slope(t_min) <= 0.0:
         return psi(t_min)  # hard case: the minimum sits at tau -> lambda_max
-    return psi(brentq(slope, t_min, gnorm, xtol=1e-15 * gnorm, rtol=4 * np.finfo(float).eps))
+    t_max = gnorm  # slope(gnorm) <= 0 in exact arithmetic; rounding can tip it over 0
+    while slope(t_max) > 0.0:
+        t_max *= 2.0
+    return psi(brentq(slope, t_min, t_max, xtol=1e-15 * gnorm, rtol=4 * np.finfo(float).eps))
 
 
 def contains(outer, inner, tol: float = 1e-9) -> bool:
