@@ -17,10 +17,11 @@ from collections.abc import Callable
 from pathlib import Path
 
 README = Path(__file__).resolve().parents[1] / "README.md"
+# The markers may be indented (a table inside a list item); the body gets their indentation.
 BLOCK = re.compile(
-    r"(<!-- BEGIN generated:(?P<name>[\w-]+) -->\n)(?P<body>.*?)"
-    r"(\n<!-- END generated:(?P=name) -->)",
-    re.S,
+    r"^(?P<indent>[ \t]*)<!-- BEGIN generated:(?P<name>[\w-]+) -->\n(?P<body>.*?)"
+    r"^[ \t]*<!-- END generated:(?P=name) -->",
+    re.S | re.M,
 )
 
 
@@ -73,8 +74,15 @@ def update(text: str, names: list[str]) -> str:
     fresh = {name: GENERATORS[name]() for name in names}
 
     def replace(m: re.Match) -> str:
-        body = fresh.get(m["name"], m["body"])
-        return m.group(1) + body + m.group(4)
+        indent, name = m["indent"], m["name"]
+        if name in fresh:
+            lines = fresh[name].strip("\n").splitlines()
+            body = "".join(f"{indent}{line}".rstrip() + "\n" for line in lines)
+        else:
+            body = m["body"]
+        return (
+            f"{indent}<!-- BEGIN generated:{name} -->\n{body}{indent}<!-- END generated:{name} -->"
+        )
 
     return BLOCK.sub(replace, text)
 

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from optbound.interval._fenv import round_to_nearest
 from tests.readme_tables import BLOCK, GENERATORS, blocks
 
 README = Path(__file__).resolve().parents[1] / "README.md"
@@ -42,7 +43,9 @@ def test_readme_python_block_runs(name, code, tmp_path, monkeypatch):
 
     matplotlib.use("Agg")
     monkeypatch.chdir(tmp_path)
-    exec(compile(code, f"{README}:{name}", "exec"), {"__name__": "__readme__"})
+    # A block may import codac, which sets round-upward process-wide: give the mode back.
+    with round_to_nearest():
+        exec(compile(code, f"{README}:{name}", "exec"), {"__name__": "__readme__"})
 
 
 def _tables(text: str) -> list[str]:

@@ -6,8 +6,8 @@ libraries in the same process may change the mode process-wide: codac's interval
 gaol, sets round-upward when codac is imported and relies on it. :func:`round_to_nearest`
 switches to round-to-nearest for the duration of a block and then restores the caller's
 mode, so optbound computes correctly after ``import codac`` and codac keeps working after
-optbound ran. The mode is per thread; the switch costs two C calls (well under a microsecond
-each), and nothing when the mode is already round-to-nearest.
+optbound ran. The mode is per thread; the guard costs two to four C calls (well under a
+microsecond each).
 
 The switch uses C99 ``fegetround``/``fesetround`` from the C math library through ctypes.
 ``FE_TONEAREST`` is 0 on every platform glibc and macOS support; the caller's mode is put
@@ -65,16 +65,21 @@ def set_rounding(mode: int) -> None:
 
 @contextmanager
 def round_to_nearest() -> Iterator[None]:
-    """Compute in round-to-nearest inside the block; restore the caller's mode afterwards."""
+    """Compute in round-to-nearest inside the block; restore the caller's mode afterwards.
+
+    The mode is restored even if code inside the block changed it (e.g. ``import codac``).
+    """
     before = get_rounding()
-    if before is None or before == FE_TONEAREST:
+    if before is None:
         yield
         return
-    set_rounding(FE_TONEAREST)
+    if before != FE_TONEAREST:
+        set_rounding(FE_TONEAREST)
     try:
         yield
     finally:
-        set_rounding(before)
+        if get_rounding() != before:
+            set_rounding(before)
 
 
 def nearest(fn: F) -> F:
