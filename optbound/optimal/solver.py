@@ -47,6 +47,9 @@ from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import CLARABEL, dims
 from optbound.optimal.errors import SolverError
 
 SOLVERS = ("CLARABEL", "SCS")
+#: Clarabel's own solve time (its ``solve_time``, seconds) of the last fast-path solve in this
+#: process, or None; ``benchmarks/sdp_cache.py`` divides a whole call's time by it.
+last_clarabel_seconds: float | None = None
 # Clarabel gained PSD cones in 0.5.0; log det needs them together with exponential cones.
 _MIN_CLARABEL = (0, 5, 0)
 # Clarabel's relative duality gap is taken relative to max(1, |objective|), so for the small
@@ -148,6 +151,8 @@ def _fast_solve(problem: cp.Problem) -> bool:
     P = sp.csc_array((c.size, c.size))
     cones = dims_to_solver_cones(program.cone_dims)
     result = clarabel.DefaultSolver(P, c, A, b, cones, settings).solve()
+    global last_clarabel_seconds
+    last_clarabel_seconds = float(result.solve_time)
     if str(result.status) != "Solved":
         return False
     x = {program.x.id: np.asarray(result.x)}
