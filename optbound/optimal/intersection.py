@@ -268,7 +268,11 @@ def outer_ellipsoid(
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
         bound on points of the set pushed toward its extreme points; see
-        ``optbound.optimal.lower``).
+        ``optbound.optimal.lower``). Cost: about 10 to 40 times the call without it, e.g.
+        0.08 s against 5 ms (2-D, 10 strips), 0.19 s against 6 ms (3-D, 10 strips), 0.67 s
+        against 47 ms (4-D, 50 strips) on the 2-core development VM (``python -m
+        benchmarks.lower_bound_cost`` measures it; before its Khachiyan iteration was compiled
+        it was 2 to 4 times slower). Leave it off unless the bracket is needed.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 
