@@ -7,7 +7,13 @@ from pathlib import Path
 from optbound.report import figures
 from optbound.report.headline import HEADERS, headline_rows
 from optbound.report.results import write_csv
-from optbound.report.summary import group, ratio_stats, worst_label
+from optbound.report.summary import (
+    DEGENERATE_GAP,
+    group,
+    ratio_stats,
+    without_degenerate_lower,
+    worst_label,
+)
 from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds, markdown_table
 
 REPORT_FILE = "report.md"
@@ -185,12 +191,21 @@ def _recursive_section(records: list[dict], out: Path) -> list[str]:
         _k_table(records, "ratio"),
     ]
     if any(rec.get("lower_ratio") is not None for rec in records):
+        cleaned, flagged = without_degenerate_lower(records)
         parts += [
             "The same volumes divided by a lower bound on the smallest outer ellipsoid (the "
             "minimum-volume ellipsoid of points sampled in the exact set): an upper bound on "
             "the recursion's true loss, which lies between the two tables.",
-            _k_table(records, "lower_ratio"),
+            _k_table(cleaned, "lower_ratio"),
         ]
+        if flagged:
+            where = "; ".join(worst_label(rec) for rec in flagged[:MAX_ERRORS_SHOWN])
+            parts.append(
+                f"**{len(flagged)} degenerate lower bound(s)** (SDP / lower bound above "
+                f"{DEGENERATE_GAP:g}: the sampled points collapsed, not a real gap) are left out "
+                f"of this table and of the figure's dotted lines, counted under \"no lower "
+                f'bound": {where}.'
+            )
     return [*parts, f"![recursive tightness]({png.name})"]
 
 

@@ -6,7 +6,7 @@ the README's bench section, so every number a reader sees first is computed here
 
 from __future__ import annotations
 
-from optbound.report.summary import group, ratio_stats
+from optbound.report.summary import group, ratio_stats, without_degenerate_lower
 from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds
 
 HEADERS = ("measure", "value")
@@ -44,9 +44,12 @@ def _recursive_rows(records: list[dict]) -> list[tuple[str, str]]:
     for k in sorted({ks[0], ks[len(ks) // 2], ks[-1]}):
         at_k = [rec for rec in records if rec["k"] == k]
         text = stats_text(ratio_stats(at_k))
-        low = ratio_stats(at_k, "lower_ratio")
+        cleaned, flagged = without_degenerate_lower(at_k)
+        low = ratio_stats(cleaned, "lower_ratio")
         if low["n"]:
             text += f"; vs lower bound on the optimum: median {fmt_ratio(low['median'])}"
+        if flagged:
+            text += f" ({len(flagged)} degenerate lower bound(s) left out)"
         rows.append((f"recursive · analytic filter after k={k} strips / batch SDP", text))
     return rows
 
