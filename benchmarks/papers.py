@@ -19,8 +19,8 @@ from benchmarks.family import Family, task_seeds
 
 NAME = "papers"
 ATTACHMENT_DIR = "papers"
-#: Rough seconds per script (the first cvxpy import included); the full variants sweep more.
-COST = {"tiny": 2.0, "quick": 2.0, "full": 6.0}
+#: Rough seconds per script, quick and full variants (the first cvxpy import included).
+COST = {True: 2.0, False: 6.0}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
@@ -68,7 +68,7 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    return COST["full" if not task["quick"] else "quick"]
+    return COST[task["quick"]]
 
 
 FAMILY = Family(
