@@ -182,7 +182,8 @@ def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys):
     assert "typed from the paper" in text
     pngs = sorted((tmp_path / "papers" / "ljmw97_appendix_a").glob("*.png"))
     assert pngs and all(f"(papers/ljmw97_appendix_a/{p.name})" in text for p in pngs)
-    assert "attachments" not in (tmp_path / "results.json").read_text()
+    saved = load_results(tmp_path)["families"]["papers"]["attachments"]
+    assert saved == sorted(f"papers/ljmw97_appendix_a/{p.name}" for p in pngs)  # names only
 
 
 def test_bench_includes_the_papers(bench_dir):

@@ -17,8 +17,7 @@ def save_results(results: dict, out_dir: str | Path) -> Path:
     """Write ``results`` to ``out_dir/results.json`` (strict JSON: no NaN or infinity).
 
     A family's ``attachments`` (``{relative path: base64 bytes}``, e.g. the figures of the
-    papers' scripts) are written as files under ``out_dir`` and left out of the JSON; its
-    records name them.
+    papers' scripts) are written as files under ``out_dir``; the JSON keeps their names.
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -28,7 +27,8 @@ def save_results(results: dict, out_dir: str | Path) -> Path:
             target = out / rel
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(base64.b64decode(data))
-        families[name] = {k: v for k, v in fam.items() if k != "attachments"}
+        # The JSON keeps the attachments' names only (the report links them).
+        families[name] = {**fam, "attachments": sorted(fam.get("attachments", {}))}
     path = out / RESULTS_FILE
     text = json.dumps({**results, "families": families}, indent=1, allow_nan=False)
     path.write_text(text + "\n")
