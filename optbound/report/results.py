@@ -28,7 +28,9 @@ def save_results(results: dict, out_dir: str | Path) -> Path:
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(base64.b64decode(data))
         # The JSON keeps the attachments' names only (the report links them).
-        families[name] = {**fam, "attachments": sorted(fam.get("attachments", {}))}
+        families[name] = fam
+        if "attachments" in fam:
+            families[name] = {**fam, "attachments": sorted(fam["attachments"])}
     path = out / RESULTS_FILE
     text = json.dumps({**results, "families": families}, indent=1, allow_nan=False)
     path.write_text(text + "\n")
