@@ -11,6 +11,7 @@ the wall time of a cached ``outer_ellipsoid`` call (without the lower bound).
 
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -92,6 +93,7 @@ def table(dims=DIMS, ks=KS) -> str:
                 f"| {n} | {k} | {_chain(cell, '{}/lower', '.3g')} "
                 f"| {_chain(cell, 'recursive/{}', '.3g')} | {_chain(times, '{} ms', '.2g')} |"
             )
+    lines.append(f"\n1-min load average at the end of the run: {os.getloadavg()[0]:.1f}.")
     return "\n".join(lines)
 
 
