@@ -11,6 +11,9 @@ from __future__ import annotations
 from tqdm import tqdm
 
 _TOTAL_FORMAT = "{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, cost-weighted]"
+# No per-family ETA: with the longest tasks first, a family's tasks start at different times,
+# so its own rate says nothing about the time left; only the total's cost-weighted ETA does.
+_FAMILY_FORMAT = "{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt}"
 
 
 class Progress:
@@ -24,7 +27,12 @@ class Progress:
         self.total = tqdm(total=total, desc=title, bar_format=_TOTAL_FORMAT, position=0)
         width = max(len(name) for name in families)
         self.bars = {
-            name: tqdm(total=len(costs), desc=f"  {name:<{width}}", position=i + 1, unit="task")
+            name: tqdm(
+                total=len(costs),
+                desc=f"  {name:<{width}}",
+                position=i + 1,
+                bar_format=_FAMILY_FORMAT,
+            )
             for i, (name, costs) in enumerate(families.items())
         }
 
