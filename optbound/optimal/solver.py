@@ -139,6 +139,20 @@ def _clarabel_data(
     return np.ravel(q[:-1]), float(q[-1]), A, b
 
 
+def _fixed_parts(program, n: int):
+    """Clarabel's zero quadratic term, cone list and settings of a compiled program: the same
+    for every re-solve, so built once per program (about 0.1 ms saved per call)."""
+    parts = getattr(program, "_optbound_fixed", None)
+    if parts is None:
+        parts = (
+            sp.csc_array((n, n)),
+            dims_to_solver_cones(program.cone_dims),
+            CLARABEL.parse_solver_opts(False, ATTEMPTS["CLARABEL"][0]),
+        )
+        program._optbound_fixed = parts
+    return parts
+
+
 def _fast_solve(problem: cp.Problem) -> bool:
     """Re-solve a compiled ``problem`` with Clarabel directly; True if Clarabel "Solved" it."""
     import clarabel
@@ -147,9 +161,7 @@ def _fast_solve(problem: cp.Problem) -> bool:
     if program is None:
         return False
     c, offset, A, b = _clarabel_data(problem, program)
-    settings = CLARABEL.parse_solver_opts(False, ATTEMPTS["CLARABEL"][0])
-    P = sp.csc_array((c.size, c.size))
-    cones = dims_to_solver_cones(program.cone_dims)
+    P, cones, settings = _fixed_parts(program, c.size)
     result = clarabel.DefaultSolver(P, c, A, b, cones, settings).solve()
     global last_clarabel_seconds
     last_clarabel_seconds = float(result.solve_time)
