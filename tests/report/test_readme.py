@@ -1,3 +1,5 @@
+import pytest
+
 from optbound.report.readme import BEGIN, END, headline_markdown, update_readme
 from tests.report.sample import sample_results
 
@@ -49,8 +51,6 @@ def test_headline_states_where_the_numbers_come_from():
 
 
 def test_only_a_complete_default_run_may_write_the_headline(tmp_path):
-    import pytest
-
     path = tmp_path / "README.md"
     path.write_text(README)
     for change, message in (
