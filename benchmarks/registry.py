@@ -17,6 +17,7 @@ FAMILY_MODULES = (
     "benchmarks.speed_analytic",
     "benchmarks.speed_sdp",
     "benchmarks.speed_sivia",
+    "benchmarks.papers",
 )
 
 

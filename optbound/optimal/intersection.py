@@ -268,7 +268,12 @@ def outer_ellipsoid(
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
         bound on points of the set pushed toward its extreme points; see
-        ``optbound.optimal.lower``).
+        ``optbound.optimal.lower``). Cost: about 10 to 20 times the call without it, e.g.
+        0.09 s against 7 ms (2-D, 10 strips), 0.16 s against 8 ms (3-D, 10 strips), 0.62 s
+        against 62 ms (4-D, 50 strips), medians on the shared 2-core development VM at load
+        average 2.4 (``python -m benchmarks.lower_bound_cost``; before its inner loops were
+        compiled with numba it was 1.6 to 3 times slower). Leave it off unless the bracket is
+        needed.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 
