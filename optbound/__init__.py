@@ -12,7 +12,11 @@ from __future__ import annotations
 import importlib
 import importlib.util
 
-from optbound.sets import (
+from optbound import _jit_cache
+
+_jit_cache.refresh()  # before any compiled kernel is loaded from numba's cache
+
+from optbound.sets import (  # noqa: E402
     Box,
     ConvexSet,
     Ellipsoid,
