@@ -1,13 +1,6 @@
 """Points, segments, maps and poses: the predicates every model shares [GLH12, Appendix].
 
-Each predicate is written **once**, with ordinary arithmetic, and serves two purposes:
-
-- called with float arrays it evaluates on points (simulation, sampling, plotting);
-- called with :class:`~optbound.interval.Interval` arrays it is its own natural inclusion
-  function: the result encloses the value over every point of the boxes, so its sign (read with
-  ``< 0`` / ``> 0``, which return :class:`~optbound.interval.Tri` arrays on intervals) is a
-  guaranteed answer for whole boxes [GLH12, Sect. 3], [LJMW97, Sect. 3.2].
-
+Written once for float points and interval boxes (see :mod:`optbound.localization.geometry`).
 A point is a pair ``(x, y)`` of broadcastable coordinate arrays (floats or intervals); a
 segment is a pair of points. Point evaluation rounds to nearest (a sign decided on points near
 a degenerate configuration may be wrong by rounding); pass point intervals
