@@ -40,7 +40,7 @@ from functools import cache
 import cvxpy as cp
 import numpy as np
 import scipy.sparse as sp
-from cvxpy.cvxcore.python import canonInterface
+from cvxpy.lin_ops.lin_op import CONSTANT_ID
 from cvxpy.reductions.solution import Solution
 from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import CLARABEL, dims_to_solver_cones
 
@@ -114,64 +114,136 @@ def _compiled(problem: cp.Problem):
     return program
 
 
-def _clarabel_data(
-    problem: cp.Problem, program
-) -> tuple[np.ndarray, float, sp.csc_array, np.ndarray]:
-    """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``."""
-    for reduction in problem._cache.solving_chain.reductions:
-        reduction.update_parameters(problem)
-    params = canonInterface.get_parameter_vector(
-        program.total_param_size,
-        program.param_id_to_col,
-        program.param_id_to_size,
-        lambda key: np.asarray(program.id_to_param[key].value),
-    )
-    q = program.q @ params
-    # [A, b] is a CSC matrix with a fixed pattern whose values are linear in the parameters
-    # (cvxpy's ``ReducedMat``).
-    program.reduced_A.cache()
-    values = program.reduced_A.reduced_mat @ params
-    indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
-    split = indptr[-2]
-    A = sp.csc_array((-values[:split], indices[:split], indptr[:-1]), shape=(rows, cols - 1))
-    b = np.zeros(rows)
-    b[indices[split:]] = values[split:]
-    return np.ravel(q[:-1]), float(q[-1]), A, b
+class _FastProgram:
+    """One compiled program, prepared for re-solves with Clarabel directly.
+
+    Built once per program (on its first fast re-solve), it holds what does not change between
+    re-solves: the sparsity pattern of ``A`` (cvxpy's ``ReducedMat``: the values of ``[A, b]``
+    are one sparse product with the parameter vector), Clarabel's zero ``P`` and cone list, the
+    parameter columns, and for each variable of the problem the entries of Clarabel's ``x`` that
+    make up its value. The latter map is read off cvxpy's own inverse reductions, evaluated once
+    at ``x = 1, 2, ..., N``; it is used only if every value is a plain selection of entries of
+    ``x`` (symmetric variables are: cvxpy stores their upper triangle), checked again at a
+    positive random ``x`` (positive because the inverses project onto the variables' domains,
+    e.g. ``nonneg``, which ``unpack`` also does). Otherwise ``variables`` is None and the inverse reductions run per solve.
+    """
+
+    def __init__(self, problem: cp.Problem, program) -> None:
+        self.program = program
+        # Parameters with attributes (e.g. PSD) are replaced by reduced copies in the compiled
+        # program, whose values the reductions' ``update_parameters`` set on every solve.
+        own = {param.id for param in problem.parameters()}
+        self.reduced_params = any(
+            key not in own for key in program.param_id_to_col if key != CONSTANT_ID
+        )
+        self.columns = [
+            (program.id_to_param[key], col, program.param_id_to_size[key])
+            for key, col in program.param_id_to_col.items()
+            if key != CONSTANT_ID
+        ]
+        self.constant_col = program.param_id_to_col.get(CONSTANT_ID)
+        program.reduced_A.cache()
+        self.values_map = program.reduced_A.reduced_mat
+        indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
+        self.split = indptr[-2]
+        self.b_rows = indices[self.split :]
+        n = cols - 1
+        self.A = sp.csc_array(
+            (np.zeros(self.split), indices[: self.split], indptr[:-1]), shape=(rows, n)
+        )
+        self.P = sp.csc_array((n, n))
+        self.cones = dims_to_solver_cones(program.cone_dims)
+        self.variables = self._selections(problem, n)
+
+    def parameter_vector(self, problem: cp.Problem) -> np.ndarray:
+        """cvxpy's parameter vector (``canonInterface.get_parameter_vector``), column order."""
+        if self.reduced_params:
+            for reduction in problem._cache.solving_chain.reductions:
+                reduction.update_parameters(problem)
+        params = np.zeros(self.program.total_param_size + 1)
+        for param, col, size in self.columns:
+            params[col : col + size] = np.ravel(param.value, order="F")
+        if self.constant_col is not None:
+            params[self.constant_col] = 1.0
+        return params
+
+    def data(self, params: np.ndarray) -> tuple[np.ndarray, float, sp.csc_array, np.ndarray]:
+        """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``.
+
+        ``A`` is the one cached matrix with new values (Clarabel copies its data)."""
+        q = self.program.q @ params
+        values = self.values_map @ params
+        self.A.data[:] = -values[: self.split]
+        b = np.zeros(self.A.shape[0])
+        b[self.b_rows] = values[self.split :]
+        return np.ravel(q[:-1]), float(q[-1]), self.A, b
+
+    @staticmethod
+    def _invert(problem: cp.Problem, x: np.ndarray, objective: float) -> Solution:
+        """Primal values of the problem's variables from Clarabel's ``x``, by cvxpy's own
+        inverses of its reductions (skipping the solver's, which recovers duals)."""
+        solution = Solution(cp.OPTIMAL, objective, {problem._cache.param_prog.x.id: x}, {}, {})
+        chain = problem._cache.solving_chain.reductions[:-1]
+        for reduction, inverse in reversed(
+            list(zip(chain, problem._cache.inverse_data, strict=True))
+        ):
+            solution = reduction.invert(solution, inverse)
+        return solution
+
+    def _selections(self, problem: cp.Problem, n: int) -> list | None:
+        coded = self._invert(problem, np.arange(1.0, n + 1.0), 0.0).primal_vars
+        check = np.random.default_rng(0).uniform(1.0, 2.0, n)
+        checked = self._invert(problem, check, 0.0).primal_vars
+        selections = []
+        for variable in problem.variables():
+            code = np.asarray(coded[variable.id], dtype=float)
+            index = np.rint(code).astype(np.intp) - 1
+            valid = np.array_equal(code, index + 1.0) and np.all((index >= 0) & (index < n))
+            recovered = variable.project(check[index])
+            if not valid or not np.array_equal(recovered, checked[variable.id]):
+                return None
+            selections.append((variable, index))
+        return selections
+
+    def unpack(self, problem: cp.Problem, x: np.ndarray, objective: float) -> None:
+        """Set the variables' values (and the problem's status) from Clarabel's ``x``."""
+        if self.variables is None:
+            problem.unpack(self._invert(problem, x, objective))
+            return
+        for variable, index in self.variables:
+            variable.save_value(variable.project(x[index]))
+        # What ``Problem.unpack`` sets, without re-evaluating the objective (e.g. a log det).
+        problem._status = cp.OPTIMAL
+        problem._value = -objective if isinstance(problem.objective, cp.Maximize) else objective
 
 
-def _fixed_parts(program, n: int):
-    """Clarabel's zero quadratic term and cone list of a compiled program: the same for every
-    re-solve, so built once per program. (The settings are parsed per solve: ``ATTEMPTS``
-    may change.)"""
-    parts = getattr(program, "_optbound_fixed", None)
-    if parts is None:
-        parts = (sp.csc_array((n, n)), dims_to_solver_cones(program.cone_dims))
-        program._optbound_fixed = parts
-    return parts
+def _fast_program(problem: cp.Problem) -> _FastProgram | None:
+    """The prepared compiled program of ``problem`` if the fast path can use it, else None."""
+    program = _compiled(problem)
+    if program is None:
+        return None
+    fast = getattr(program, "_optbound_fast", None)
+    if fast is None:
+        fast = _FastProgram(problem, program)
+        program._optbound_fast = fast
+    return fast
 
 
 def _fast_solve(problem: cp.Problem) -> bool:
     """Re-solve a compiled ``problem`` with Clarabel directly; True if Clarabel "Solved" it."""
     import clarabel
 
-    program = _compiled(problem)
-    if program is None:
+    fast = _fast_program(problem)
+    if fast is None:
         return False
-    c, offset, A, b = _clarabel_data(problem, program)
-    P, cones = _fixed_parts(program, c.size)
+    c, offset, A, b = fast.data(fast.parameter_vector(problem))
     settings = CLARABEL.parse_solver_opts(False, ATTEMPTS["CLARABEL"][0])
-    result = clarabel.DefaultSolver(P, c, A, b, cones, settings).solve()
+    result = clarabel.DefaultSolver(fast.P, c, A, b, fast.cones, settings).solve()
     global last_clarabel_seconds
     last_clarabel_seconds = float(result.solve_time)
     if str(result.status) != "Solved":
         return False
-    x = {program.x.id: np.asarray(result.x)}
-    solution = Solution(cp.OPTIMAL, result.obj_val + offset, x, {}, {})
-    # cvxpy's own inverses of its reductions (skipping the solver's, which recovers duals).
-    chain = problem._cache.solving_chain.reductions[:-1]
-    for reduction, inverse in reversed(list(zip(chain, problem._cache.inverse_data, strict=True))):
-        solution = reduction.invert(solution, inverse)
-    problem.unpack(solution)
+    fast.unpack(problem, np.asarray(result.x), result.obj_val + offset)
     return True
 
 
