@@ -35,7 +35,9 @@ def emptiness_template(n: int, k: int) -> tuple[cp.Problem, tuple[cp.Parameter, 
     return _cvx.require_dpp(problem), forms, tau
 
 
-def refuse_empty(forms: np.ndarray | Sequence[np.ndarray], errors: np.ndarray, tau: np.ndarray) -> None:
+def refuse_empty(
+    forms: np.ndarray | Sequence[np.ndarray], errors: np.ndarray, tau: np.ndarray
+) -> None:
     """Raise ``EmptyIntersectionError`` if ``sum tau_i F_i`` is positive definite with margin.
 
     ``errors[i]`` bounds the spectral-norm error of ``forms[i]``.

@@ -125,7 +125,8 @@ class _FastProgram:
     at ``x = 1, 2, ..., N``; it is used only if every value is a plain selection of entries of
     ``x`` (symmetric variables are: cvxpy stores their upper triangle), checked again at a
     positive random ``x`` (positive because the inverses project onto the variables' domains,
-    e.g. ``nonneg``, which ``unpack`` also does). Otherwise ``variables`` is None and the inverse reductions run per solve.
+    e.g. ``nonneg``, which ``unpack`` also does). Otherwise ``variables`` is None and the
+    inverse reductions run per solve.
     """
 
     def __init__(self, problem: cp.Problem, program) -> None:
