@@ -21,14 +21,16 @@ is never accepted.
 
 Fast re-solve (``primal_only=True``, Clarabel only): once a problem has been solved normally,
 its later solves skip the parts of ``problem.solve`` that a cached template does not need.
-cvxpy's compiled parameter map (``ParamConeProg``, built by the first solve) gives Clarabel's
-data as one sparse product with the parameter vector, Clarabel is called directly with the
-first ``ATTEMPTS`` setting, and only the primal values are mapped back, through cvxpy's own
-inverses of its reductions (e.g. the packing of symmetric variables). Dual values are not
-recovered (they keep those of an earlier solve), so only callers that read primal values opt
-in. Any Clarabel status but "Solved" falls back to the full path with its retries and
-refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same statuses and
-values.
+The first solve also prepares, once per compiled program (``_FastProgram``), what every
+re-solve shares: from cvxpy's compiled parameter map (``ParamConeProg``), Clarabel's ``A``
+with its fixed sparsity pattern, the parameter columns, the zero ``P`` and the cones, and for
+each variable the entries of Clarabel's ``x`` that form its value (read off cvxpy's own
+inverse reductions once). A re-solve is then two sparse products with the parameter vector,
+a fresh Clarabel solver with the first ``ATTEMPTS`` setting, and one selection per variable.
+Dual values are not recovered (they keep those of an earlier solve), so only callers that read
+primal values opt in. Any Clarabel status but "Solved" falls back to the full path with its
+retries and refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same
+statuses, values and certified ellipsoids.
 """
 
 from __future__ import annotations
@@ -203,7 +205,7 @@ class _FastProgram:
             recovered = variable.project(check[index])
             if not valid or not np.array_equal(recovered, checked[variable.id]):
                 return None
-            selections.append((variable, index))
+            selections.append((variable, index, _projection(variable, index)))
         return selections
 
     def unpack(self, problem: cp.Problem, x: np.ndarray, objective: float) -> None:
@@ -211,11 +213,24 @@ class _FastProgram:
         if self.variables is None:
             problem.unpack(self._invert(problem, x, objective))
             return
-        for variable, index in self.variables:
-            variable.save_value(variable.project(x[index]))
+        for variable, index, project in self.variables:
+            value = x[index]
+            variable.save_value(value if project is None else project(value))
         # What ``Problem.unpack`` sets, without re-evaluating the objective (e.g. a log det).
         problem._status = cp.OPTIMAL
         problem._value = -objective if isinstance(problem.objective, cp.Maximize) else objective
+
+
+def _projection(variable: cp.Variable, index: np.ndarray):
+    """What cvxpy's ``variable.project`` does to a selection ``x[index]``: nothing for a plain
+    variable, or for a symmetric one whose selection is symmetric (cvxpy would average it with
+    its transpose); the clipping at 0 for ``nonneg``; else ``project`` itself."""
+    attributes = {name for name, value in variable.attributes.items() if value}
+    if not attributes or (attributes == {"symmetric"} and np.array_equal(index, index.T)):
+        return None
+    if attributes == {"nonneg"}:
+        return lambda value: np.maximum(value, 0.0)
+    return variable.project
 
 
 def _fast_program(problem: cp.Problem) -> _FastProgram | None:
