@@ -26,6 +26,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from optbound.optimal._small import max_eig
 from optbound.optimal.errors import CertificationError
 from optbound.sets import Ellipsoid
 
@@ -45,7 +46,7 @@ def frobenius(matrices: np.ndarray) -> np.ndarray:
 
 
 def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
-    return float(np.linalg.eigvalsh(P - G)[-1])
+    return float(max_eig(P - G))
 
 
 def _smallest_inflation(

@@ -20,6 +20,7 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
+from optbound.optimal._small import min_eig
 from optbound.optimal.certify import frobenius, rounding_bound
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.solver import solve
@@ -49,7 +50,7 @@ def refuse_empty(
     # Frobenius norms bound the spectral norms from above: a larger margin, never a smaller.
     magnitude = float(tau @ frobenius(forms))
     margin = rounding_bound(size, magnitude) + float(tau @ errors)
-    if np.linalg.eigvalsh(S)[0] > margin:
+    if min_eig(S) > margin:
         raise EmptyIntersectionError(
             "the intersection is empty (certified: sum_i tau_i F_i is positive definite)"
         )

@@ -50,6 +50,7 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
+from optbound.optimal._small import min_eig, min_eigs
 from optbound.optimal.certify import certify_lmi, frobenius, rounding_bound
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
@@ -211,9 +212,9 @@ def _require_certificate(forms: np.ndarray) -> None:
     is unbounded, or bounded only by half-spaces, which the S-procedure cannot use alone.
     """
     parts = forms[:, :-1, :-1]
-    if np.any(np.linalg.eigvalsh(parts)[:, 0] < -_DEFINITE_RTOL):
+    if np.any(min_eigs(parts) < -_DEFINITE_RTOL):
         return  # an indefinite member (e.g. a ring's outside): leave it to the solver
-    if np.linalg.eigvalsh(parts.sum(axis=0))[0] <= _DEFINITE_RTOL:
+    if min_eig(parts.sum(axis=0)) <= _DEFINITE_RTOL:
         raise ValueError(
             "no ellipsoid can be certified: the quadratic parts of the members are not jointly "
             "positive definite (the intersection is unbounded, or bounded by half-spaces only; "
