@@ -132,7 +132,10 @@ class _FastProgram:
     """
 
     def __init__(self, problem: cp.Problem, program) -> None:
-        self.program = program
+        # No reference back to ``program``, which holds this object: no cycle that only the
+        # garbage collector could free when the template cache drops the problem.
+        self.param_size = program.total_param_size
+        self.q = program.q
         # Parameters with attributes (e.g. PSD) are replaced by reduced copies in the compiled
         # program, whose values the reductions' ``update_parameters`` set on every solve.
         own = {param.id for param in problem.parameters()}
@@ -163,7 +166,7 @@ class _FastProgram:
         if self.reduced_params:
             for reduction in problem._cache.solving_chain.reductions:
                 reduction.update_parameters(problem)
-        params = np.zeros(self.program.total_param_size + 1)
+        params = np.zeros(self.param_size + 1)
         for param, col, size in self.columns:
             params[col : col + size] = np.ravel(param.value, order="F")
         if self.constant_col is not None:
@@ -174,7 +177,7 @@ class _FastProgram:
         """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``.
 
         ``A`` is the one cached matrix with new values (Clarabel copies its data)."""
-        q = self.program.q @ params
+        q = self.q @ params
         values = self.values_map @ params
         self.A.data[:] = -values[: self.split]
         b = np.zeros(self.A.shape[0])
