@@ -60,6 +60,8 @@ _MIN_CLARABEL = (0, 5, 0)
 # Tighter gaps bring every quick-suite reference within 1.1e-5 of it, for ~9 % more time.
 # Where they cannot be reached (e.g. an MVEE of hundreds of points), the default gaps follow.
 _GAPS = {"tol_gap_abs": 1e-14, "tol_gap_rel": 1e-10}
+# Parameter maps with at most this many entries are kept dense (32 kB at the most).
+_DENSE_ENTRIES = 4096
 ATTEMPTS = {
     "CLARABEL": (
         {"max_step_fraction": 0.9, **_GAPS},
@@ -135,7 +137,7 @@ class _FastProgram:
         # No reference back to ``program``, which holds this object: no cycle that only the
         # garbage collector could free when the template cache drops the problem.
         self.param_size = program.total_param_size
-        self.q = program.q
+        self.q = _dense_if_small(program.q)
         # Parameters with attributes (e.g. PSD) are replaced by reduced copies in the compiled
         # program, whose values the reductions' ``update_parameters`` set on every solve.
         own = {param.id for param in problem.parameters()}
@@ -149,7 +151,7 @@ class _FastProgram:
         ]
         self.constant_col = program.param_id_to_col.get(CONSTANT_ID)
         program.reduced_A.cache()
-        self.values_map = program.reduced_A.reduced_mat
+        self.values_map = _dense_if_small(program.reduced_A.reduced_mat)
         indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
         self.split = indptr[-2]
         self.b_rows = indices[self.split :]
@@ -222,6 +224,12 @@ class _FastProgram:
         # What ``Problem.unpack`` sets, without re-evaluating the objective (e.g. a log det).
         problem._status = cp.OPTIMAL
         problem._value = -objective if isinstance(problem.objective, cp.Maximize) else objective
+
+
+def _dense_if_small(matrix: sp.sparray | sp.spmatrix) -> sp.sparray | sp.spmatrix | np.ndarray:
+    """A small parameter map as a dense array: scipy's sparse product costs microseconds of
+    Python checks, a dense one of this size less than one."""
+    return matrix.toarray() if np.prod(matrix.shape) <= _DENSE_ENTRIES else matrix
 
 
 def _projection(variable: cp.Variable, index: np.ndarray):
