@@ -2,7 +2,7 @@
 
 numpy's ``eigvalsh`` spends about 4 µs per call on a 4 x 4 matrix in Python-level checks, as
 long as LAPACK takes; the same LAPACK routine through numba takes about 1 µs in all. A cached
-SDP call needs five of them (``intersection``, ``emptiness``, ``certify``), so on small problems
+SDP call needs four of them (``intersection``, ``emptiness``, ``certify``), so on small problems
 this is a few per cent of Clarabel's own time (``benchmarks/sdp_cache.py``).
 """
 
