@@ -96,7 +96,10 @@ def _clip(
 
 def _quadratic(a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
     if np.isfinite(lo) and np.isfinite(hi):
-        return QuadraticSet.from_bounds(a, lo, hi)
+        # ``a`` is a validated member's normal: only the order of the (clipped) range is left
+        # to check, and ``from_bounds`` refuses a wrong one with its message.
+        build = QuadraticSet._from_valid_bounds if lo <= hi else QuadraticSet.from_bounds
+        return build(a, lo, hi)
     if np.isfinite(hi):
         return QuadraticSet.from_halfspace(Halfspace(a, hi))
     return QuadraticSet.from_halfspace(Halfspace(-a, -lo))

@@ -46,6 +46,8 @@ def test_sdp_cache_measures_clarabels_own_time():
     numbers = sdp_cache.run(n_solves=3, seed=1)
     assert 0 < numbers["clarabel_s"] < numbers["cached_s"]
     assert numbers["call_over_clarabel"] > 1.0
+    assert 0 < numbers["repeated_clarabel_s"] < numbers["repeated_s"]
+    assert numbers["repeated_over_clarabel"] > 1.0
 
 
 def test_per_call_measures_seconds_per_call():
