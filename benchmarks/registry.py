@@ -14,6 +14,7 @@ FAMILY_MODULES = (
     "benchmarks.strip_tightness",
     "benchmarks.minkowski_tightness",
     "benchmarks.recursive_tightness",
+    "benchmarks.localization_tightness",
     "benchmarks.speed_analytic",
     "benchmarks.speed_sdp",
     "benchmarks.speed_sivia",
