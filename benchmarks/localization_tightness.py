@@ -196,11 +196,25 @@ def run(task: dict) -> dict:
                 truth_outside=int(not bound.contains(truth)),
             )
         records.append(rec)
-    out = {"records": records}
+    out = {"records": records, "notes": _notes(task, records)}
     if task.get("figure"):
         png = figure(bounds, paving, truth, task["variant"], float(np.degrees(eps)))
         out["attachments"] = {FIGURE: base64.b64encode(png).decode("ascii")}
     return out
+
+
+def _notes(task: dict, records: list[dict]) -> list[str]:
+    """Sentences for the report: the truth outside a bound, an unproven or failed bound."""
+    where = f"{task['variant']} instance, seed {task['seed']}"
+    notes = []
+    for rec in records:
+        if rec.get("truth_outside"):
+            notes.append(f"{where}: the true position is outside `{rec['criterion']}`.")
+        if rec.get("proven") is False:
+            notes.append(f"{where}: containment of `{rec['criterion']}` not proven.")
+        if "error" in rec:
+            notes.append(f"{where}: `{rec['criterion']}` refused: {rec['error']}")
+    return notes
 
 
 STYLES = {

@@ -18,6 +18,9 @@ FAMILY_MODULES = (
     "benchmarks.speed_analytic",
     "benchmarks.speed_sdp",
     "benchmarks.speed_sivia",
+    "benchmarks.speed_hs96",
+    "benchmarks.speed_glh12",
+    "benchmarks.speed_sonar",
     "benchmarks.papers",
 )
 
