@@ -143,7 +143,11 @@ def _scans(rng, omap: LandmarkMap, n: int):
     return poses[0], out
 
 
-def bench_tracker(rng: np.random.Generator, n_scans: int = SCANS) -> list[dict]:
+def bench_tracker(
+    rng: np.random.Generator, n_scans: int = SCANS, repeat: int = REPEAT
+) -> list[dict]:
+    """Tracker runs of ``n_scans`` scans per criterion against its bare analytic calls
+    (``repeat`` batches per reference call)."""
     full = office.office_map()
     omap = LandmarkMap(full.landmarks, shapes=full.shapes)  # no walls: all 22 seen
     start, scans = _scans(rng, omap, n_scans)
@@ -169,10 +173,12 @@ def bench_tracker(rng: np.random.Generator, n_scans: int = SCANS) -> list[dict]:
             * median_per_call(
                 lambda c=criterion, E=E, S=strip: analytic.intersect_strip(
                     E, S, criterion=c, dims=(0, 1)
-                )
+                ),
+                repeat,
             )
             + median_per_call(
-                lambda E=E, D=D: analytic.minkowski_sum(E, D, criterion="size_xy_psi")
+                lambda E=E, D=D: analytic.minkowski_sum(E, D, criterion="size_xy_psi"),
+                repeat,
             )
         )
         real = len(scans) / office.SCAN_RATE
@@ -242,38 +248,34 @@ def table(records: list[dict]) -> str:
 
 
 # --------------------------------------------------------------------------- bench family
-#: Parts per suite, as (part, argument): the tracker's scans, the reproduction's ``full``.
+#: Parts per suite, as (part, keyword arguments of its ``bench_*`` function).
 PARTS = {
-    "tiny": (("linear", None), ("associate", None)),
-    "quick": (("linear", None), ("associate", None), ("tracker", 10)),
-    "full": (("linear", None), ("associate", None), ("tracker", SCANS), ("repro", True)),
+    "tiny": (("linear", {}), ("associate", {})),
+    "quick": (("linear", {}), ("associate", {}), ("tracker", {"n_scans": 10, "repeat": 3})),
+    "full": (("linear", {}), ("associate", {}), ("tracker", {}), ("repro", {"full": True})),
 }
-COST = {"linear": 2.0, "associate": 1.0, "tracker": 0.25, "repro": 130.0}
+COST = {"linear": 2.0, "associate": 1.0, "tracker": 3.0, "repro": 130.0}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
     parts = PARTS[suite]
     seeds = task_seeds(seed, NAME, len(parts))
     return [
-        {"seed": s, "part": part, "arg": arg} for s, (part, arg) in zip(seeds, parts, strict=True)
+        {"seed": s, "part": part, "kwargs": dict(kwargs)}
+        for s, (part, kwargs) in zip(seeds, parts, strict=True)
     ]
 
 
 def run(task: dict) -> dict:
-    rng = np.random.default_rng(task["seed"])
-    part, arg = task["part"], task["arg"]
-    if part == "linear":
-        return {"records": bench_linear(rng)}
-    if part == "associate":
-        return {"records": bench_associate(rng)}
-    if part == "tracker":
-        return {"records": bench_tracker(rng, arg)}
-    return {"records": bench_repro(arg)}
+    if task["part"] == "repro":
+        return {"records": bench_repro(**task["kwargs"])}
+    bench = {"linear": bench_linear, "associate": bench_associate, "tracker": bench_tracker}
+    return {"records": bench[task["part"]](np.random.default_rng(task["seed"]), **task["kwargs"])}
 
 
 def cost(task: dict) -> float:
-    """Rough seconds (the tracker's cost grows with its scans)."""
-    return COST[task["part"]] * (task["arg"] if task["part"] == "tracker" else 1.0)
+    """Rough seconds (the full tracker part runs 4x the quick one's scans)."""
+    return COST[task["part"]] * (3.0 if task["kwargs"] == {} and task["part"] == "tracker" else 1)
 
 
 FAMILY = Family(

@@ -21,7 +21,7 @@ def test_hs96_parts_per_suite_and_no_office_run_before_full():
     assert parts["quick"] == ["linear", "associate", "tracker"]
     assert parts["full"] == ["linear", "associate", "tracker", "repro"]
     (full_repro,) = [t for t in speed_hs96.tasks("full", 0) if t["part"] == "repro"]
-    assert full_repro["arg"] is True  # the 10-lap run, in the full suite only
+    assert full_repro["kwargs"] == {"full": True}  # the 10-lap run, in the full suite only
 
 
 @pytest.mark.parametrize("part", ["linear", "associate"])
@@ -36,7 +36,7 @@ def test_hs96_tiny_parts_give_ratio_records(part):
 def test_hs96_tracker_records_pair_reference_and_ours():
     import numpy as np
 
-    records = speed_hs96.bench_tracker(np.random.default_rng(0), n_scans=2)
+    records = speed_hs96.bench_tracker(np.random.default_rng(0), n_scans=2, repeat=1)
     assert len(records) == 6
     for ref, ours in zip(records[::2], records[1::2], strict=True):
         assert ref["name"].startswith("bare analytic calls of the " + ours["name"])
