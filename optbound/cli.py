@@ -90,7 +90,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--suite",
         choices=SUITES,
         default="quick",
-        help="quick (default: under a minute on 2 idle cores, the papers' fast variants), full "
+        help="quick (default: minutes on 2 cores, the papers' fast variants), full "
         "(every family at full size and the papers' full scripts, spread over --jobs), tiny "
         "(a seconds-long smoke test of the same code path)",
     )

@@ -54,10 +54,91 @@ def _sivia_codac() -> str:
     return table(run())
 
 
+def _speed_analytic() -> str:
+    """Batch throughput of the analytic updates vs the plain numba kernel (full batch sizes)."""
+    import os
+
+    import numpy as np
+
+    from benchmarks import speed_analytic as sa
+    from optbound.report.tables import markdown_table
+
+    rng = np.random.default_rng(0)
+    batches = sa.BATCHES["full"]
+    strip, mink = sa.strip_timings(rng, batches), sa.minkowski_timings(rng, batches)
+
+    def cells(timings, key) -> list[str]:
+        ours, ref = timings[key]
+        if key == "one":
+            return [f"{ours * 1e6:.1f} µs", f"{ref * 1e6:.1f} µs", f"{ours / ref:.2f}"]
+        return [f"{key / ours / 1e6:.2f} M/s", f"{key / ref / 1e6:.2f} M/s", f"{ours / ref:.2f}"]
+
+    rows = [
+        ["one call" if key == "one" else f"{key:.0e}", *cells(strip, key), *cells(mink, key)]
+        for key in ("one", *batches)
+    ]
+    headers = (
+        "B",
+        "`intersect_strip_batch`",
+        "reference",
+        "time ratio",
+        "`minkowski_sum_batch`",
+        "reference",
+        "time ratio",
+    )
+    return (
+        f"Output of `python -m tests.readme_tables speed-analytic` (1-min load average "
+        f"{os.getloadavg()[0]:.1f}):\n\n" + markdown_table(headers, rows)
+    )
+
+
+def _localization() -> str:
+    """The localization family's BH instance (tiny suite, seed 0): every bound's area ratio."""
+    import os
+
+    from benchmarks import localization_tightness as lt
+    from optbound.report.tables import markdown_table
+
+    (task,) = lt.tasks("tiny", 0)
+    records = lt.run(task)["records"]
+    rows = [
+        (
+            f"`{r['criterion']}`",
+            "yes" if r["guaranteed"] else "no (linearized)",
+            f"[{r['area_lo']:.4f}, {r['area_hi']:.4f}]",
+            f"{r['ratio']:.2f}",
+            f"[{r['ratio_lo']:.2f}, {r['ratio_hi']:.2f}]",
+            f"{r['outside']} / {lt.SAMPLES}",
+            "yes" if r["truth_outside"] else "no",
+            {True: "yes", False: "no"}.get(r.get("proven"), "–"),
+        )
+        for r in records
+    ]
+    headers = (
+        "bound",
+        "guaranteed",
+        "area bracket [m²]",
+        "ratio (midpoints)",
+        "certified ratio bracket",
+        "exact-set points outside",
+        "truth outside",
+        "containment proven",
+    )
+    first = records[0]
+    return (
+        "Output of `python -m tests.readme_tables localization` (BH Sect. V geometry, eps = 4°, "
+        f"exact area in [{first['exact_lo']:.4f}, {first['exact_hi']:.4f}] m² by a paving of "
+        f"width {first['paving_width']:.4f} m; 1-min load average {os.getloadavg()[0]:.1f}):\n\n"
+        + markdown_table(headers, rows)
+    )
+
+
 GENERATORS: dict[str, Callable[[], str]] = {
     "battery": _battery,
     "clip-effect": _clip_effect,
     "sivia-codac": _sivia_codac,
+    "localization": _localization,
+    "speed-analytic": _speed_analytic,
 }
 
 

@@ -51,7 +51,7 @@ import numpy as np
 from optbound.analytic import lifted_update, parabola_arc_ellipse
 from optbound.interval import Paving, constraint, pave, tri_and
 from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
-from optbound.sets import Box, PolynomialLifting, PseudoEllipsoid, QuadraticSet
+from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
 
@@ -422,11 +422,94 @@ def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
     return [q for pair_rings in all_rings(data) for ring in pair_rings for q in ring.quadratics()]
 
 
+@dataclass(frozen=True)
+class EllipseBracket:
+    """Bracket of the smallest ellipse containing the exact set (:func:`best_ellipse`).
+
+    ``sdp``: the S-procedure SDP ellipse; ``boxes``: the MVEE of the paving's box corners;
+    ``best``: the smaller of the two (both certified outer ellipses); ``lower``: an area no
+    outer ellipse of the exact set can beat (weak duality, ``optimal.lower``).
+    """
+
+    sdp: Ellipsoid
+    boxes: Ellipsoid
+    best: Ellipsoid
+    lower: float
+
+
+def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
+    """Bracket of the smallest ellipse containing the exact set [BH, Sect. III-B, "Tighter bound"].
+
+    - ``sdp``: ``optimal.outer_ellipsoid`` of the rings [BH, eqs. (20)-(21)] ∩ the paving's
+      hull. The rings' "outside a disc" constraints are non-convex, the S-procedure relaxation
+      is loose, and the hull's four linear constraints (which contain the exact set and select
+      the arcs' part of the plane) are what make it usable; its ``lower_bound`` is a
+      weak-duality bound on points of the set (``optimal.lower``), valid for every outer
+      ellipse;
+    - ``boxes``: ``optimal.mvee`` of the corners of every inner and boundary box, certified to
+      contain them, hence (being convex) every box and the exact set.
+
+    Cost: one SDP with ``lower_bound=True`` (about 0.1-0.5 s) plus one MVEE over the corners.
+    """
+    from optbound import optimal  # cvxpy is imported only when a reference is asked for
+
+    sdp = optimal.outer_ellipsoid(
+        [*bound_ellipse_quadratics(data), paving.hull()], lower_bound=True
+    )
+    outer = paving.outer()
+    corners = np.unique(
+        np.concatenate([outer[:, [0, 1], [i, j]] for i in (0, 1) for j in (0, 1)]), axis=0
+    )
+    boxes = optimal.mvee(corners).ellipsoid
+    best = boxes if boxes.volume() < sdp.ellipsoid.volume() else sdp.ellipsoid
+    return EllipseBracket(sdp.ellipsoid, boxes, best, float(sdp.lower_bound))
+
+
+# ------------------------------------------------------------------------------- instances
+#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
+SECT5_PAIRS = ((2, 0), (0, 1), (1, 2))
+
+
+def bearings(x, landmarks, pairs=SECT5_PAIRS) -> np.ndarray:
+    """Noise-free relative bearings [BH, eq. (2)] seen from the point ``x``."""
+    L = np.asarray(landmarks, dtype=float)
+    ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
+    return wrap_angle([ang[i] - ang[j] for i, j in pairs])
+
+
+def random_instance(rng: np.random.Generator, pairs=SECT5_PAIRS):
+    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
+
+    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
+    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
+    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
+    need the crescent shape.
+    """
+    pairs = [tuple(p) for p in pairs]
+    margin = np.radians(3.0)
+    while True:
+        L = rng.uniform(-3.0, 3.0, (3, 2))
+        x = rng.uniform(-1.0, 1.0, 2)
+        eps = np.radians(rng.uniform(1.0, 8.0))
+        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
+        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
+            np.linalg.norm(L - x, axis=1)
+        )
+        if min(dists) > 0.3 and np.all(
+            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
+        ):
+            return L, pairs, wrap_angle(gam), eps, x
+
+
 __all__ = [
+    "SECT5_PAIRS",
     "BearingResult",
+    "EllipseBracket",
     "Measurements",
     "Ring",
     "Rings",
+    "bearings",
+    "best_ellipse",
     "bound_ellipse_quadratics",
     "certify_contains",
     "circle",
@@ -439,6 +522,7 @@ __all__ = [
     "localize",
     "measurements",
     "prior_box",
+    "random_instance",
     "ring_rows",
     "rings",
 ]

@@ -102,6 +102,8 @@ def _family_section(name: str, fam: dict, out: Path) -> list[str]:
             parts += papers_section(fam["records"])
         else:
             parts.append(_speed_table(fam["records"]))
+    elif not fam["notes"] and not fam["errors"]:
+        parts.append("No task in this suite.")
     if fam["kind"] != "papers":  # the papers' records place their own figures
         parts += [f"![{Path(name).stem}]({name})" for name in sorted(fam.get("attachments", []))]
     parts += [f"> {note}" for note in fam["notes"]]

@@ -15,7 +15,12 @@ cones of the sonar model [LJMW97], [KJWM00]) and :mod:`.polygons` (obstacles, wi
 certified box predicates for LUVIA [GLH12]).
 """
 
-from optbound.localization.geometry.bearings import bearing_residual, bearing_sides, wrap_angle
+from optbound.localization.geometry.bearings import (
+    bearing_gradient,
+    bearing_residual,
+    bearing_sides,
+    wrap_angle,
+)
 from optbound.localization.geometry.cones import (
     cone_candidates,
     distance,
@@ -52,6 +57,7 @@ __all__ = [
     "Point",
     "as_polygons",
     "as_segments",
+    "bearing_gradient",
     "bearing_residual",
     "bearing_sides",
     "cone_candidates",

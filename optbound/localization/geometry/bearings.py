@@ -50,3 +50,18 @@ def bearing_sides(x, y, li, lj, gamma, eps):
     g, e = (Interval(gamma), Interval(eps)) if isinstance(x, Interval) else (gamma, eps)
     lo, hi = g - e, g + e
     return cross * np.cos(lo) - dot * np.sin(lo), dot * np.sin(hi) - cross * np.cos(hi)
+
+
+def bearing_gradient(x, y, li, lj):
+    """Gradient ``(d gamma_ij / dx, d gamma_ij / dy)`` of [BH, eq. (2)] at float points.
+
+    ``d angle(x - L) = (-(y - y_L), x - x_L) / |x - L|^2``, the difference of the two
+    landmarks' terms. Float arrays only: it serves linearization (HS96-style strips), not
+    guaranteed tests.
+    """
+    gx, gy = 0.0, 0.0
+    for (lx, ly), sign in ((li, 1.0), (lj, -1.0)):
+        dx, dy = x - lx, y - ly
+        r2 = dx * dx + dy * dy
+        gx, gy = gx - sign * dy / r2, gy + sign * dx / r2
+    return gx, gy
