@@ -38,9 +38,8 @@ def _hull_of_products(p1, p2, p3, p4):
     lo = np.fmin(np.fmin(p1, p2), np.fmin(p3, p4))
     hi = np.fmax(np.fmax(p1, p2), np.fmax(p3, p4))
     # All four NaN only for [0, 0] times an interval unbounded on both sides: the product is 0.
-    return np.nan_to_num(lo, nan=0.0, posinf=INF, neginf=-INF), np.nan_to_num(
-        hi, nan=0.0, posinf=INF, neginf=-INF
-    )
+    # (np.where, not np.nan_to_num: the same values at a fifth of the cost on large arrays.)
+    return np.where(np.isnan(lo), 0.0, lo), np.where(np.isnan(hi), 0.0, hi)
 
 
 def mul(al, ah, bl, bh):
