@@ -11,18 +11,98 @@ bounds ``(+inf, -inf)`` there.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
-from optbound.interval._rounding import TRANSCENDENTAL_ULPS, down, down_nonneg, up, up_nonneg
+from optbound.interval._rounding import (
+    _CAP,
+    _EPS,
+    _TINY,
+    BASIC_ULPS,
+    TRANSCENDENTAL_ULPS,
+    down,
+    down_nonneg,
+    up,
+    up_nonneg,
+)
 
 INF = np.inf
+_MAX = _CAP[BASIC_ULPS]
+
+
+# Compiled element loops for +, - and *: the same IEEE operations as the array formulas
+# (``_rounding.down``/``up`` with one ulp, NaN-ignoring min/max), fused into one pass instead of
+# ~20 numpy temporaries per product on SIVIA's large box arrays.
+@njit(cache=True, inline="always")
+def _fmin(a, b):
+    """``np.fmin``: NaN only if both are NaN."""
+    if a != a:
+        return b
+    if b != b:
+        return a
+    return a if a <= b else b
+
+
+@njit(cache=True, inline="always")
+def _fmax(a, b):
+    """``np.fmax``: NaN only if both are NaN."""
+    if a != a:
+        return b
+    if b != b:
+        return a
+    return a if a >= b else b
+
+
+@njit(cache=True, inline="always")
+def _down(x):
+    return _fmin(x * (1.0 - np.copysign(_EPS, x)) - _TINY, _MAX)
+
+
+@njit(cache=True, inline="always")
+def _up(x):
+    return _fmax(x * (1.0 + np.copysign(_EPS, x)) + _TINY, -_MAX)
+
+
+@njit(cache=True)
+def _add_loop(al, ah, bl, bh, lo, hi):
+    for i in range(lo.size):
+        lo[i] = _down(al[i] + bl[i])
+        hi[i] = _up(ah[i] + bh[i])
+
+
+@njit(cache=True)
+def _sub_loop(al, ah, bl, bh, lo, hi):
+    for i in range(lo.size):
+        lo[i] = _down(al[i] - bh[i])
+        hi[i] = _up(ah[i] - bl[i])
+
+
+@njit(cache=True)
+def _mul_loop(al, ah, bl, bh, lo, hi):
+    for i in range(lo.size):
+        p1, p2, p3, p4 = al[i] * bl[i], al[i] * bh[i], ah[i] * bl[i], ah[i] * bh[i]
+        low = _fmin(_fmin(p1, p2), _fmin(p3, p4))
+        high = _fmax(_fmax(p1, p2), _fmax(p3, p4))
+        # All four NaN only for [0, 0] times an interval unbounded on both sides: 0.
+        lo[i] = _down(0.0 if low != low else low)
+        hi[i] = _up(0.0 if high != high else high)
+
+
+def _run(loop, al, ah, bl, bh):
+    """Broadcast the four bound arrays, run ``loop`` on flat copies, reshape the result."""
+    args = np.broadcast_arrays(al, ah, bl, bh)
+    shape = args[0].shape
+    flat = [np.ascontiguousarray(x, dtype=np.float64).reshape(-1) for x in args]
+    lo, hi = np.empty(flat[0].size), np.empty(flat[0].size)
+    loop(*flat, lo, hi)
+    return lo.reshape(shape), hi.reshape(shape)
 
 
 def add(al, ah, bl, bh):
-    return down(al + bl), up(ah + bh)
+    return _run(_add_loop, al, ah, bl, bh)
 
 
 def sub(al, ah, bl, bh):
-    return down(al - bh), up(ah - bl)
+    return _run(_sub_loop, al, ah, bl, bh)
 
 
 def neg(al, ah):
@@ -43,8 +123,7 @@ def _hull_of_products(p1, p2, p3, p4):
 
 
 def mul(al, ah, bl, bh):
-    lo, hi = _hull_of_products(al * bl, al * bh, ah * bl, ah * bh)
-    return down(lo), up(hi)
+    return _run(_mul_loop, al, ah, bl, bh)
 
 
 def scale(c: float, al, ah):
