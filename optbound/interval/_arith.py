@@ -88,10 +88,11 @@ def _mul_loop(al, ah, bl, bh, lo, hi):
 
 
 def _run(loop, al, ah, bl, bh):
-    """Broadcast the four bound arrays, run ``loop`` on flat copies, reshape the result."""
-    args = np.broadcast_arrays(al, ah, bl, bh)
-    shape = args[0].shape
-    flat = [np.ascontiguousarray(x, dtype=np.float64).reshape(-1) for x in args]
+    """Broadcast the four bound arrays, run ``loop`` on flat arrays, reshape the result."""
+    args = [np.asarray(x, dtype=np.float64) for x in (al, ah, bl, bh)]
+    shape = np.broadcast_shapes(*(x.shape for x in args))
+    # broadcast_to only where needed: its views are read-only (another compiled signature).
+    flat = [(x if x.shape == shape else np.broadcast_to(x, shape)).ravel() for x in args]
     lo, hi = np.empty(flat[0].size), np.empty(flat[0].size)
     loop(*flat, lo, hi)
     return lo.reshape(shape), hi.reshape(shape)
