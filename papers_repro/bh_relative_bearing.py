@@ -319,7 +319,7 @@ def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:
 # ------------------------------------------------------------------------------------ main
 def main(out_dir: Path, quick: bool = False) -> dict:
     """Run the Sect. V reproduction and the sweep; ``quick`` skips the L = 8 optimal reference
-    and shrinks the sweep (4 geometries, 1 with the area criterion) for the test suite."""
+    and shrinks the sweep (4 geometries, none with the area criterion) for the test suite."""
     out_dir = Path(out_dir)
     eps = np.radians(EPS_DEG)
     gammas = bearings(VEHICLE, LANDMARKS, PAIRS)

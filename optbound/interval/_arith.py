@@ -31,7 +31,9 @@ _MAX = _CAP[BASIC_ULPS]
 
 # Compiled element kernels for +, - and *: the same IEEE operations as the array formulas
 # (``_rounding.down``/``up`` with one ulp, NaN-ignoring min/max), fused into one pass instead of
-# ~20 numpy temporaries per product on SIVIA's large box arrays.
+# ~20 numpy temporaries per product on SIVIA's large box arrays. (Not ``_compiled.down``/``up``:
+# those cap an overflow at the largest float, ``_rounding`` one float below; results here stay
+# bit-identical to ``_rounding``'s.)
 @njit(cache=True, inline="always")
 def _fmin(a, b):
     """``np.fmin``: NaN only if both are NaN."""
