@@ -46,12 +46,8 @@ def _fmin(a, b):
 
 @njit(cache=True, inline="always")
 def _fmax(a, b):
-    """``np.fmax``: NaN only if both are NaN."""
-    if a != a:
-        return b
-    if b != b:
-        return a
-    return a if a >= b else b
+    """``np.fmax`` (negation is exact)."""
+    return -_fmin(-a, -b)
 
 
 @njit(cache=True, inline="always")
