@@ -41,7 +41,7 @@ FAULT_RATE = 0.05  # fraction of scans with one outlier bearing
 #: Outlier kinds: the next visible landmark (a gross wrong association), or a phantom
 #: reflector this far (m) from the true landmark, paired with it.
 FAULTS = {True: (None, 0.06), False: (None, 0.03, 0.06, 0.10)}
-FAULT_LAPS = {True: 0.5, False: 3.0}
+FAULT_LAPS = {True: 0.3, False: 3.0}
 CRITERIA = ("projection", "volume", "robust")
 SAMPLES = {True: 2, False: 10}
 

@@ -100,7 +100,7 @@ def run_one(case: dict, eps: float) -> dict:
 
 def _plan(quick: bool) -> tuple[list[tuple[str, int]], int, float]:
     if quick:
-        return [("random", 0), ("random", 2), ("added wall", 0)], 2, 0.1
+        return [("random", 0), ("random", 2), ("added wall", 0)], 1, 0.1
     kinds = [("random", k) for k in range(5)] + [("added wall", 0), ("removed wall", 0)]
     return kinds, 10, 0.05
 
@@ -109,7 +109,7 @@ def main(out_dir: Path | str, quick: bool = False, seed: int = 0) -> dict:
     """Run every (kind, k) on ``n`` random poses; success rates, set sizes and times.
 
     Full run: k = 0..4 random outliers and both wall changes, 10 poses each, eps = 0.05.
-    ``quick``: k in {0, 2} and an added wall, 2 poses each, eps = 0.1.
+    ``quick``: k in {0, 2} and an added wall, 1 pose each, eps = 0.1.
     """
     out_dir = Path(out_dir)
     plan, n, eps = _plan(quick)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
+from numba import njit
 
 # Leading coefficients below this (relative to the largest one) are dropped: the polynomial is
 # treated as one degree lower, and Newton polishing on the full polynomial restores precision.
@@ -21,11 +22,31 @@ IMAG_RTOL = 1e-6
 POLISH_STEPS = 4
 
 
-def _polyval(coeffs: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Evaluate row-wise polynomials (B, d+1), highest degree first, at x (B, k) by Horner."""
-    out = np.zeros_like(x)
-    for j in range(coeffs.shape[1]):
-        out = out * x + coeffs[:, j : j + 1]
+@njit(cache=True)
+def _horner(c: np.ndarray, x: float) -> float:
+    """One polynomial (highest degree first) at ``x``, Horner's scheme from 0."""
+    out = 0.0
+    for cj in c:
+        out = out * x + cj
+    return out
+
+
+@njit(cache=True)
+def _polish(c: np.ndarray, dc: np.ndarray, roots: np.ndarray) -> np.ndarray:
+    """Newton polishing of every root on its row's polynomial; a step is kept only if it is
+    finite and reduces |p|. Compiled: the tracker calls this once per update on one row, where
+    the array version was dominated by the overhead of ~50 tiny numpy operations."""
+    out = roots.copy()
+    for i in range(out.shape[0]):
+        for r in range(out.shape[1]):
+            x = out[i, r]
+            for _ in range(POLISH_STEPS):
+                value = _horner(c[i], x)
+                slope = _horner(dc[i], x)
+                trial = x - value / slope if slope != 0.0 else x
+                if np.isfinite(trial) and abs(_horner(c[i], trial)) < abs(value):
+                    x = trial
+            out[i, r] = x
     return out
 
 
@@ -66,15 +87,9 @@ def real_roots(coeffs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         roots[rows, :k] = z.real
         real[rows, :k] = np.abs(z.imag) <= IMAG_RTOL * (1.0 + np.abs(z.real))
 
-    # Newton polishing on the full polynomial; a step is kept only if it reduces |p|.
+    # Newton polishing on the full polynomial.
     dc = c[:, :-1] * np.arange(d, 0, -1)
-    for _ in range(POLISH_STEPS):
-        value = _polyval(c, roots)
-        slope = _polyval(dc, roots)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            trial = np.where(slope != 0, roots - value / slope, roots)
-        better = np.abs(_polyval(c, trial)) < np.abs(value)
-        roots = np.where(better & np.isfinite(trial), trial, roots)
+    roots = _polish(c, np.ascontiguousarray(dc), roots)
     return roots, real
 
 

@@ -11,18 +11,104 @@ bounds ``(+inf, -inf)`` there.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit, vectorize
 
-from optbound.interval._rounding import TRANSCENDENTAL_ULPS, down, down_nonneg, up, up_nonneg
+from optbound.interval._rounding import (
+    _CAP,
+    _EPS,
+    _TINY,
+    BASIC_ULPS,
+    TRANSCENDENTAL_ULPS,
+    down,
+    down_nonneg,
+    up,
+    up_nonneg,
+)
 
 INF = np.inf
+_MAX = _CAP[BASIC_ULPS]
+
+
+# Compiled element kernels for +, - and *: the same IEEE operations as the array formulas
+# (``_rounding.down``/``up`` with one ulp, NaN-ignoring min/max), fused into one pass instead of
+# ~20 numpy temporaries per product on SIVIA's large box arrays. (Not ``_compiled.down``/``up``:
+# those cap an overflow at the largest float, ``_rounding`` one float below; results here stay
+# bit-identical to ``_rounding``'s.)
+@njit(cache=True, inline="always")
+def _fmin(a, b):
+    """``np.fmin``: NaN only if both are NaN."""
+    if a != a:
+        return b
+    if b != b:
+        return a
+    return a if a <= b else b
+
+
+@njit(cache=True, inline="always")
+def _fmax(a, b):
+    """``np.fmax`` (negation is exact)."""
+    return -_fmin(-a, -b)
+
+
+@njit(cache=True, inline="always")
+def _down(x):
+    return _fmin(x * (1.0 - np.copysign(_EPS, x)) - _TINY, _MAX)
+
+
+@njit(cache=True, inline="always")
+def _up(x):
+    return _fmax(x * (1.0 + np.copysign(_EPS, x)) + _TINY, -_MAX)
+
+
+# Compiled ufuncs: numpy broadcasts their operands without copies.
+_F2 = ["float64(float64, float64)"]
+_F4 = ["float64(float64, float64, float64, float64)"]
+
+
+@vectorize(_F2, cache=True)
+def _sum_down(a, b):
+    return _down(a + b)
+
+
+@vectorize(_F2, cache=True)
+def _sum_up(a, b):
+    return _up(a + b)
+
+
+@vectorize(_F2, cache=True)
+def _diff_down(a, b):
+    return _down(a - b)
+
+
+@vectorize(_F2, cache=True)
+def _diff_up(a, b):
+    return _up(a - b)
+
+
+@njit(cache=True, inline="always")
+def _nan_to_zero(x):
+    # All four products NaN only for [0, 0] times an interval unbounded on both sides: 0.
+    return 0.0 if x != x else x
+
+
+@vectorize(_F4, cache=True)
+def _product_down(al, ah, bl, bh):
+    low = _fmin(_fmin(al * bl, al * bh), _fmin(ah * bl, ah * bh))
+    return _down(_nan_to_zero(low))
+
+
+@vectorize(_F4, cache=True)
+def _product_up(al, ah, bl, bh):
+    high = _fmax(_fmax(al * bl, al * bh), _fmax(ah * bl, ah * bh))
+    return _up(_nan_to_zero(high))
 
 
 def add(al, ah, bl, bh):
-    return down(al + bl), up(ah + bh)
+    return _sum_down(al, bl), _sum_up(ah, bh)
 
 
 def sub(al, ah, bl, bh):
-    return down(al - bh), up(ah - bl)
+    return _diff_down(al, bh), _diff_up(ah, bl)
 
 
 def neg(al, ah):
@@ -38,14 +124,12 @@ def _hull_of_products(p1, p2, p3, p4):
     lo = np.fmin(np.fmin(p1, p2), np.fmin(p3, p4))
     hi = np.fmax(np.fmax(p1, p2), np.fmax(p3, p4))
     # All four NaN only for [0, 0] times an interval unbounded on both sides: the product is 0.
-    return np.nan_to_num(lo, nan=0.0, posinf=INF, neginf=-INF), np.nan_to_num(
-        hi, nan=0.0, posinf=INF, neginf=-INF
-    )
+    # (np.where, not np.nan_to_num: the same values at a fifth of the cost on large arrays.)
+    return np.where(np.isnan(lo), 0.0, lo), np.where(np.isnan(hi), 0.0, hi)
 
 
 def mul(al, ah, bl, bh):
-    lo, hi = _hull_of_products(al * bl, al * bh, ah * bl, ah * bh)
-    return down(lo), up(hi)
+    return _product_down(al, ah, bl, bh), _product_up(al, ah, bl, bh)
 
 
 def scale(c: float, al, ah):

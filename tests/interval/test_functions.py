@@ -149,6 +149,22 @@ def test_division_by_interval_containing_zero():
     assert bool((iv.Interval(1.0, 2.0) / iv.Interval(0.0, 0.0)).is_empty)
 
 
+def test_products_with_unbounded_operands_and_broadcasting():
+    # 0 * inf corners: [0, 0] times anything (even [-inf, inf]) encloses 0, never NaN.
+    zero = iv.Interval(0.0, 0.0) * iv.Interval(-np.inf, np.inf)
+    assert float(zero.lo) <= 0.0 <= float(zero.hi) and np.isfinite([zero.lo, zero.hi]).all()
+    Z = iv.Interval(0.0, 2.0) * iv.Interval(-np.inf, 3.0)
+    assert float(Z.lo) == -np.inf and 6.0 <= float(Z.hi) < 6.0 + 1e-14
+    S = iv.Interval(-np.inf, 1.0) + iv.Interval(2.0, np.inf)
+    assert (float(S.lo), float(S.hi)) == (-np.inf, np.inf)
+    # Bound arrays of different shapes broadcast like numpy, for +, - and *.
+    A = iv.Interval(np.arange(3.0)[:, None], np.arange(3.0)[:, None] + 1.0)
+    B = iv.Interval(np.arange(4.0), np.arange(4.0) + 0.5)
+    for Z, exact in ((A + B, np.add), (A - B, np.subtract), (A * B, np.multiply)):
+        x, y = np.arange(3.0)[:, None] + 0.5, np.arange(4.0) + 0.25
+        assert Z.shape == (3, 4) and np.all((Z.lo <= exact(x, y)) & (exact(x, y) <= Z.hi))
+
+
 def test_domain_restrictions_give_empty_not_nan():
     assert bool(iv.sqrt(iv.Interval(-2.0, -1.0)).is_empty)
     R = iv.sqrt(iv.Interval(-1.0, 4.0))
