@@ -13,11 +13,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, vectorize
 
+from optbound.interval._compiled import down1, fmax, fmin, up1
 from optbound.interval._rounding import (
-    _CAP,
-    _EPS,
-    _TINY,
-    BASIC_ULPS,
     TRANSCENDENTAL_ULPS,
     down,
     down_nonneg,
@@ -26,63 +23,33 @@ from optbound.interval._rounding import (
 )
 
 INF = np.inf
-_MAX = _CAP[BASIC_ULPS]
 
 
-# Compiled element kernels for +, - and *: the same IEEE operations as the array formulas
-# (``_rounding.down``/``up`` with one ulp, NaN-ignoring min/max), fused into one pass instead of
-# ~20 numpy temporaries per product on SIVIA's large box arrays. (Not ``_compiled.down``/``up``:
-# those cap an overflow at the largest float, ``_rounding`` one float below; results here stay
-# bit-identical to ``_rounding``'s.)
-@njit(cache=True, inline="always")
-def _fmin(a, b):
-    """``np.fmin``: NaN only if both are NaN."""
-    if a != a:
-        return b
-    if b != b:
-        return a
-    return a if a <= b else b
-
-
-@njit(cache=True, inline="always")
-def _fmax(a, b):
-    """``np.fmax`` (negation is exact)."""
-    return -_fmin(-a, -b)
-
-
-@njit(cache=True, inline="always")
-def _down(x):
-    return _fmin(x * (1.0 - np.copysign(_EPS, x)) - _TINY, _MAX)
-
-
-@njit(cache=True, inline="always")
-def _up(x):
-    return _fmax(x * (1.0 + np.copysign(_EPS, x)) + _TINY, -_MAX)
-
-
-# Compiled ufuncs: numpy broadcasts their operands without copies.
+# Compiled ufuncs for +, - and * (numpy broadcasts their operands without copies): the same
+# IEEE operations as ``_rounding.down``/``up`` with one ulp (bit for bit, see ``_compiled``),
+# fused into one pass instead of ~20 numpy temporaries per product on SIVIA's box arrays.
 _F2 = ["float64(float64, float64)"]
 _F4 = ["float64(float64, float64, float64, float64)"]
 
 
 @vectorize(_F2, cache=True)
 def _sum_down(a, b):
-    return _down(a + b)
+    return down1(a + b)
 
 
 @vectorize(_F2, cache=True)
 def _sum_up(a, b):
-    return _up(a + b)
+    return up1(a + b)
 
 
 @vectorize(_F2, cache=True)
 def _diff_down(a, b):
-    return _down(a - b)
+    return down1(a - b)
 
 
 @vectorize(_F2, cache=True)
 def _diff_up(a, b):
-    return _up(a - b)
+    return up1(a - b)
 
 
 @njit(cache=True, inline="always")
@@ -93,14 +60,14 @@ def _nan_to_zero(x):
 
 @vectorize(_F4, cache=True)
 def _product_down(al, ah, bl, bh):
-    low = _fmin(_fmin(al * bl, al * bh), _fmin(ah * bl, ah * bh))
-    return _down(_nan_to_zero(low))
+    low = fmin(fmin(al * bl, al * bh), fmin(ah * bl, ah * bh))
+    return down1(_nan_to_zero(low))
 
 
 @vectorize(_F4, cache=True)
 def _product_up(al, ah, bl, bh):
-    high = _fmax(_fmax(al * bl, al * bh), _fmax(ah * bl, ah * bh))
-    return _up(_nan_to_zero(high))
+    high = fmax(fmax(al * bl, al * bh), fmax(ah * bl, ah * bh))
+    return up1(_nan_to_zero(high))
 
 
 def add(al, ah, bl, bh):
