@@ -2,10 +2,10 @@
 
 ``@njit(cache=True)`` invalidates a cached function only when the file that defines it changes,
 not when a jitted function it calls (in another file) changes: the kernels in
-``_strip_kernel`` and ``_minkowski_kernel`` inline ``_midrad`` and ``sets._domain``, and would
-silently run stale machine code after an edit of those. Before any kernel is loaded, this
-compares one hash of all the kernel sources with a stamp kept next to the cache and drops the
-kernels' cache files when it differs (numba then recompiles once).
+``_strip_kernel`` and ``_minkowski_kernel`` inline ``_midrad``, ``_cubic``, ``_strip_lambda``
+and ``sets._domain``, and would silently run stale machine code after an edit of those. Before
+any kernel is loaded, this compares one hash of all the kernel sources with a stamp kept next
+to the cache and drops the kernels' cache files when it differs (numba then recompiles once).
 """
 
 from __future__ import annotations
@@ -17,6 +17,8 @@ _ROOT = Path(__file__).resolve().parents[1]
 SOURCES = (
     _ROOT / "sets" / "_domain.py",
     _ROOT / "analytic" / "_midrad.py",
+    _ROOT / "analytic" / "_cubic.py",
+    _ROOT / "analytic" / "_strip_lambda.py",
     _ROOT / "analytic" / "_strip_kernel.py",
     _ROOT / "analytic" / "_minkowski_kernel.py",
 )

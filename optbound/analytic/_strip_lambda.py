@@ -1,0 +1,121 @@
+"""Compiled choice of lambda for ellipsoid ∩ strip fusion [HS96, eqs. (26)-(28)].
+
+All functions take the fused strip normalized to ``|a'^T (x - c) - e| <= 1``, i.e.
+``Gn = a'^T C a'`` and ``e`` (the offset of its midplane), and return the lambda >= 0 of
+[HS96, eq. (24)] for that strip. Only *which* member is used depends on lambda: every member is
+an outer bound and is inflated by its own certified margin, so the guarantee never depends on
+the accuracy of these roots.
+
+The cubics are solved by :func:`optbound.analytic._cubic.real_roots`; the nonnegative real root
+(or 0) with the smallest size measure wins, so the choice is never worse than lambda = 0 (E
+itself) or any other stationary point.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from optbound.analytic._cubic import real_roots
+from optbound.sets._domain import cholesky
+
+
+@njit(cache=True, inline="always")
+def lam_volume(Gn, e, n):
+    """Most positive root of [HS96, eq. (26)] with N = n (0 if none): it exists iff
+    G > n (1 - eps^2); the roots then have opposite signs (stable quadratic formula)."""
+    qa = (n - 1) * Gn * Gn
+    qb = (2 * n - 1 + e * e - Gn) * Gn
+    qc = n * (1 - e * e) - Gn
+    if not qc < 0:
+        return 0.0
+    sq = np.sqrt(qb * qb - 4 * qa * qc)
+    return 2 * qc / (-qb - sq) if qb >= 0 else (-qb + sq) / (2 * qa)
+
+
+@njit(cache=True, inline="always")
+def _shape_factor(lam, Gn, e):
+    """K of [HS96, eq. (24)] for the normalized strip."""
+    return 1.0 + lam - lam * e * e / (1.0 + lam * Gn)
+
+
+@njit(cache=True, inline="always")
+def _trace_size(lam, Gn, e, T, W):
+    """tr(K C0) = K (tr C - lambda |C a'|^2 / u) [HS96, eq. (24)]; +inf if K <= 0."""
+    K = _shape_factor(lam, Gn, e)
+    if not K > 0.0:
+        return np.inf
+    return K * (T - lam * W / (1.0 + lam * Gn))
+
+
+@njit(cache=True)
+def lam_trace(C, w, half, Gn, e):
+    """The root of the cubic d/dlambda tr(K C0) = 0 (derived from [HS96, eq. (24)]) that
+    minimizes the trace; ``w`` = C a (unnormalized, ``w / half`` = C a')."""
+    n = C.shape[0]
+    T = 0.0
+    W = 0.0
+    for i in range(n):
+        T += C[i, i]
+        wi = w[i] / half
+        W += wi * wi
+    e2 = e * e
+    D = Gn * T - W  # >= 0 by Cauchy-Schwarz
+    k, x1, x2, x3 = real_roots(
+        Gn * Gn * D,
+        3.0 * Gn * D,
+        -Gn * T * e2 + 3.0 * Gn * T - Gn * W + 2.0 * W * e2 - 2.0 * W,
+        T * (1.0 - e2) - W,
+    )
+    best, best_size = 0.0, T
+    for j, lam in enumerate((x1, x2, x3)):
+        if j < k and lam > 0.0:
+            size = _trace_size(lam, Gn, e, T, W)
+            if size < best_size:
+                best, best_size = lam, size
+    return best
+
+
+@njit(cache=True, inline="always")
+def _projection_size(lam, Gn, e, H, m):
+    """log of the projection's volume up to a constant [HS96, eq. (34)]; +inf if K <= 0."""
+    K = _shape_factor(lam, Gn, e)
+    if not K > 0.0:
+        return np.inf
+    return m * np.log(K) + np.log1p(lam * (Gn - H)) - np.log1p(lam * Gn)
+
+
+@njit(cache=True)
+def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
+    """The root of the cubic [HS96, eq. (27)] that minimizes the volume of the projection onto
+    the coordinates ``idx``, with H of [HS96, eq. (28)]; ``P``, ``LP`` (>= (m, m)) and ``y``
+    (>= m) are scratch. 0 if the projected shape cannot be factored."""
+    m = idx.shape[0]
+    for r in range(m):
+        for s in range(r + 1):
+            i, j = idx[r], idx[s]
+            P[r, s] = C[i, j] if j <= i else C[j, i]
+    if not cholesky(P[:m, :m], LP[:m, :m]) > 0.0:
+        return 0.0
+    H = 0.0  # H = w_d^T P^{-1} w_d = |LP^{-1} w_d|^2 [HS96, eq. (28)]
+    for r in range(m):
+        s_r = w[idx[r]] / half
+        for s in range(r):
+            s_r -= LP[r, s] * y[s]
+        y[r] = s_r / LP[r, r]
+        H += y[r] * y[r]
+    H = min(max(H, 0.0), Gn)  # 0 <= H <= G up to rounding
+    e2 = e * e
+    k, x1, x2, x3 = real_roots(
+        (Gn - H) * Gn * Gn * m,
+        (m * (3.0 * Gn - 2.0 * H) - H) * Gn,
+        (3.0 * Gn - H + e2 * (H - Gn)) * m - Gn * H - H + e2 * H,
+        m * (1.0 - e2) - H,
+    )
+    best, best_size = 0.0, 0.0  # size(0) = 0
+    for j, lam in enumerate((x1, x2, x3)):
+        if j < k and lam > 0.0:
+            size = _projection_size(lam, Gn, e, H, m)
+            if size < best_size:
+                best, best_size = lam, size
+    return best
