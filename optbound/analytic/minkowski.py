@@ -26,8 +26,8 @@ from optbound.analytic._minkowski_kernel import (
     OUT_OF_DOMAIN,
     P_GIVEN,
     P_TRACE,
-    P_XY_PSI,
     P_VOLUME,
+    P_XY_PSI,
     sum_range,
     sum_single,
 )
@@ -110,7 +110,11 @@ def _mode(criterion: str, kappa, dims, n_batch: int, n: int):
         return P_GIVEN, np.ascontiguousarray((1.0 - k) / k), _NO_DIMS, _NO_DIMS
     if criterion == "size_xy_psi":
         planar, heading = _xy_psi_dims(dims, n)
-        return P_XY_PSI, np.zeros(n_batch), planar.astype(np.int64), heading.astype(np.int64)
+        return (
+            P_XY_PSI,
+            np.zeros(n_batch),
+            *(d.astype(np.int64, copy=False) for d in (planar, heading)),
+        )
     mode = P_VOLUME if criterion == "volume" else P_TRACE
     return mode, np.zeros(n_batch), _NO_DIMS, _NO_DIMS
 

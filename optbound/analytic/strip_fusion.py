@@ -138,7 +138,7 @@ def _mode(criterion, dims, lam, n_batch, n):
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
     if n < 2:
         raise ValueError("strip fusion needs dimension >= 2 (in 1-D E ∩ S is an interval)")
-    idx = _NO_DIMS if dims is None else v.dims_index("dims", dims, n).astype(np.int64)
+    idx = _NO_DIMS if dims is None else v.dims_index("dims", dims, n).astype(np.int64, copy=False)
     if criterion == "projection" and dims is None:
         raise ValueError("dims is required for criterion='projection' (the subspace to project on)")
     if lam is not None:
@@ -294,9 +294,7 @@ def intersect_strip_batch(
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
-    run_sliced(
-        fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out
-    )
+    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out)
     out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)
     if bad.size:
