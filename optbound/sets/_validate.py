@@ -7,6 +7,7 @@ NaN or a non-PD matrix learns which argument was wrong instead of getting a NaN 
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 
@@ -23,7 +24,7 @@ def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
         raise ValueError(f"{name} must be a 1-D vector, got shape {arr.shape}")
     if arr.size == 0:
         raise ValueError(f"{name} must not be empty")
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         raise ValueError(f"{name} must be finite, got {arr}")
     if dim is not None and arr.shape[0] != dim:
         raise ValueError(f"{name} must have length {dim}, got {arr.shape[0]}")
@@ -32,6 +33,10 @@ def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
 
 def finite_scalar(name: str, value) -> float:
     """Return ``value`` as a finite Python float."""
+    if type(value) is float or type(value) is np.float64:  # the common case, no array round trip
+        if math.isfinite(value):
+            return float(value)
+        raise ValueError(f"{name} must be finite, got {float(value)}")
     arr = real_array(name, value)
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
