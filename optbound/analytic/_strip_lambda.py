@@ -39,13 +39,34 @@ def _shape_factor(lam, Gn, e):
     return 1.0 + lam - lam * e * e / (1.0 + lam * Gn)
 
 
+_TRACE, _PROJECTION = range(2)
+
+
 @njit(cache=True, inline="always")
-def _trace_size(lam, Gn, e, T, W):
-    """tr(K C0) = K (tr C - lambda |C a'|^2 / u) [HS96, eq. (24)]; +inf if K <= 0."""
+def _size(lam, Gn, e, kind, p, q):
+    """Size measure of the member ``lam`` (+inf if K <= 0): for ``_TRACE`` tr(K C0) =
+    K (tr C - lambda |C a'|^2 / u) with p = tr C, q = |C a'|^2 [HS96, eq. (24)]; for
+    ``_PROJECTION`` the log of the projection's volume up to a constant [HS96, eq. (34)], with
+    p = H [HS96, eq. (28)] and q = m the projection's dimension."""
     K = _shape_factor(lam, Gn, e)
     if not K > 0.0:
         return np.inf
-    return K * (T - lam * W / (1.0 + lam * Gn))
+    if kind == _TRACE:
+        return K * (p - lam * q / (1.0 + lam * Gn))
+    return q * np.log(K) + np.log1p(lam * (Gn - p)) - np.log1p(lam * Gn)
+
+
+@njit(cache=True, inline="always")
+def _best_root(roots, Gn, e, kind, p, q):
+    """The positive root (or 0) of ``roots = (k, x1, x2, x3)`` with the smallest size."""
+    k, x1, x2, x3 = roots
+    best, best_size = 0.0, _size(0.0, Gn, e, kind, p, q)
+    for j, lam in enumerate((x1, x2, x3)):
+        if j < k and lam > 0.0:
+            size = _size(lam, Gn, e, kind, p, q)
+            if size < best_size:
+                best, best_size = lam, size
+    return best
 
 
 @njit(cache=True)
@@ -61,28 +82,13 @@ def lam_trace(C, w, half, Gn, e):
         W += wi * wi
     e2 = e * e
     D = Gn * T - W  # >= 0 by Cauchy-Schwarz
-    k, x1, x2, x3 = real_roots(
+    roots = real_roots(
         Gn * Gn * D,
         3.0 * Gn * D,
         -Gn * T * e2 + 3.0 * Gn * T - Gn * W + 2.0 * W * e2 - 2.0 * W,
         T * (1.0 - e2) - W,
     )
-    best, best_size = 0.0, T
-    for j, lam in enumerate((x1, x2, x3)):
-        if j < k and lam > 0.0:
-            size = _trace_size(lam, Gn, e, T, W)
-            if size < best_size:
-                best, best_size = lam, size
-    return best
-
-
-@njit(cache=True, inline="always")
-def _projection_size(lam, Gn, e, H, m):
-    """log of the projection's volume up to a constant [HS96, eq. (34)]; +inf if K <= 0."""
-    K = _shape_factor(lam, Gn, e)
-    if not K > 0.0:
-        return np.inf
-    return m * np.log(K) + np.log1p(lam * (Gn - H)) - np.log1p(lam * Gn)
+    return _best_root(roots, Gn, e, _TRACE, T, W)
 
 
 @njit(cache=True)
@@ -106,16 +112,10 @@ def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
         H += y[r] * y[r]
     H = min(max(H, 0.0), Gn)  # 0 <= H <= G up to rounding
     e2 = e * e
-    k, x1, x2, x3 = real_roots(
+    roots = real_roots(
         (Gn - H) * Gn * Gn * m,
         (m * (3.0 * Gn - 2.0 * H) - H) * Gn,
         (3.0 * Gn - H + e2 * (H - Gn)) * m - Gn * H - H + e2 * H,
         m * (1.0 - e2) - H,
     )
-    best, best_size = 0.0, 0.0  # size(0) = 0
-    for j, lam in enumerate((x1, x2, x3)):
-        if j < k and lam > 0.0:
-            size = _projection_size(lam, Gn, e, H, m)
-            if size < best_size:
-                best, best_size = lam, size
-    return best
+    return _best_root(roots, Gn, e, _PROJECTION, H, m)
