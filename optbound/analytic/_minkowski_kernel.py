@@ -87,7 +87,7 @@ def p_volume(C1, C2, L1, L2, A, L, X):
     return p
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _trace(C, idx):
     t = 0.0
     for i in idx:
@@ -95,7 +95,7 @@ def _trace(C, idx):
     return t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _xy_psi_size(k, t1, t2, h1, h2):
     """tr(proj_xy C) tr(proj_psi C) of the member kappa [HS96, eq. (15)]."""
     return (t1 / (1.0 - k) + t2 / k) * (h1 / (1.0 - k) + h2 / k)

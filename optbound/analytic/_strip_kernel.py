@@ -224,7 +224,7 @@ def _copy_input(c, C, L, out_c, out_C, out_L):
             out_L[i, j] = L[i, j]
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _choose(C, w, mid, half, Gn, mode, idx, P, LP, y):
     """Step 4 for the criteria (not a given lambda); P, LP, y are scratch."""
     e = mid / half

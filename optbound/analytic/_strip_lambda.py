@@ -33,7 +33,7 @@ def lam_volume(Gn, e, n):
     return 2 * qc / (-qb - sq) if qb >= 0 else (-qb + sq) / (2 * qa)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _shape_factor(lam, Gn, e):
     """K of [HS96, eq. (24)] for the normalized strip."""
     return 1.0 + lam - lam * e * e / (1.0 + lam * Gn)
@@ -42,7 +42,7 @@ def _shape_factor(lam, Gn, e):
 _TRACE, _PROJECTION = range(2)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _size(lam, Gn, e, kind, p, q):
     """Size measure of the member ``lam`` (+inf if K <= 0): for ``_TRACE`` tr(K C0) =
     K (tr C - lambda |C a'|^2 / u) with p = tr C, q = |C a'|^2 [HS96, eq. (24)]; for
@@ -56,7 +56,7 @@ def _size(lam, Gn, e, kind, p, q):
     return q * np.log(K) + np.log1p(lam * (Gn - p)) - np.log1p(lam * Gn)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _best_root(roots, Gn, e, kind, p, q):
     """The positive root (or 0) of ``roots = (k, x1, x2, x3)`` with the smallest size."""
     k, x1, x2, x3 = roots
@@ -97,11 +97,14 @@ def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
     the coordinates ``idx``, with H of [HS96, eq. (28)]; ``P``, ``LP`` (>= (m, m)) and ``y``
     (>= m) are scratch. 0 if the projected shape cannot be factored."""
     m = idx.shape[0]
+    # Contiguous (m, m) views of the scratch (one compiled cholesky for every caller).
+    P = P.reshape(P.size)[: m * m].reshape((m, m))
+    LP = LP.reshape(LP.size)[: m * m].reshape((m, m))
     for r in range(m):
         for s in range(r + 1):
             i, j = idx[r], idx[s]
             P[r, s] = C[i, j] if j <= i else C[j, i]
-    if not cholesky(P[:m, :m], LP[:m, :m]) > 0.0:
+    if not cholesky(P, LP) > 0.0:
         return 0.0
     H = 0.0  # H = w_d^T P^{-1} w_d = |LP^{-1} w_d|^2 [HS96, eq. (28)]
     for r in range(m):
@@ -118,4 +121,4 @@ def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
         (3.0 * Gn - H + e2 * (H - Gn)) * m - Gn * H - H + e2 * H,
         m * (1.0 - e2) - H,
     )
-    return _best_root(roots, Gn, e, _PROJECTION, H, m)
+    return _best_root(roots, Gn, e, _PROJECTION, H, float(m))
