@@ -133,10 +133,11 @@ def p_xy_psi(C1, C2, planar, heading):
     return (1.0 - best) / best
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, out_L, work):
     """One certified sum; ``planar``, ``heading`` are the coordinates of ``P_XY_PSI`` (unused
-    otherwise). ``work`` is (6, max(n, 1), n) scratch. Returns (code, p, margin)."""
+    otherwise). ``work`` is (6, max(n, 1), n) scratch. Returns (code, p, margin). Inlined into
+    its two callers (as ``_strip_kernel.fuse_one``)."""
     n = c1.shape[0]
     L1, L2, A, X, D = work[0, :n], work[1, :n], work[2, :n], work[3, :n], work[4, :n]
     dc = work[5, 0]
