@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 SUITES = ("tiny", "quick", "full")
-KINDS = ("tightness", "recursive", "speed")
+KINDS = ("tightness", "recursive", "speed", "papers")
 
 
 @dataclass(frozen=True)
@@ -33,8 +33,9 @@ class Family:
         Short identifier used in results.json, CSV and file names.
     title : str
         Human-readable heading for the report.
-    kind : {"tightness", "recursive", "speed"}
-        Decides how the report presents the records.
+    kind : {"tightness", "recursive", "speed", "papers"}
+        Decides how the report presents the records (``papers``: each record's Markdown
+        and its attached figures).
     requires : tuple of str
         ``"module:attribute"`` names the family needs; a family whose requirement is missing
         is reported as skipped (with the reason) instead of failing the run.
@@ -48,6 +49,10 @@ class Family:
     isolated : bool
         Run each (serial) task in a fresh child process, for code that changes process-wide
         state; codac, for one, leaves the FPU rounding mode set to upward.
+    cost : callable
+        ``cost(task) -> float``, the task's rough cost in seconds on one core. Parallel tasks
+        start longest first, and the progress bar's ETA weighs tasks by it; results.json
+        records the measured ``task_seconds`` to check it against. Default: 1 per task.
     """
 
     name: str
@@ -58,6 +63,7 @@ class Family:
     run: Callable[[dict], dict]
     parallel: bool = True
     isolated: bool = False
+    cost: Callable[[dict], float] = lambda task: 1.0
 
     def __post_init__(self):
         if self.kind not in KINDS:

@@ -93,6 +93,11 @@ def run(task: dict) -> dict:
     return {"records": out, "figures": figures}
 
 
+def cost(task: dict) -> float:
+    """Seconds of one task, roughly (quick suite, 2-core VM)."""
+    return 0.003 * task["dim"]
+
+
 FAMILY = Family(
     name=NAME,
     title="Minkowski sum: κ criteria vs SDP optimum",
@@ -104,4 +109,5 @@ FAMILY = Family(
     ),
     tasks=tasks,
     run=run,
+    cost=cost,
 )

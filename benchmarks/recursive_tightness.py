@@ -103,6 +103,12 @@ def run(task: dict) -> dict:
     return {"records": out, "figures": figures}
 
 
+def cost(task: dict) -> float:
+    """Seconds of one task, roughly (quick suite, 2-core VM): one SDP with its lower bound
+    per recursion depth, each growing with the dimension."""
+    return 0.06 * task["dim"] * len(task["ks"])
+
+
 FAMILY = Family(
     name=NAME,
     title="Recursive strip updates vs batch SDP",
@@ -114,4 +120,5 @@ FAMILY = Family(
     ),
     tasks=tasks,
     run=run,
+    cost=cost,
 )

@@ -14,9 +14,14 @@ FAMILY_MODULES = (
     "benchmarks.strip_tightness",
     "benchmarks.minkowski_tightness",
     "benchmarks.recursive_tightness",
+    "benchmarks.localization_tightness",
     "benchmarks.speed_analytic",
     "benchmarks.speed_sdp",
     "benchmarks.speed_sivia",
+    "benchmarks.speed_hs96",
+    "benchmarks.speed_glh12",
+    "benchmarks.speed_sonar",
+    "benchmarks.papers",
 )
 
 

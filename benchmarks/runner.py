@@ -4,24 +4,33 @@ The results dict is everything the report needs (``optbound report DIR`` rebuild
 from its JSON alone)::
 
     {"schema": 1,
-     "meta": {"suite", "seed", "jobs", "wall_time_s", "started", versions...},
-     "families": {name: {"title", "kind", "status", "reason",
-                         "records", "figures", "notes", "warnings", "errors"}}}
+     "meta": {"suite", "seed", "jobs", "executor", "families_run", "complete",
+              "wall_time_s", "started", "load_average", "cpus", "processor", versions...},
+     "families": {name: {"title", "kind", "status", "reason", "records", "figures",
+                         "notes", "warnings", "errors", "task_seconds"}}}
+
+``task_seconds`` holds ``[task index, wall seconds]`` pairs: what each task cost, to check
+the families' cost estimates (``Family.cost``) against.
 """
 
 from __future__ import annotations
 
 import multiprocessing
+import os
 import platform
 import time
 import warnings
+from collections.abc import Callable
 from datetime import datetime, timezone
+from pathlib import Path
 
 import numpy as np
-from tqdm import tqdm
 
 import optbound
+from benchmarks.executors import EXECUTORS
+from benchmarks.executors import executor as make_executor
 from benchmarks.family import SUITES, Family
+from benchmarks.progress import Progress
 from benchmarks.registry import families as registered_families
 from optbound.report.results import SCHEMA
 
@@ -32,6 +41,9 @@ def run_suite(
     jobs: int = 1,
     progress: bool = True,
     names: list[str] | None = None,
+    executor: str = "process",
+    scheduler: str | None = None,
+    where: Callable[[dict], bool] | None = None,
 ) -> dict:
     """Run every available family of ``suite`` and return the results dict.
 
@@ -42,11 +54,18 @@ def run_suite(
     seed : int
         Suite seed; every instance seed is derived from it (and recorded).
     jobs : int
-        Worker processes for the tightness tasks (1 runs them in this process).
+        Worker processes for the parallel tasks (1 runs them in this process).
     progress : bool
-        Show a tqdm progress bar on stderr.
+        Show per-family progress bars on stderr (:mod:`benchmarks.progress`).
     names : list of str, optional
         Run only these registered families (default: all of them).
+    executor : {"process", "dask"}
+        Where parallel tasks run (:mod:`benchmarks.executors`); the results are the same.
+    scheduler : str, optional
+        Address of a running Dask scheduler (implies ``executor="dask"``).
+    where : callable, optional
+        Run only the tasks for which ``where(task)`` is true (``optbound repro KEY`` selects
+        papers this way); the run is then not complete.
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
@@ -54,6 +73,8 @@ def run_suite(
         raise ValueError(f"seed must be a non-negative integer, got {seed}")
     if jobs < 1:
         raise ValueError(f"jobs must be a positive integer, got {jobs}")
+    if executor not in EXECUTORS:
+        raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
     if names:
@@ -65,32 +86,70 @@ def run_suite(
         fams = [fam for fam in fams if fam.name in names]
     out = {fam.name: _family_entry(fam) for fam in fams}
     runnable = [fam for fam in fams if out[fam.name]["status"] == "ok"]
-    tasks = [(fam, i, task) for fam in runnable for i, task in enumerate(fam.tasks(suite, seed))]
-    pooled = [(fam.name, i, task) for fam, i, task in tasks if fam.parallel]
-    serial = [(fam.name, i, task) for fam, i, task in tasks if not fam.parallel]
-    isolated = {fam.name for fam in fams if fam.isolated}
-    with tqdm(total=len(tasks), desc=f"optbound bench {suite}", disable=not progress) as bar:
-        for name, index, result in _run_pooled(pooled, jobs):
-            _merge(out[name], index, result)
-            bar.update()
-        for name, index, task in serial:
-            run = _run_isolated if name in isolated else _run_registered
-            _merge(out[name], index, run((name, index, task))[2])
-            bar.update()
+    tasks = [
+        (fam, i, task, float(fam.cost(task)))
+        for fam in runnable
+        for i, task in enumerate(fam.tasks(suite, seed))
+        if where is None or where(task)
+    ]
+    # Longest first: a long task started last would leave the other workers idle at the end.
+    pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
+    serial = [t for t in tasks if not t[0].parallel]
+    costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
+    with Progress(f"optbound bench {suite}", costs, progress) as bar:
+        with make_executor(executor, jobs, scheduler) as pool:
+            futures = {
+                pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
+                for fam, i, task, cost in pooled
+            }
+            for future in pool.completed(futures):
+                name, index, result = future.result()
+                _merge(out[name], index, result)
+                bar.done(name, futures[future])
+        for fam, i, task, cost in serial:
+            run = _run_isolated if fam.isolated else _run_registered
+            _merge(out[fam.name], i, run((fam.name, i, task))[2])
+            bar.done(fam.name, cost)
     for entry in out.values():
         _sort_by_task(entry)
     meta = {
         "suite": suite,
         "seed": seed,
         "jobs": jobs,
+        "executor": "dask" if scheduler else executor,
+        "families_run": [fam.name for fam in fams],
+        "complete": where is None
+        and (not names or set(names) >= {f.name for f in registered_families()}),
         "started": started.isoformat(timespec="seconds"),
         "wall_time_s": time.perf_counter() - start,
+        "load_average": _load_average(),
+        "cpus": os.cpu_count(),
         "optbound": optbound.__version__,
         "python": platform.python_version(),
         "numpy": np.__version__,
         "machine": f"{platform.system()} {platform.machine()}",
+        "processor": _processor(),
     }
     return {"schema": SCHEMA, "meta": meta, "families": out}
+
+
+def _load_average() -> list[float] | None:
+    """1-, 5- and 15-minute load averages (None where the OS has none)."""
+    try:
+        return [round(x, 2) for x in os.getloadavg()]
+    except (AttributeError, OSError):
+        return None
+
+
+def _processor() -> str:
+    """The CPU model name (from /proc/cpuinfo on Linux), else ``platform.processor()``."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
 
 
 def _family_entry(fam: Family) -> dict:
@@ -105,16 +164,9 @@ def _family_entry(fam: Family) -> dict:
         "notes": [],
         "warnings": [],
         "errors": [],
+        "task_seconds": [],
+        "attachments": {},
     }
-
-
-def _run_pooled(pooled: list[tuple[str, int, dict]], jobs: int):
-    """Yield ``(name, index, result)`` as tasks finish, from a process pool when ``jobs > 1``."""
-    if jobs == 1 or len(pooled) < 2:
-        yield from map(_run_registered, pooled)
-        return
-    with multiprocessing.get_context().Pool(jobs) as pool:
-        yield from pool.imap_unordered(_run_registered, pooled)
 
 
 def _run_isolated(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
@@ -135,6 +187,7 @@ def _run_task(fam: Family, task: dict) -> dict:
     Warnings raised by the code under test are collected for the report rather than printed
     over the progress bar.
     """
+    start = time.perf_counter()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
@@ -142,7 +195,7 @@ def _run_task(fam: Family, task: dict) -> dict:
         except Exception as exc:  # a failing instance is a finding to report, not a reason to stop
             result = {"errors": [{"task": task, "error": f"{type(exc).__name__}: {exc}"}]}
     seen = {f"{w.category.__name__}: {str(w.message).strip().splitlines()[0]}" for w in caught}
-    return {**result, "warnings": sorted(seen)}
+    return {**result, "warnings": sorted(seen), "seconds": time.perf_counter() - start}
 
 
 def _merge(entry: dict, index: int, result: dict) -> None:
@@ -150,9 +203,12 @@ def _merge(entry: dict, index: int, result: dict) -> None:
         entry[key].extend({**item, "task_index": index} for item in result.get(key, []))
     for key in ("notes", "warnings"):
         entry[key].extend(n for n in result.get(key, []) if n not in entry[key])
+    entry["attachments"].update(result.get("attachments", {}))
+    entry["task_seconds"].append([index, round(result["seconds"], 4)])
 
 
 def _sort_by_task(entry: dict) -> None:
     # Pool results arrive in completion order; sort so that results.json is reproducible.
     for key in ("records", "figures", "errors"):
         entry[key].sort(key=lambda item: item["task_index"])
+    entry["task_seconds"].sort()

@@ -13,9 +13,9 @@ counts, since optbound bisects levels of fewer than 1024 boxes without testing t
 
 Rounding mode. Importing codac switches the whole process to round-upward (gaol, its interval
 library, sets the x86 rounding mode once and relies on it; numpy's vector ops follow it).
-``run`` therefore calls codac in round-upward, optbound in round-to-nearest (the mode its
-outward steps assume; ``pave`` refuses to run in another) and restores the caller's mode at
-the end, so later numpy code in the process is unaffected.
+``run`` therefore calls codac in round-upward and optbound in round-to-nearest (the mode its
+outward steps assume; optbound would switch to it by itself, but inside the timed call) and
+restores the caller's mode at the end, so later numpy code in the process is unaffected.
 
 Timing: after one warm-up call, median of ``repeats`` wall-clock runs of each ``sivia`` call
 (garbage collection paused), codac's block right before optbound's for each (set, eps). The
@@ -30,17 +30,15 @@ inflates short wall times far more than long ones.
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
 import gc
 import os
-import platform
 import time
-from contextlib import contextmanager
 
 import numpy as np
 
 from optbound import interval as iv
+from optbound.interval._fenv import FE_TONEAREST, get_rounding, round_to_nearest, set_rounding
+from optbound.interval.codac_interop import codac_boxes
 from optbound.interval.paving import box_volumes
 
 REPEATS = 5
@@ -79,31 +77,7 @@ def _codac_problem(codac, case: str):
 
 
 def _codac_boxes(codac, paving, which) -> np.ndarray:
-    boxes = paving.boxes(which)
-    return np.array([[[b[i].lb(), b[i].ub()] for i in range(b.size())] for b in boxes]).reshape(
-        -1, 2, 2
-    )
-
-
-# <fenv.h> constants of glibc on x86-64 (elsewhere the mode is left alone).
-_FE_TONEAREST, _FE_UPWARD = 0x000, 0x800
-_LIBM = ctypes.CDLL(ctypes.util.find_library("m")) if platform.machine() == "x86_64" else None
-
-
-def _set_rounding(mode: int) -> None:
-    if _LIBM is not None:
-        _LIBM.fesetround(mode)
-
-
-@contextmanager
-def _restored_rounding():
-    """Give back the caller's floating-point rounding mode, whatever codac does to it."""
-    before = _LIBM.fegetround() if _LIBM is not None else None
-    try:
-        yield
-    finally:
-        if before is not None:
-            _LIBM.fesetround(before)
+    return codac_boxes(paving.boxes(which), paving.size())
 
 
 def _median_time(fn, repeats: int):
@@ -130,7 +104,7 @@ def run(eps_values=(0.01, 0.005), repeats: int = REPEATS) -> list[dict]:
 
     Returns ``[{"note": "codac not installed ..."}]`` when codac is missing.
     """
-    with _restored_rounding():
+    with round_to_nearest():  # gives the caller's mode back, whatever codac does to it
         try:
             import codac
         except ImportError:
@@ -139,13 +113,14 @@ def run(eps_values=(0.01, 0.005), repeats: int = REPEATS) -> list[dict]:
 
 
 def _compare(codac, eps_values, repeats: int) -> list[dict]:
+    codac_mode = get_rounding()  # as its import left it
     rows = []
     for case, spec in CASES.items():
         f, y, x0 = _codac_problem(codac, case)
         for eps in eps_values:
-            _set_rounding(_FE_UPWARD)  # what gaol expects
+            set_rounding(codac_mode)  # what gaol expects
             t_codac, theirs = _median_time(lambda: codac.sivia(x0, f, y, eps), repeats)  # noqa: B023
-            _set_rounding(_FE_TONEAREST)
+            set_rounding(FE_TONEAREST)  # optbound would switch itself, inside the timing
             t_ours, ours = _median_time(
                 lambda: iv.sivia(spec["f"], spec["Y"], spec["X0"], eps, ratio=CODAC_RATIO),  # noqa: B023
                 repeats,

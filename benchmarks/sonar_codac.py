@@ -37,7 +37,8 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.sivia_codac import _FE_UPWARD, _median_time, _set_rounding
+from benchmarks.sivia_codac import _median_time
+from optbound.interval._fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
 from optbound.localization import rooms
 from optbound.localization.sonar import D_MAX, localize, measurement_box, simulate_ranges
@@ -110,6 +111,7 @@ def _child(eps: float) -> dict:
     """Run in the child process: build the codac separator, pave once, report as a dict."""
     import codac
 
+    codac_mode = get_rounding()  # as its import left it: what gaol expects
     x = codac.VectorVar(3)
     box = measurement_box(SONARS, readings())
     seps = [
@@ -120,7 +122,7 @@ def _child(eps: float) -> dict:
     for s in seps[1:]:
         sep = sep & s
     x0 = codac.IntervalVector(X0)
-    _set_rounding(_FE_UPWARD)  # what gaol expects
+    set_rounding(codac_mode)  # optbound's interval work above restored it; be explicit
     start = time.perf_counter()
     paving = codac.pave(x0, sep, eps)
     seconds = time.perf_counter() - start
@@ -146,10 +148,11 @@ def _child_values(seed: int, n: int = 200) -> dict:
     """Run in the child process: codac's f at ``n`` seeded poses (midpoints of its intervals)."""
     import codac
 
+    codac_mode = get_rounding()
     x = codac.VectorVar(3)
     funcs = [_codac_sonar(codac, x, s) for s in SONARS]
     poses = sample_poses(seed, n)
-    _set_rounding(_FE_UPWARD)
+    set_rounding(codac_mode)
     values = [[f.eval(codac.IntervalVector(p.tolist())).mid() for f in funcs] for p in poses]
     return {"values": values}
 

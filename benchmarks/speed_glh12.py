@@ -10,7 +10,8 @@ Every ratio is taken between two timings of the same run on the same machine:
 - one 1500-iteration run with 7 robots and 6 obstacles (the issue's budget: 20 s on one core),
   in CPU seconds of this process (the machine is shared: CPU time, not wall time).
 
-Standalone: ``python -m benchmarks.speed_glh12 [--suite quick|full]`` prints a Markdown table.
+Standalone: ``python -m benchmarks.speed_glh12 [--suite tiny|quick|full]`` prints a Markdown
+table. In ``optbound bench`` it is the serial family ``speed_glh12`` (one task).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import time
 
 import numpy as np
 
+from benchmarks.family import Family, task_seeds
 from benchmarks.timing import per_call, speed_record
 from optbound.interval import Interval, Tri
 from optbound.localization import arena
@@ -28,7 +30,11 @@ from optbound.localization.visibility import luvia, track, visibility_test
 
 NAME = "speed_glh12"
 BUDGET_SECONDS = 20.0
-SIZES = {"quick": {"pairs": 2000, "steps": 300}, "full": {"pairs": 20000, "steps": 1500}}
+SIZES = {
+    "tiny": {"pairs": 500, "steps": 100},
+    "quick": {"pairs": 2000, "steps": 300},
+    "full": {"pairs": 20000, "steps": 1500},
+}
 
 
 def _interval_signs(boxes1, boxes2, polygons) -> np.ndarray:
@@ -149,13 +155,37 @@ def bench_run(steps: int, seed: int = 0) -> list[dict]:
 
 
 def bench(suite: str = "quick", seed: int = 0) -> list[dict]:
-    """All records of one suite (``quick`` or ``full``)."""
+    """All records of one suite (``tiny``, ``quick`` or ``full``)."""
     size = SIZES[suite]
     return (
         bench_visibility(size["pairs"], seed)
-        + bench_luvia(300, seed)
+        + bench_luvia(min(300, size["steps"]), seed)
         + bench_run(size["steps"], seed)
     )
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    return [{"seed": task_seeds(seed, NAME, 1)[0], "suite": suite}]
+
+
+def run(task: dict) -> dict:
+    return {"records": bench(task["suite"], task["seed"])}
+
+
+def cost(task: dict) -> float:
+    return {"tiny": 2.0, "quick": 6.0, "full": 40.0}[task["suite"]]
+
+
+FAMILY = Family(
+    name=NAME,
+    title="Speed: GLH12 visibility tracking (visibility test, LUVIA, one run)",
+    kind="speed",
+    requires=("optbound.localization.visibility:luvia",),
+    tasks=tasks,
+    run=run,
+    parallel=False,
+    cost=cost,
+)
 
 
 def markdown(records: list[dict]) -> str:

@@ -12,7 +12,11 @@ Rows (median over repeats; every ratio is between two timings of this run):
 - the office reproduction, quick variant (target <= ~20 s) and, with ``--full``, the full
   10-lap run (target <= 2 min on 2 cores).
 
-Run: ``python -m benchmarks.speed_hs96 [--full]``.
+Run: ``python -m benchmarks.speed_hs96 [--full]``. As the family ``speed_hs96`` of
+``optbound bench`` (one task per part, run serially): tiny times ``linear_position`` and
+``associate``; quick adds the tracker on 10 scans; full the tracker on 40 scans and both
+office reproductions. Every part returns :func:`benchmarks.timing.speed_record` s whose
+``ratio`` is reference time / ours (or target / ours where the target is the reference).
 """
 
 from __future__ import annotations
@@ -27,17 +31,22 @@ from pathlib import Path
 
 import numpy as np
 
+from benchmarks.family import Family, task_seeds
+from benchmarks.timing import speed_record
 from optbound import analytic
 from optbound.localization import office
 from optbound.localization.association import associate
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position
 from optbound.localization.tracker import SetTracker
-from optbound.report.tables import markdown_table
+from optbound.report.tables import fmt_factor, markdown_table
 from optbound.sets import Ellipsoid
 
+NAME = "speed_hs96"
 REPEAT = 7
 SCANS = 40  # two simulated seconds of tracking per criterion
+LINEAR_TARGET, ASSOCIATE_TARGET, REALTIME_TARGET = 50e-6, 0.1, 10.0
+REPRO_TARGETS = {True: 20.0, False: 120.0}  # quick / full office reproduction, seconds
 
 
 def median_per_call(fn, repeat: int = REPEAT, min_time: float = 0.05) -> float:
@@ -49,7 +58,7 @@ def median_per_call(fn, repeat: int = REPEAT, min_time: float = 0.05) -> float:
     return statistics.median(t / number for t in timer.repeat(repeat, number))
 
 
-def bench_linear(rng: np.random.Generator) -> list[tuple]:
+def bench_linear(rng: np.random.Generator) -> list[dict]:
     phi = np.sort(rng.uniform(0, 2 * np.pi, 10))
     L = np.column_stack([6 * np.cos(phi), 6 * np.sin(phi)])
     alphas = np.arctan2(L[:, 1] - 0.4, L[:, 0] + 0.3) - 0.2
@@ -58,16 +67,19 @@ def bench_linear(rng: np.random.Generator) -> list[tuple]:
     H, z = rng.normal(size=(9, 2)), rng.normal(size=9)
     ref = median_per_call(lambda: np.linalg.lstsq(H, z, rcond=None))
     return [
-        (
+        speed_record(NAME, "one numpy lstsq (9 x 2), reference", ref),
+        speed_record(
+            NAME,
             "linear_position, N = 10",
-            f"{1e6 * ours:.1f} us",
-            "<= 50 us",
-            f"{ours / ref:.2f}x one numpy lstsq (9 x 2) = {1e6 * ref:.1f} us",
-        )
+            ours,
+            ratio=ref / ours,
+            ratio_label="the speed of one numpy lstsq (9 x 2)",
+            target=f"<= {1e6 * LINEAR_TARGET:.0f} us",
+        ),
     ]
 
 
-def bench_associate(rng: np.random.Generator) -> list[tuple]:
+def bench_associate(rng: np.random.Generator) -> list[dict]:
     omap = office.office_map()
     times, nodes, unpruned, found = [], [], 0, 0
     for s in rng.uniform(0, office.lap_length(), 7):
@@ -96,12 +108,17 @@ def bench_associate(rng: np.random.Generator) -> list[tuple]:
         nodes.append(result.nodes_expanded)
         unpruned = result.nodes_unpruned
         found += any(np.array_equal(a.pairs[:7], keep) for a in result.associations)
+    seconds = statistics.median(times)
     return [
-        (
+        speed_record(
+            NAME,
             "associate, N = 8 (1 false) of 22",
-            f"{1e3 * statistics.median(times):.1f} ms (max {1e3 * max(times):.1f})",
-            "<= 100 ms",
-            f"{statistics.median(nodes):.0f} nodes expanded of {unpruned:.2g} unpruned; "
+            seconds,
+            ratio=ASSOCIATE_TARGET / seconds,
+            ratio_label=f"under the {1e3 * ASSOCIATE_TARGET:.0f} ms target",
+            target=f"<= {1e3 * ASSOCIATE_TARGET:.0f} ms",
+            max_seconds=max(times),
+            detail=f"{statistics.median(nodes):.0f} nodes expanded of {unpruned:.2g} unpruned; "
             f"true association found {found}/{len(times)}",
         )
     ]
@@ -126,10 +143,14 @@ def _scans(rng, omap: LandmarkMap, n: int):
     return poses[0], out
 
 
-def bench_tracker(rng: np.random.Generator) -> list[tuple]:
+def bench_tracker(
+    rng: np.random.Generator, n_scans: int = SCANS, repeat: int = REPEAT
+) -> list[dict]:
+    """Tracker runs of ``n_scans`` scans per criterion against its bare analytic calls
+    (``repeat`` batches per reference call)."""
     full = office.office_map()
     omap = LandmarkMap(full.landmarks, shapes=full.shapes)  # no walls: all 22 seen
-    start, scans = _scans(rng, omap, SCANS)
+    start, scans = _scans(rng, omap, n_scans)
     initial = Ellipsoid(start, np.diag([0.02**2, 0.02**2, math.radians(0.3) ** 2]))
     rows = []
     for criterion in ("projection", "volume", "robust"):
@@ -152,46 +173,128 @@ def bench_tracker(rng: np.random.Generator) -> list[tuple]:
             * median_per_call(
                 lambda c=criterion, E=E, S=strip: analytic.intersect_strip(
                     E, S, criterion=c, dims=(0, 1)
-                )
+                ),
+                repeat,
             )
             + median_per_call(
-                lambda E=E, D=D: analytic.minkowski_sum(E, D, criterion="size_xy_psi")
+                lambda E=E, D=D: analytic.minkowski_sum(E, D, criterion="size_xy_psi"),
+                repeat,
             )
         )
         real = len(scans) / office.SCAN_RATE
-        rows.append(
-            (
-                f"tracker, 20 scans/s x 22 landmarks, {criterion}",
-                f"{real / seconds:.1f}x real time ({1e6 * seconds / (len(scans) * 22):.0f} "
-                "us/update)",
-                ">= 10x real time",
-                f"bare analytic calls alone: {real / ref:.1f}x real time "
-                f"(tracker overhead {100 * (seconds / ref - 1):.0f} %)",
-            )
-        )
+        what = f"tracker, 20 scans/s x 22 landmarks, {criterion}, {len(scans)} scans"
+        rows += [
+            speed_record(
+                NAME,
+                f"bare analytic calls of the {what}, reference",
+                ref,
+                ratio=real / ref,
+                ratio_label="faster than real time",
+            ),
+            speed_record(
+                NAME,
+                what,
+                seconds,
+                ratio=real / seconds,
+                ratio_label="faster than real time",
+                target=f">= {REALTIME_TARGET:.0f}x real time",
+                per_update=seconds / (len(scans) * omap.size),
+                overhead=seconds / ref - 1.0,
+                detail=f"tracker overhead over the bare analytic calls "
+                f"{100 * (seconds / ref - 1):.0f} %",
+            ),
+        ]
     return rows
 
 
-def bench_repro(full: bool) -> list[tuple]:
+def bench_repro(full: bool) -> list[dict]:
+    """The office reproduction, quick variant, and with ``full`` also the 10-lap run."""
     from papers_repro import hs96_office
 
     rows = []
-    variants = [(True, "<= ~20 s")] + ([(False, "<= 2 min on 2 cores")] if full else [])
-    for quick, target in variants:
+    for quick in (True, False) if full else (True,):
         with tempfile.TemporaryDirectory() as tmp:
             t0 = time.perf_counter()
             hs96_office.main(Path(tmp), quick=quick)
             seconds = time.perf_counter() - t0
+        target = REPRO_TARGETS[quick]
         name = "office reproduction, " + ("quick" if quick else "full (10 laps)")
-        rows.append((name, f"{seconds:.1f} s wall", target, "one run"))
+        rows.append(
+            speed_record(
+                NAME,
+                name,
+                seconds,
+                ratio=target / seconds,
+                ratio_label=f"under the {target:.0f} s target (one run)",
+                target=f"<= {target:.0f} s",
+            )
+        )
     return rows
+
+
+def table(records: list[dict]) -> str:
+    """Markdown table of the records: what, median time, target, ratio against the reference."""
+    rows = [
+        (
+            r["name"],
+            f"{r['value']:.3g} s",
+            r.get("target", ""),
+            (f"{fmt_factor(r['ratio'])} {r['ratio_label']}" if "ratio" in r else "")
+            + (f"; {r['detail']}" if "detail" in r else ""),
+        )
+        for r in records
+    ]
+    return markdown_table(("what", "measured (median)", "target", "against"), rows)
+
+
+# --------------------------------------------------------------------------- bench family
+#: Parts per suite, as (part, keyword arguments of its ``bench_*`` function).
+PARTS = {
+    "tiny": (("linear", {}), ("associate", {})),
+    "quick": (("linear", {}), ("associate", {}), ("tracker", {"n_scans": 10, "repeat": 3})),
+    "full": (("linear", {}), ("associate", {}), ("tracker", {}), ("repro", {"full": True})),
+}
+COST = {"linear": 2.0, "associate": 1.0, "tracker": 3.0, "repro": 130.0}
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    parts = PARTS[suite]
+    seeds = task_seeds(seed, NAME, len(parts))
+    return [
+        {"seed": s, "part": part, "kwargs": dict(kwargs)}
+        for s, (part, kwargs) in zip(seeds, parts, strict=True)
+    ]
+
+
+def run(task: dict) -> dict:
+    if task["part"] == "repro":
+        return {"records": bench_repro(**task["kwargs"])}
+    bench = {"linear": bench_linear, "associate": bench_associate, "tracker": bench_tracker}
+    return {"records": bench[task["part"]](np.random.default_rng(task["seed"]), **task["kwargs"])}
+
+
+def cost(task: dict) -> float:
+    """Rough seconds (the full tracker part runs 4x the quick one's scans)."""
+    return COST[task["part"]] * (3.0 if task["kwargs"] == {} and task["part"] == "tracker" else 1)
+
+
+FAMILY = Family(
+    name=NAME,
+    title="Speed: HS96 localization (linear fix, association, tracker)",
+    kind="speed",
+    requires=("optbound.localization.tracker:SetTracker",),
+    tasks=tasks,
+    run=run,
+    parallel=False,
+    cost=cost,
+)
 
 
 def main(full: bool = False, seed: int = 0) -> str:
     """Run every benchmark and return the Markdown table (printed by the command line)."""
     rng = np.random.default_rng(seed)
-    rows = bench_linear(rng) + bench_associate(rng) + bench_tracker(rng) + bench_repro(full)
-    return markdown_table(("what", "measured (median)", "target", "against"), rows)
+    records = bench_linear(rng) + bench_associate(rng) + bench_tracker(rng) + bench_repro(full)
+    return table(records)
 
 
 if __name__ == "__main__":

@@ -21,14 +21,15 @@ def tasks(suite: str, seed: int) -> list[dict]:
     return [{"seed": task_seeds(seed, NAME, 1)[0], "eps": list(eps), "repeats": repeats}]
 
 
-def sivia_records(rows: list[dict]) -> list[dict]:
-    """Records from :func:`benchmarks.sivia_codac.run`'s rows: codac's time, then ours."""
+def sivia_records(rows: list[dict], family: str = NAME, what: str = "sivia") -> list[dict]:
+    """Records from rows of :func:`benchmarks.sivia_codac.run` (or of a run with the same keys,
+    e.g. :func:`benchmarks.sonar_codac.run`): codac's time, then ours with the ratio."""
     out = []
     for row in rows:
         extra = {k: v for k, v in row.items() if k not in ("name", "seconds", "codac_seconds")}
         extra["ratio_label"] = "faster than codac (wall time)"
-        out.append(speed_record(NAME, f"codac sivia, {row['name']}", row["codac_seconds"]))
-        out.append(speed_record(NAME, f"optbound sivia, {row['name']}", row["seconds"], **extra))
+        out.append(speed_record(family, f"codac {what}, {row['name']}", row["codac_seconds"]))
+        out.append(speed_record(family, f"optbound {what}, {row['name']}", row["seconds"], **extra))
     return out
 
 

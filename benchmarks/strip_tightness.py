@@ -119,6 +119,11 @@ def run(task: dict) -> dict:
     return {"records": out, "figures": figures}
 
 
+def cost(task: dict) -> float:
+    """Seconds of one task, roughly (quick suite, 2-core VM): the SDPs grow with the dimension."""
+    return 0.02 * task["dim"]
+
+
 FAMILY = Family(
     name=NAME,
     title="Ellipsoid ∩ strip: analytic fusion vs SDP optimum",
@@ -131,4 +136,5 @@ FAMILY = Family(
     ),
     tasks=tasks,
     run=run,
+    cost=cost,
 )

@@ -1,4 +1,9 @@
-"""The ``optbound`` console script: ``optbound bench`` and ``optbound report DIR``."""
+"""The ``optbound`` console script: ``optbound bench``, ``optbound repro`` and ``optbound report``.
+
+Errors the user can fix (a bad ``--out``, an unknown paper key, an unreachable Dask
+scheduler, a full disk) end the command with one line on stderr and exit code 2, before any
+work where they can be detected before it.
+"""
 
 from __future__ import annotations
 
@@ -7,10 +12,17 @@ import os
 import sys
 from pathlib import Path
 
+from benchmarks.executors import EXECUTORS
 from benchmarks.family import SUITES
 from benchmarks.registry import families
 
 DEFAULT_OUT = Path("bench-report")
+DEFAULT_REPRO_OUT = Path("repro-report")
+EXIT_USAGE = 2
+
+
+class CommandError(Exception):
+    """A user-fixable failure: printed as one line, exit code 2."""
 
 
 def _int_at_least(minimum: int, what: str):
@@ -24,6 +36,41 @@ def _int_at_least(minimum: int, what: str):
         return value
 
     return parse
+
+
+def _add_run_options(parser: argparse.ArgumentParser, out: Path) -> None:
+    """Options shared by bench and repro: output folder and where the tasks run."""
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=out,
+        help=f"report folder (default {out}); created if missing, checked before any work",
+    )
+    parser.add_argument(
+        "--force",
+        action="store_true",
+        help="overwrite the report in --out if there is one (without it, an existing "
+        "report folder is an error)",
+    )
+    parser.add_argument(
+        "--jobs",
+        type=_int_at_least(1, "jobs"),
+        default=os.cpu_count() or 1,
+        help="worker processes for the parallel tasks (default: all cores)",
+    )
+    parser.add_argument(
+        "--executor",
+        choices=EXECUTORS,
+        default="process",
+        help="process: a local pool of --jobs processes (default); dask: a Dask LocalCluster "
+        'of --jobs workers (needs pip install "optbound[dask]")',
+    )
+    parser.add_argument(
+        "--scheduler",
+        metavar="tcp://HOST:PORT",
+        help="submit the parallel tasks to this running Dask scheduler (implies dask)",
+    )
+    parser.add_argument("--no-progress", action="store_true", help="hide the progress bars")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -43,20 +90,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--suite",
         choices=SUITES,
         default="quick",
-        help="quick (default, a few minutes), full (every family at full size, spread over "
-        "--jobs), tiny (a seconds-long smoke test of the same code path)",
-    )
-    bench.add_argument(
-        "--out", type=Path, default=DEFAULT_OUT, help=f"report directory (default {DEFAULT_OUT})"
+        help="quick (default: minutes on 2 cores, the papers' fast variants), full "
+        "(every family at full size and the papers' full scripts, spread over --jobs), tiny "
+        "(a seconds-long smoke test of the same code path)",
     )
     bench.add_argument(
         "--seed", type=_int_at_least(0, "seed"), default=0, help="suite seed (default 0)"
-    )
-    bench.add_argument(
-        "--jobs",
-        type=_int_at_least(1, "jobs"),
-        default=os.cpu_count() or 1,
-        help="worker processes for the tightness families (default: all cores)",
     )
     bench.add_argument(
         "--family",
@@ -64,12 +103,26 @@ def build_parser() -> argparse.ArgumentParser:
         choices=[fam.name for fam in families()],
         help="run only this family (repeatable; default: all)",
     )
-    bench.add_argument("--no-progress", action="store_true", help="hide the progress bar")
     bench.add_argument(
-        "--no-readme",
+        "--update-readme",
         action="store_true",
-        help="do not write the headline numbers into the README (done for quick runs only)",
+        help="write the headline numbers into the README's bench section; only for a "
+        "complete default run (--suite quick --seed 0, every family)",
     )
+    _add_run_options(bench, DEFAULT_OUT)
+    repro = sub.add_parser(
+        "repro",
+        help="reproduce the papers' results (papers_repro/) into a report folder",
+        description="Run the papers_repro scripts of the given papers (default: all) and "
+        "write one paper-vs-optbound table per script plus its figures into --out.",
+    )
+    repro.add_argument(
+        "papers", nargs="*", metavar="KEY", help="paper keys, e.g. HS96 LJMW97 (default: all)"
+    )
+    repro.add_argument(
+        "--quick", action="store_true", help="the scripts' fast variants (seconds each)"
+    )
+    _add_run_options(repro, DEFAULT_REPRO_OUT)
     report = sub.add_parser(
         "report",
         help="rebuild the report of DIR from DIR/results.json",
@@ -77,6 +130,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     report.add_argument("dir", type=Path, metavar="DIR", help="a directory written by bench")
     bench.set_defaults(handler=_bench, subparser=bench)
+    repro.set_defaults(handler=_repro, subparser=repro)
     report.set_defaults(handler=_report, subparser=report)
     return parser
 
@@ -88,21 +142,75 @@ def _version() -> str:
 
 
 def _bench(args: argparse.Namespace) -> int:
-    from benchmarks.runner import run_suite
     from optbound import report
 
-    if args.out.exists() and not args.out.is_dir():
-        args.subparser.error(f"--out {str(args.out)!r} exists and is not a directory")
-    results = run_suite(
-        args.suite, args.seed, args.jobs, progress=not args.no_progress, names=args.family
-    )
-    report.save_results(results, args.out)
-    path = report.write_report(results, args.out)
+    readme = None
+    if args.update_readme:
+        meta = {"suite": args.suite, "seed": args.seed, "complete": not args.family}
+        refusal = report.headline_refusal(meta)
+        if refusal:
+            raise CommandError(f"--update-readme: {refusal}")
+        readme = report.source_readme()
+        if readme is None:
+            raise CommandError("--update-readme: no README.md with headline markers found")
+    out = _prepare(args)
+    results = _run(args, args.suite, args.seed, names=args.family)
+    path = _write(results, out)
     _print_summary(results, path)
-    readme = None if args.no_readme or args.suite != "quick" else report.source_readme()
     if readme is not None and report.update_readme(readme, results):
         print(f"Headline numbers written into {readme}")
     return 0
+
+
+def _repro(args: argparse.Namespace) -> int:
+    from papers_repro._common import scripts
+
+    try:
+        selected = {script.name for script in scripts(args.papers or None)}
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
+    out = _prepare(args)
+    suite = "quick" if args.quick else "full"
+    results = _run(args, suite, 0, names=["papers"], where=lambda t: t["script"] in selected)
+    path = _write(results, out)
+    _print_summary(results, path)
+    return 0
+
+
+def _prepare(args: argparse.Namespace) -> Path:
+    from optbound.report.outdir import OutDirError, prepare_out_dir
+
+    try:
+        return prepare_out_dir(args.out, args.force)
+    except OutDirError as exc:
+        raise CommandError(str(exc)) from None
+
+
+def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
+    from benchmarks.runner import run_suite
+
+    try:
+        return run_suite(
+            suite,
+            seed,
+            args.jobs,
+            progress=not args.no_progress,
+            executor=args.executor,
+            scheduler=args.scheduler,
+            **selection,
+        )
+    except (ValueError, OSError) as exc:  # dask missing, scheduler unreachable
+        raise CommandError(f"{type(exc).__name__}: {exc}") from None
+
+
+def _write(results: dict, out: Path) -> Path:
+    from optbound import report
+
+    try:
+        report.save_results(results, out)
+        return report.write_report(results, out)
+    except OSError as exc:
+        raise CommandError(f"cannot write the report into {str(out)!r}: {exc}") from None
 
 
 def _report(args: argparse.Namespace) -> int:
@@ -135,7 +243,11 @@ def main(argv: list[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return 0
-    return args.handler(args)
+    try:
+        return args.handler(args)
+    except CommandError as exc:
+        print(f"optbound {args.command}: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
 
 
 if __name__ == "__main__":

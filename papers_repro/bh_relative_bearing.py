@@ -53,12 +53,6 @@ SWEEP_SEED = 2026
 RELATIVE_PAVING = 100  # sweep: paving width relative to the exact set's hull
 
 
-def bearings(x: np.ndarray, landmarks: np.ndarray, pairs) -> np.ndarray:
-    """Noise-free relative bearings [BH, eq. (2)] seen from ``x``."""
-    ang = np.arctan2(x[1] - landmarks[:, 1], x[0] - landmarks[:, 0])
-    return rb.wrap_angle([ang[i] - ang[j] for i, j in pairs])
-
-
 def _box_rows(box: Box) -> np.ndarray:
     return np.stack([box.lo, box.hi], axis=1)
 
@@ -107,31 +101,9 @@ def analyse(landmarks, pairs, gammas, eps, paving_eps: float | None, references:
             )
             out[f"opt{4 * order}"] = ref
             out[f"opt{4 * order}_area"] = ref.bound.area_bounds(paving_eps / 4)
-        out["ellipse"] = best_ellipse(data, paving)
+        out["ellipse"] = rb.best_ellipse(data, paving)
     out["paving_eps"] = paving_eps
     return out
-
-
-def best_ellipse(data, paving: Paving) -> dict:
-    """Bracket of the smallest ellipse containing the exact set.
-
-    - ``sdp``: the S-procedure SDP of the rings [BH, eqs. (20)-(21)] ∩ the paving's hull. The
-      rings' "outside a disc" constraints are non-convex, the relaxation is loose, and the
-      hull's four linear constraints (which contain the exact set and select the arcs' part
-      of the plane) are what make it usable; its ``lower_bound`` is a weak-duality bound on
-      points of the set (``optimal.lower``), valid for every outer ellipse;
-    - ``boxes``: ``optimal.mvee`` of the corners of every inner and boundary box, certified to
-      contain them, hence (being convex) every box and the exact set.
-    """
-    sdp = optimal.outer_ellipsoid(
-        [*rb.bound_ellipse_quadratics(data), paving.hull()], lower_bound=True
-    )
-    corners = np.unique(
-        np.concatenate([paving.outer()[:, [0, 1], [i, j]] for i in (0, 1) for j in (0, 1)]), axis=0
-    )
-    boxes = optimal.mvee(corners).ellipsoid
-    best = boxes if boxes.volume() < sdp.ellipsoid.volume() else sdp.ellipsoid
-    return {"sdp": sdp.ellipsoid, "boxes": boxes, "best": best, "lower": sdp.lower_bound}
 
 
 def _mid(pair) -> float:
@@ -234,7 +206,7 @@ def _figure_final(final: dict, out_dir: Path) -> Path:
         if "ellipse" in final:
             draw_ellipse(
                 ax,
-                final["ellipse"]["best"],
+                final["ellipse"].best,
                 color="tab:orange",
                 lw=1.2,
                 label="best ellipse found",
@@ -246,36 +218,12 @@ def _figure_final(final: dict, out_dir: Path) -> Path:
 
 
 # ----------------------------------------------------------------------------------- sweep
-def random_instance(
-    rng: np.random.Generator,
-) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
-    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
-
-    Geometries are redrawn until every measured bearing is a crescent with some margin
-    (``eps + 3° < |gamma| < 180° - eps - 3°``) and no landmark is within 0.3 of another or
-    of the vehicle: the rings of [BH, Sect. IV] need the crescent shape.
-    """
-    margin = np.radians(3.0)
-    while True:
-        L = rng.uniform(-3.0, 3.0, (3, 2))
-        x = rng.uniform(-1.0, 1.0, 2)
-        eps = np.radians(rng.uniform(1.0, 8.0))
-        gam = bearings(x, L, PAIRS) + rng.uniform(-eps, eps, 3)
-        dists = [np.linalg.norm(L[i] - L[j]) for i, j in PAIRS] + list(
-            np.linalg.norm(L - x, axis=1)
-        )
-        if min(dists) > 0.3 and np.all(
-            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
-        ):
-            return L, PAIRS, rb.wrap_angle(gam), eps, x
-
-
 def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:
     """Seeded sweep: area ratios to the exact set, L = 8 vs L = 4, area vs volume criterion."""
     rng = np.random.default_rng(seed)
     rows = []
     for k in range(n):
-        L, pairs, gam, eps, x = random_instance(rng)
+        L, pairs, gam, eps, x = rb.random_instance(rng, PAIRS)
         data = rb.measurements(L, pairs, gam, eps)
         res = analyse(L, pairs, gam, eps, None, references=False)
         paving_eps = res["paving_eps"]
@@ -323,7 +271,7 @@ def main(out_dir: Path, quick: bool = False) -> dict:
     and shrinks the sweep (4 geometries, 1 with the area criterion) for the test suite."""
     out_dir = Path(out_dir)
     eps = np.radians(EPS_DEG)
-    gammas = bearings(VEHICLE, LANDMARKS, PAIRS)
+    gammas = rb.bearings(VEHICLE, LANDMARKS, PAIRS)
     first = analyse(LANDMARKS, PAIRS[:1], gammas[:1], eps, PAVING_EPS, references=False)
     final = analyse(LANDMARKS, PAIRS, gammas, eps, PAVING_EPS, references=not quick)
     if quick:  # the L = 4 reference and the SDP ellipse are cheap; keep them in the quick run
@@ -334,7 +282,7 @@ def main(out_dir: Path, quick: bool = False) -> dict:
             rb.exact_test(final["data"]),
         )
         final["opt4"], final["opt4_area"] = ref, ref.bound.area_bounds(PAVING_EPS / 4)
-        final["ellipse"] = best_ellipse(final["data"], final["paving"])
+        final["ellipse"] = rb.best_ellipse(final["data"], final["paving"])
     figures = [_figure_first_step(first, out_dir), _figure_final(final, out_dir)]
     sw = sweep(4 if quick else 30, 0 if quick else 10)
 
@@ -345,8 +293,8 @@ def main(out_dir: Path, quick: bool = False) -> dict:
         "L8": final["L8_area"],
         "L4": final["L4_area"],
         "opt4": final["opt4_area"],
-        "ellipse": (final["ellipse"]["lower"], final["ellipse"]["best"].volume()),
-        "sdp": (final["ellipse"]["sdp"].volume(), final["ellipse"]["sdp"].volume()),
+        "ellipse": (final["ellipse"].lower, final["ellipse"].best.volume()),
+        "sdp": (final["ellipse"].sdp.volume(), final["ellipse"].sdp.volume()),
         "box": final["box"],
     }
     if "opt8" in final:

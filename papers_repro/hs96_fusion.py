@@ -36,6 +36,7 @@ from papers_repro._common import (
     save_figure,
 )
 
+PAPER = "HS96"
 PRIOR = Ellipsoid([0.0, 0.0], [[4.0, 1.2], [1.2, 1.5]])
 NORMAL = np.array([np.cos(np.pi / 6), np.sin(np.pi / 6)])  # unit normal of every strip
 #: Fig. 1 configurations: (paper's label, centre t, half-width w) in units of h.
@@ -49,6 +50,7 @@ FIG1 = (
 FIG2_HALF_WIDTH = 0.6
 FIG2_CENTRES = (0.0, 0.5, 1.0, 1.45)
 SWEEP_POINTS = 401
+QUICK_SWEEP_POINTS = 101
 XLIM, YLIM = (-3.2, 3.2), (-2.4, 2.4)
 
 
@@ -193,12 +195,12 @@ def _fig2(out_dir: Path) -> tuple[list[dict], Path]:
     return rows, save_figure(fig, out_dir, "hs96_fig2_schemes.png")
 
 
-def _sweep(out_dir: Path) -> tuple[dict, Path]:
+def _sweep(out_dir: Path, points: int = SWEEP_POINTS) -> tuple[dict, Path]:
     """Area of both schemes vs the strip's offset, batched over all offsets."""
     h = half_extent_along_normal()
     w = FIG2_HALF_WIDTH
     # Up to just before the strip leaves the ellipse (t = 1 + w).
-    t = np.linspace(0.0, 1.0 + w - 1e-3, SWEEP_POINTS)
+    t = np.linspace(0.0, 1.0 + w - 1e-3, points)
     mids = NORMAL @ PRIOR.center + t * h
     a = NORMAL / (w * h)  # strip |a^T x - b| <= 1 of half-width w h around mids
     b = mids / (w * h)
@@ -366,8 +368,10 @@ def _markdown(fig1: list[dict], fig2: list[dict], sweep: dict) -> str:
     )
 
 
-def main(out_dir: Path | str) -> dict:
+def main(out_dir: Path | str, quick: bool = False) -> dict:
     """Reproduce HS96 Figs. 1 and 2 and the offset sweep; write PNGs to ``out_dir``.
+
+    ``quick`` sweeps ``QUICK_SWEEP_POINTS`` offsets instead of ``SWEEP_POINTS``.
 
     Returns
     -------
@@ -378,7 +382,7 @@ def main(out_dir: Path | str) -> dict:
     out_dir = Path(out_dir)
     fig1, p1 = _fig1(out_dir)
     fig2, p2 = _fig2(out_dir)
-    sweep, p3 = _sweep(out_dir)
+    sweep, p3 = _sweep(out_dir, QUICK_SWEEP_POINTS if quick else SWEEP_POINTS)
     return {
         "fig1": fig1,
         "fig2": fig2,

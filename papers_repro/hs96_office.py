@@ -27,6 +27,7 @@ import numpy as np
 from optbound import analytic, optimal
 from optbound.localization import office
 from optbound.localization.association import associate
+from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmarks import pose_paving
 from optbound.report.tables import markdown_table
 from optbound.sets import Ellipsoid
@@ -100,7 +101,7 @@ def summarize(data: office.OfficeData, res: office.TrackResult, skip: int) -> di
     c, C = res.centers[skip:], res.shapes[skip:]
     truth = data.poses[: len(res.centers)][skip:]
     err = np.hypot(*(c[:, :2] - truth[:, :2]).T)
-    err_psi = np.degrees(np.abs(office.wrap(c[:, 2] - truth[:, 2])))
+    err_psi = np.degrees(np.abs(wrap_angle(c[:, 2] - truth[:, 2])))
     half_x, half_y = np.sqrt(C[:, 0, 0]), np.sqrt(C[:, 1, 1])
     real = (len(res.centers) - 1) / office.SCAN_RATE
     return {
@@ -211,7 +212,7 @@ def _figures(out_dir, data, init, tracks, dr, faults) -> list[Path]:
     axes[0].set_ylabel("cm")
     axes[0].set_ylim(0, 6)
     axes[0].legend(fontsize=7)
-    err_psi = np.degrees(np.abs(office.wrap(res.centers[:, 2] - data.poses[: len(t), 2])))
+    err_psi = np.degrees(np.abs(wrap_angle(res.centers[:, 2] - data.poses[: len(t), 2])))
     axes[1].plot(t, err_psi, lw=0.6, label="true heading error")
     axes[1].plot(t, np.degrees(np.sqrt(res.shapes[:, 2, 2])), lw=0.6, label="set half-width psi")
     axes[1].set_ylabel("deg")
@@ -411,7 +412,7 @@ def main(out_dir: Path, quick: bool = False) -> dict:
     fault_stats = {c: summarize(data, r, skip) for c, r in faults.items()}
     dr = office.dead_reckoning(data, init["initial"].center)
     dr_drift = _lap_drift(data, dr)
-    dr_psi = float(np.degrees(abs(office.wrap(dr[-1, 2] - data.poses[-1, 2]))))
+    dr_psi = float(np.degrees(abs(wrap_angle(dr[-1, 2] - data.poses[-1, 2]))))
     samples = sampled_comparisons(data, init["initial"], SAMPLES[quick])
     markdown = _tables(init, stats, dr_drift, dr_psi, samples, fault_stats)
     figures = _figures(out_dir, data, init, tracks, dr, faults)

@@ -34,7 +34,10 @@ from papers_repro._common import (
     save_figure,
 )
 
+PAPER = "HS96"
 XY, PSI = (0, 1), 2
+N_RANDOM = 2000  # random poses of the fusion study
+QUICK_N_RANDOM = 300
 SIGMA_XY = (0.1, 0.5)  # m, range of the prior's position standard widths
 SIGMA_PSI = (0.002, 0.02)  # rad, range of the prior's heading widths
 RANGE = (1.0, 15.0)  # m, distance to the landmark (c3 of [HS96, eq. (19)])
@@ -333,8 +336,10 @@ def _markdown(study: dict, ex: dict, kap: dict) -> str:
     )
 
 
-def main(out_dir: Path | str, n: int = 2000, seed: int = 0) -> dict:
+def main(out_dir: Path | str, quick: bool = False, n: int | None = None, seed: int = 0) -> dict:
     """Run both HS96 pose studies with ``n`` random strips; write PNGs to ``out_dir``.
+
+    ``n`` defaults to ``N_RANDOM``, or ``QUICK_N_RANDOM`` when ``quick``.
 
     Returns
     -------
@@ -344,6 +349,7 @@ def main(out_dir: Path | str, n: int = 2000, seed: int = 0) -> dict:
         ``figures`` and ``markdown``.
     """
     out_dir = Path(out_dir)
+    n = n if n is not None else (QUICK_N_RANDOM if quick else N_RANDOM)
     study = fusion_study(n, seed)
     ex = example(seed)
     kap = kappa_study()

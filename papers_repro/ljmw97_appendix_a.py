@@ -20,10 +20,12 @@ from optbound.interval.plot import COLORS
 from optbound.report.tables import markdown_table
 from papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 
+PAPER = "LJMW97"
 X0 = [[-2.5, 2.5], [-2.0, 2.0]]
 Y = [[-np.inf, 1.0], [1.0, np.inf]]  # x^2 + y^2 <= 1 (eq. 12) and 2 x^2 + y^2 >= 1 (eq. 13)
 EXACT_AREA = np.pi * (1.0 - 1.0 / np.sqrt(2.0))
 EPS = (0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002)
+QUICK_EPS = (0.2, 0.1, 0.05, 0.02, 0.01)
 FIGURE_EPS = 0.05
 
 
@@ -82,8 +84,10 @@ def _convergence_figure(rows: list[dict], out_dir: Path) -> Path:
     return save_figure(fig, out_dir, "ljmw97_area_bracket.png")
 
 
-def main(out_dir: Path | str, eps_values=EPS) -> dict:
+def main(out_dir: Path | str, quick: bool = False, eps_values=None) -> dict:
     """Pave Q at each eps; draw Fig. 6 (at ``FIGURE_EPS`` if listed) and the bracket plot.
+
+    ``eps_values`` defaults to ``EPS``, or ``QUICK_EPS`` when ``quick``.
 
     Returns
     -------
@@ -92,6 +96,7 @@ def main(out_dir: Path | str, eps_values=EPS) -> dict:
         ``markdown``.
     """
     out_dir = Path(out_dir)
+    eps_values = eps_values if eps_values is not None else (QUICK_EPS if quick else EPS)
     rows, figure_paving = [], None
     for eps in eps_values:
         paving, seconds = characterise(eps)

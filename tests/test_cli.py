@@ -11,6 +11,7 @@ from benchmarks.registry import families
 from benchmarks.runner import run_suite
 from optbound.cli import main
 from optbound.report import load_results
+from tests.benchmarks.test_family import FULL_ONLY
 
 TIGHTNESS = [f.name for f in families() if f.kind == "tightness"]
 
@@ -19,7 +20,7 @@ TIGHTNESS = [f.name for f in families() if f.kind == "tightness"]
 def bench_dir(tmp_path_factory):
     out = tmp_path_factory.mktemp("bench")
     argv = ["bench", "--suite", "tiny", "--out", str(out), "--jobs", "2", "--no-progress"]
-    assert main([*argv, "--no-readme"]) == 0
+    assert main([*argv, "--force"]) == 0  # mktemp created the (empty) folder
     return out
 
 
@@ -30,7 +31,7 @@ def test_bench_writes_a_complete_report(bench_dir, capsys):
         # codac is optional: its family may report a note instead of records
         assert fam["status"] == "ok", (name, fam["reason"])
         assert not fam["errors"], (name, fam["errors"])
-        assert fam["records"] or fam["notes"], name
+        assert bool(fam["records"] or fam["notes"]) == (name not in FULL_ONLY), name
     text = (bench_dir / "report.md").read_text()
     assert "## Headline" in text
     for name in TIGHTNESS:
@@ -114,12 +115,86 @@ def test_report_of_a_corrupt_results_file_fails_clearly(tmp_path, capsys):
     assert "lacks the 'meta' section" in capsys.readouterr().err
 
 
-def test_bench_out_must_be_a_directory(tmp_path, capsys):
+def _fails_at_once(argv, capsys, monkeypatch) -> str:
+    """Run ``argv``, expect exit code 2 with one line on stderr, and no task run."""
+    import benchmarks.runner
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("work started before the arguments were checked")
+
+    monkeypatch.setattr(benchmarks.runner, "run_suite", no_work)
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith(f"optbound {argv[0]}: error: ")
+    return err
+
+
+def test_bench_out_must_be_a_directory(tmp_path, capsys, monkeypatch):
     target = tmp_path / "file.txt"
     target.write_text("x")
-    with pytest.raises(SystemExit):
-        main(["bench", "--suite", "tiny", "--out", str(target)])
-    assert "is not a directory" in capsys.readouterr().err
+    err = _fails_at_once(["bench", "--suite", "tiny", "--out", str(target)], capsys, monkeypatch)
+    assert "is not a directory" in err
+    err = _fails_at_once(["bench", "--out", str(target / "sub")], capsys, monkeypatch)
+    assert "cannot write to --out" in err
+
+
+def test_out_is_created_before_the_run(tmp_path, capsys, monkeypatch):
+    target = tmp_path / "new" / "deeper"
+    _fails_at_once(["repro", "NOPE", "--out", str(target)], capsys, monkeypatch)
+    assert not target.exists()  # the key is checked first
+    with pytest.raises(AssertionError, match="work started"):
+        main(["bench", "--out", str(target)])  # out is fine: the run is reached ...
+    assert target.is_dir()  # ... after creating it
+
+
+def test_an_existing_report_is_not_overwritten_without_force(bench_dir, capsys, monkeypatch):
+    err = _fails_at_once(["bench", "--out", str(bench_dir)], capsys, monkeypatch)
+    assert "already holds a report" in err and "--force" in err
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--family", "strip"], "needs a complete run"),
+        (["--suite", "tiny"], "default suite only, not --suite tiny"),
+        (["--seed", "3"], "not --seed 3"),
+    ],
+)
+def test_update_readme_only_from_a_complete_default_run(
+    tmp_path, capsys, monkeypatch, extra, message
+):
+    err = _fails_at_once(
+        ["bench", "--update-readme", "--out", str(tmp_path), *extra], capsys, monkeypatch
+    )
+    assert message in err
+
+
+def test_unknown_paper_key_fails_clearly(tmp_path, capsys, monkeypatch):
+    err = _fails_at_once(["repro", "HS96", "ZZ01", "--out", str(tmp_path)], capsys, monkeypatch)
+    assert "unknown keys ['ZZ01']" in err
+
+
+def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys):
+    argv = ["repro", "ljmw97", "--quick", "--out", str(tmp_path), "--jobs", "1", "--no-progress"]
+    assert main(argv) == 0
+    text = (tmp_path / "report.md").read_text()
+    assert "## The papers' results, reproduced" in text
+    assert "### LJMW97 Appendix A" in text and "## HS96" not in text
+    assert "typed from the paper" in text
+    pngs = sorted((tmp_path / "papers" / "ljmw97_appendix_a").glob("*.png"))
+    assert pngs and all(f"(papers/ljmw97_appendix_a/{p.name})" in text for p in pngs)
+    saved = load_results(tmp_path)["families"]["papers"]["attachments"]
+    # Both LJMW97 scripts ran; results.json keeps the attachments' names only.
+    assert {s.split("/")[1] for s in saved} == {"ljmw97_appendix_a", "ljmw97_triangle"}
+    appendix = [s for s in saved if s.startswith("papers/ljmw97_appendix_a/")]
+    assert appendix == sorted(f"papers/ljmw97_appendix_a/{p.name}" for p in pngs)
+    assert all((tmp_path / s).is_file() for s in saved)
+
+
+def test_bench_includes_the_papers(bench_dir):
+    papers = load_results(bench_dir)["families"]["papers"]
+    assert papers["status"] == "ok" and papers["records"]
+    assert all(rec["quick"] for rec in papers["records"])
 
 
 def test_no_command_prints_help(capsys):

@@ -7,20 +7,16 @@ kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-e
 a leading batch axis and are fully vectorized.
 """
 
-from optbound.analytic import _jit_cache
-
-_jit_cache.refresh()  # before any compiled kernel is loaded from numba's cache
-
-from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse  # noqa: E402
-from optbound.analytic.bounding_update import BoundingUpdate, bounding_update  # noqa: E402
-from optbound.analytic.lifted import LiftedUpdate, lifted_update  # noqa: E402
-from optbound.analytic.minkowski import (  # noqa: E402
+from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse
+from optbound.analytic.bounding_update import BoundingUpdate, bounding_update
+from optbound.analytic.lifted import LiftedUpdate, lifted_update
+from optbound.analytic.minkowski import (
     MinkowskiBatch,
     MinkowskiResult,
     minkowski_sum,
     minkowski_sum_batch,
 )
-from optbound.analytic.strip_fusion import (  # noqa: E402
+from optbound.analytic.strip_fusion import (
     CASES,
     StripFusion,
     StripFusionBatch,

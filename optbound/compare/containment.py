@@ -49,9 +49,36 @@ def max_level(outer, inner) -> float:
     t_min = 1e-15 * (abs(top) + gnorm)
     if slope(t_min) <= 0.0:
         return psi(t_min)  # hard case: the minimum sits at tau -> lambda_max
-    return psi(brentq(slope, t_min, gnorm, xtol=1e-15 * gnorm, rtol=4 * np.finfo(float).eps))
+    t_max = gnorm  # slope(gnorm) <= 0 in exact arithmetic; rounding can tip it over 0
+    while slope(t_max) > 0.0:
+        t_max *= 2.0
+    return psi(brentq(slope, t_min, t_max, xtol=1e-15 * gnorm, rtol=4 * np.finfo(float).eps))
 
 
 def contains(outer, inner, tol: float = 1e-9) -> bool:
-    """True if the ellipsoid ``inner`` lies in ``outer`` (max level <= 1 + tol)."""
+    """True if the ellipsoid ``inner`` lies in ``outer`` up to the relative tolerance ``tol``.
+
+    The test is ``max_level(outer, inner) <= 1 + tol``: ``inner`` lies in ``outer`` scaled
+    about its centre by ``sqrt(1 + tol)`` (about ``1 + tol / 2``; 5e-10 for the default).
+    ``max_level`` is computed in float64 from Cholesky factors and an eigendecomposition, so
+    for two equal ellipsoids, or an inner one touching the outer, it comes out at 1 up to a
+    few ulps times the condition number of ``outer``'s shape; ``tol`` absorbs that. It is
+    therefore a numerical comparison of two bounds (e.g. an analytic bound against an SDP
+    optimum), not a guarantee: ``tol=0`` asks for ``max_level <= 1`` exactly in float64,
+    which can still be off by that rounding either way.
+
+    Parameters
+    ----------
+    outer, inner : Ellipsoid
+        Ellipsoids of one dimension.
+    tol : float
+        Relative slack on the level, >= 0 (default 1e-9).
+
+    Raises
+    ------
+    ValueError
+        If ``tol`` is negative or not finite.
+    """
+    if not np.isfinite(tol) or tol < 0:
+        raise ValueError(f"tol must be a finite number >= 0, got {tol}")
     return max_level(outer, inner) <= 1.0 + tol

@@ -6,37 +6,46 @@
 - :func:`sivia`, :func:`pave`, :func:`constraint`: set inversion [LJMW97, Sect. 3.2],
   breadth-first over whole arrays of boxes, returning a :class:`Paving`.
 - :func:`relaxed_test`, :func:`min_outliers`: the relaxed intersection of KJWM00.
+
+Every interval operation and paving runs in round-to-nearest and restores the caller's
+rounding mode afterwards (:mod:`optbound.interval._fenv`), so optbound and codac (which sets
+round-upward when imported) work in one process; ``codac_interop`` converts between them.
+The submodules are imported in round-to-nearest too, so that their constants (and the float
+literals Python parses while compiling them) are the intended ones.
 """
 
-from optbound.interval.functions import (
-    absolute,
-    add,
-    atan2,
-    cos,
-    divide,
-    exp,
-    greater,
-    greater_equal,
-    hull,
-    intersection,
-    less,
-    less_equal,
-    log,
-    maximum,
-    minimum,
-    multiply,
-    negative,
-    power,
-    sin,
-    sqr,
-    sqrt,
-    subtract,
-)
-from optbound.interval.interval import Interval, as_interval
-from optbound.interval.paving import Paving
-from optbound.interval.relaxed import min_outliers, relaxed_test
-from optbound.interval.sivia import constraint, pave, sivia
-from optbound.interval.tribool import Tri, as_tri, tri_and, tri_not, tri_or
+from optbound.interval._fenv import round_to_nearest
+
+with round_to_nearest():
+    from optbound.interval.functions import (
+        absolute,
+        add,
+        atan2,
+        cos,
+        divide,
+        exp,
+        greater,
+        greater_equal,
+        hull,
+        intersection,
+        less,
+        less_equal,
+        log,
+        maximum,
+        minimum,
+        multiply,
+        negative,
+        power,
+        sin,
+        sqr,
+        sqrt,
+        subtract,
+    )
+    from optbound.interval.interval import Interval, as_interval
+    from optbound.interval.paving import Paving
+    from optbound.interval.relaxed import min_outliers, relaxed_test
+    from optbound.interval.sivia import constraint, pave, sivia
+    from optbound.interval.tribool import Tri, as_tri, tri_and, tri_not, tri_or
 
 __all__ = [
     "Interval",

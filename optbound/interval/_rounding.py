@@ -25,11 +25,16 @@ BASIC_ULPS = 1
 #: ulps stepped outward after a libm/SVML transcendental (exp, log, sin, cos, atan2, pow).
 TRANSCENDENTAL_ULPS = 4
 
-_EPS = 2.0**-52
+# Constants from hex literals, not ``2.0**-52``: pow() is only accurate in round-to-nearest,
+# and this module may be imported after another library changed the mode.
+_EPS = float.fromhex("0x1p-52")
 # 1 + 2^-60, -1 - 2^-60 and 1 + (2^-53 + 2^-60) round to these only in round-to-nearest.
-_PROBE = (np.array([1.0, -1.0, 1.0]), np.array([2.0**-60, -(2.0**-60), 2.0**-53 + 2.0**-60]))
-_NEAREST = np.array([1.0, -1.0, 1.0 + 2.0**-52])
-_TINY = 2.0**-1074
+_PROBE = (
+    np.array([1.0, -1.0, 1.0]),
+    np.array([float.fromhex("0x1p-60"), -float.fromhex("0x1p-60"), float.fromhex("0x1.02p-53")]),
+)
+_NEAREST = np.array([1.0, -1.0, float.fromhex("0x1.0000000000001p0")])
+_TINY = float.fromhex("0x1p-1074")
 
 
 def _kth_below_max(k: int) -> float:

@@ -18,7 +18,7 @@ TWO_PI = 2.0 * np.pi
 #: An upper bound of pi (the float ``np.pi`` is below pi).
 PI_UP = np.nextafter(np.pi, INF)
 #: Beyond this magnitude the float grid is too coarse to locate extrema of sin/cos.
-_PERIODIC_RANGE = 2.0**50
+_PERIODIC_RANGE = float.fromhex("0x1p50")
 
 
 def _restrict(lo, hi, outside):

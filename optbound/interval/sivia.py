@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from optbound.interval._fenv import nearest
 from optbound.interval._rounding import check_round_to_nearest
 from optbound.interval.interval import Interval, as_interval
 from optbound.interval.paving import Paving, box_rows
@@ -88,6 +89,7 @@ def _in_range(value, lo: float, hi: float) -> np.ndarray:
     return from_masks(inside, outside)
 
 
+@nearest
 def pave(
     test: Test | Sequence[Test],
     X0,
@@ -115,8 +117,9 @@ def pave(
     Raises
     ------
     RuntimeError
-        If the process does not compute in round-to-nearest (see
-        :func:`~optbound.interval._rounding.check_round_to_nearest`).
+        If round-to-nearest cannot be set. The paving runs in round-to-nearest and the
+        caller's rounding mode is restored afterwards (:mod:`optbound.interval._fenv`), so
+        it computes correctly after ``import codac``, which sets round-upward.
 
     Returns
     -------

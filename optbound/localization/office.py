@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.tracker import SetTracker
 from optbound.sets import Ellipsoid
@@ -195,14 +196,9 @@ def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = 
     return data
 
 
-def wrap(angle):
-    """Angle(s) wrapped to [-pi, pi)."""
-    return (np.asarray(angle) + np.pi) % (2.0 * np.pi) - np.pi
-
-
 def pose_level(E: Ellipsoid, pose: np.ndarray) -> float:
     """``E.level`` of ``pose`` with its heading taken modulo 2 pi nearest to E's centre."""
-    d = np.array([pose[0], pose[1], float(wrap(pose[2] - E.center[2]))])
+    d = np.array([pose[0], pose[1], float(wrap_angle(pose[2] - E.center[2]))])
     d[:2] -= E.center[:2]
     return float(d @ np.linalg.solve(E.shape, d))
 
@@ -215,7 +211,7 @@ def nearest_landmark(tracker: SetTracker, alpha: float, gate: float, seen: np.nd
     """
     x, y, psi = tracker.set.center
     lm = tracker.map.landmarks
-    off = np.abs(wrap(np.arctan2(lm[seen, 1] - y, lm[seen, 0] - x) - psi - alpha))
+    off = np.abs(wrap_angle(np.arctan2(lm[seen, 1] - y, lm[seen, 0] - x) - psi - alpha))
     if off.size == 0:
         return None
     order = np.argsort(off)

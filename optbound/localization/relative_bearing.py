@@ -9,8 +9,9 @@ measured as ``gamma_hat = gamma_ij(x) + v``, ``|v| <= eps``. The feasible set of
 measurement is the crescent ``M_ij`` between two circles through the landmarks.
 
 - **Exact set** (:func:`exact_paving`): SIVIA on ``|wrap(gamma_ij(x) - gamma_hat)| <= eps``
-  written with one interval ``atan2`` (:func:`bearing_residual`), conjoined with the same
-  constraint in sign form (:func:`bearing_sides`), independent of the rings.
+  written with one interval ``atan2`` (:func:`~.geometry.bearing_residual`), conjoined with
+  the same constraint in sign form (:func:`~.geometry.bearing_sides`), independent of the
+  rings.
 - **Circle of constant bearing** (:func:`circle`) [BH, eqs. (17)-(19)]: centre
   ``M = (L_i + L_j) / 2 - cot(gamma) Delta_perp / 2`` (``Delta_perp`` the counter-clockwise
   rotation of ``L_j - L_i``), radius ``|L_j - L_i| / (2 |sin gamma|)``; for ``gamma > 0`` the
@@ -48,8 +49,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.analytic import lifted_update, parabola_arc_ellipse
-from optbound.interval import Interval, Paving, constraint, pave, tri_and
-from optbound.sets import Box, PolynomialLifting, PseudoEllipsoid, QuadraticSet
+from optbound.interval import Paving, constraint, pave, tri_and
+from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
+from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
 
@@ -75,12 +77,6 @@ class Measurements:
         """``(L_i, L_j, gamma_hat, eps)`` of measurement k."""
         i, j = self.pairs[k]
         return self.landmarks[i], self.landmarks[j], float(self.gammas[k]), float(self.eps[k])
-
-
-def wrap_angle(a):
-    """Angles wrapped to (-pi, pi]."""
-    w = np.mod(np.asarray(a, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
-    return np.where(w == -np.pi, np.pi, w)
 
 
 def measurements(landmarks, pairs, gammas, eps) -> Measurements:
@@ -135,47 +131,12 @@ def _real(name: str, value) -> np.ndarray:
 
 
 # ------------------------------------------------------------------------- the exact set
-def bearing_residual(x, y, li, lj, gamma):
-    """``wrap(gamma_ij(x, y) - gamma)`` [BH, eq. (2)], on float arrays or ``Interval`` boxes.
-
-    ``gamma_ij = angle(x - L_i) - angle(x - L_j)`` is the angle of the complex product
-    ``(x - L_i) conj(x - L_j)``; rotating that product by ``-gamma`` and taking one ``atan2``
-    gives the wrapped residual, with the branch cut at residual ``±pi``, far from the
-    constraint ``|residual| <= eps < pi/2``. For intervals ``cos gamma``, ``sin gamma`` are
-    enclosed too, so the residual's enclosure is guaranteed.
-    """
-    ux, uy = x - lj[0], y - lj[1]
-    wx, wy = x - li[0], y - li[1]
-    dot = ux * wx + uy * wy
-    cross = ux * wy - uy * wx
-    g = Interval(gamma) if isinstance(x, Interval) else gamma
-    c, s = np.cos(g), np.sin(g)
-    return np.arctan2(c * cross - s * dot, c * dot + s * cross)
-
-
-def bearing_sides(x, y, li, lj, gamma, eps):
-    """``|x - L_i| |x - L_j|`` times ``(sin(r + eps), -sin(r - eps))``, ``r = gamma_ij - gamma``.
-
-    Both are >= 0 exactly when ``|wrap(gamma_ij - gamma)| <= eps`` (for eps < pi/2): the same
-    constraint as :func:`bearing_residual`, written as two cross products with the rotated
-    vectors, polynomial in x and free of atan2's branch cut (where the residual is near
-    ±pi, on the other arc of the circle, interval atan2 cannot exclude a box). Float arrays or
-    ``Interval`` boxes, from one formula; at the landmarks both vanish.
-    """
-    ux, uy = x - lj[0], y - lj[1]
-    wx, wy = x - li[0], y - li[1]
-    dot = ux * wx + uy * wy
-    cross = ux * wy - uy * wx
-    g, e = (Interval(gamma), Interval(eps)) if isinstance(x, Interval) else (gamma, eps)
-    lo, hi = g - e, g + e
-    return cross * np.cos(lo) - dot * np.sin(lo), dot * np.sin(hi) - cross * np.cos(hi)
-
-
 def exact_tests(data: Measurements) -> list:
     """Two SIVIA tests per measurement: ``|bearing_residual| <= eps`` and its sign form.
 
-    The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`bearing_sides` states the
-    same set without a branch cut, so that boxes on the circle's other arc can be excluded.
+    The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`~.geometry.bearing_sides`
+    states the same set without a branch cut, so that boxes on the circle's other arc can be
+    excluded.
     """
     tests = []
     for k in range(len(data)):
@@ -461,13 +422,94 @@ def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
     return [q for pair_rings in all_rings(data) for ring in pair_rings for q in ring.quadratics()]
 
 
+@dataclass(frozen=True)
+class EllipseBracket:
+    """Bracket of the smallest ellipse containing the exact set (:func:`best_ellipse`).
+
+    ``sdp``: the S-procedure SDP ellipse; ``boxes``: the MVEE of the paving's box corners;
+    ``best``: the smaller of the two (both certified outer ellipses); ``lower``: an area no
+    outer ellipse of the exact set can beat (weak duality, ``optimal.lower``).
+    """
+
+    sdp: Ellipsoid
+    boxes: Ellipsoid
+    best: Ellipsoid
+    lower: float
+
+
+def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
+    """Bracket of the smallest ellipse containing the exact set [BH, Sect. III-B, "Tighter bound"].
+
+    - ``sdp``: ``optimal.outer_ellipsoid`` of the rings [BH, eqs. (20)-(21)] ∩ the paving's
+      hull. The rings' "outside a disc" constraints are non-convex, the S-procedure relaxation
+      is loose, and the hull's four linear constraints (which contain the exact set and select
+      the arcs' part of the plane) are what make it usable; its ``lower_bound`` is a
+      weak-duality bound on points of the set (``optimal.lower``), valid for every outer
+      ellipse;
+    - ``boxes``: ``optimal.mvee`` of the corners of every inner and boundary box, certified to
+      contain them, hence (being convex) every box and the exact set.
+
+    Cost: one SDP with ``lower_bound=True`` (about 0.1-0.5 s) plus one MVEE over the corners.
+    """
+    from optbound import optimal  # cvxpy is imported only when a reference is asked for
+
+    sdp = optimal.outer_ellipsoid(
+        [*bound_ellipse_quadratics(data), paving.hull()], lower_bound=True
+    )
+    outer = paving.outer()
+    corners = np.unique(
+        np.concatenate([outer[:, [0, 1], [i, j]] for i in (0, 1) for j in (0, 1)]), axis=0
+    )
+    boxes = optimal.mvee(corners).ellipsoid
+    best = boxes if boxes.volume() < sdp.ellipsoid.volume() else sdp.ellipsoid
+    return EllipseBracket(sdp.ellipsoid, boxes, best, float(sdp.lower_bound))
+
+
+# ------------------------------------------------------------------------------- instances
+#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
+SECT5_PAIRS = ((2, 0), (0, 1), (1, 2))
+
+
+def bearings(x, landmarks, pairs=SECT5_PAIRS) -> np.ndarray:
+    """Noise-free relative bearings [BH, eq. (2)] seen from the point ``x``."""
+    L = np.asarray(landmarks, dtype=float)
+    ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
+    return wrap_angle([ang[i] - ang[j] for i, j in pairs])
+
+
+def random_instance(rng: np.random.Generator, pairs=SECT5_PAIRS):
+    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
+
+    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
+    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
+    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
+    need the crescent shape.
+    """
+    pairs = [tuple(p) for p in pairs]
+    margin = np.radians(3.0)
+    while True:
+        L = rng.uniform(-3.0, 3.0, (3, 2))
+        x = rng.uniform(-1.0, 1.0, 2)
+        eps = np.radians(rng.uniform(1.0, 8.0))
+        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
+        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
+            np.linalg.norm(L - x, axis=1)
+        )
+        if min(dists) > 0.3 and np.all(
+            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
+        ):
+            return L, pairs, wrap_angle(gam), eps, x
+
+
 __all__ = [
+    "SECT5_PAIRS",
     "BearingResult",
+    "EllipseBracket",
     "Measurements",
     "Ring",
     "Rings",
-    "bearing_residual",
-    "bearing_sides",
+    "bearings",
+    "best_ellipse",
     "bound_ellipse_quadratics",
     "certify_contains",
     "circle",
@@ -480,7 +522,7 @@ __all__ = [
     "localize",
     "measurements",
     "prior_box",
+    "random_instance",
     "ring_rows",
     "rings",
-    "wrap_angle",
 ]

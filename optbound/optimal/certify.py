@@ -22,10 +22,11 @@ matrices; if that fails a few times, ``CertificationError`` is raised.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 
 import numpy as np
 
+from optbound.optimal._small import max_eig
 from optbound.optimal.errors import CertificationError
 from optbound.sets import Ellipsoid
 
@@ -39,8 +40,13 @@ def rounding_bound(size: int, magnitude: float) -> float:
     return 16.0 * size * EPS * magnitude
 
 
+def frobenius(matrices: np.ndarray) -> np.ndarray:
+    """Frobenius norms of a stack of matrices (k, m, m): upper bounds on the spectral norms."""
+    return np.sqrt(np.einsum("kij,kij->k", matrices, matrices))
+
+
 def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
-    return float(np.linalg.eigvalsh(P - G)[-1])
+    return float(max_eig(P - G))
 
 
 def _smallest_inflation(
@@ -70,7 +76,8 @@ def certify_lmi(
     ellipsoid: Ellipsoid,
     form: Callable[[Ellipsoid], np.ndarray],
     fixed: np.ndarray,
-    terms: Sequence[tuple[float, np.ndarray]],
+    weights: np.ndarray,
+    matrices: np.ndarray,
     uncertainty: float = 0.0,
 ) -> tuple[Ellipsoid, float, float]:
     """Certify ``form(E) <= G0 + beta sum_j tau_j M_j``; inflate E by the smallest factor.
@@ -83,10 +90,12 @@ def certify_lmi(
         ``E -> P(E)``, positive semidefinite, proportional to ``C^{-1}``.
     fixed : ndarray
         ``G0``, the part of the right-hand side that does not carry multipliers.
-    terms : sequence of (tau_j, M_j)
-        The multiplier terms (``tau_j >= 0``).
+    weights : ndarray, shape (k,)
+        The multipliers ``tau_j >= 0``.
+    matrices : ndarray, shape (k, m, m)
+        The matrices ``M_j`` they multiply.
     uncertainty : float
-        Bound on the spectral-norm error of the supplied ``M_j`` terms (weighted by ``tau_j``),
+        Bound on the spectral-norm error of the supplied ``M_j`` (weighted by ``tau_j``),
         added to the margin.
 
     Returns
@@ -109,12 +118,13 @@ def certify_lmi(
         If no ``beta`` makes the right-hand side positive definite with margin, or the
         inflated ellipsoid still fails the re-check.
     """
-    S = sum(w * M for w, M in terms)
     size = fixed.shape[0]
-    g_scale = float(np.linalg.norm(fixed) + sum(abs(w) * np.linalg.norm(M) for w, M in terms))
+    S = (weights @ matrices.reshape(len(weights), -1)).reshape(size, size)
+    g_scale = float(np.linalg.norm(fixed) + np.abs(weights) @ frobenius(matrices))
 
     def margin(P: np.ndarray) -> float:
-        return rounding_bound(size, float(np.linalg.norm(P, 2)) + g_scale) + uncertainty
+        # The Frobenius norm bounds the spectral norm from above, for one BLAS call, no SVD.
+        return rounding_bound(size, float(np.linalg.norm(P)) + g_scale) + uncertainty
 
     P = form(ellipsoid)
     delta = margin(P)

@@ -20,7 +20,8 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
-from optbound.optimal.certify import rounding_bound
+from optbound.optimal._small import min_eig
+from optbound.optimal.certify import frobenius, rounding_bound
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.solver import solve
 
@@ -35,16 +36,21 @@ def emptiness_template(n: int, k: int) -> tuple[cp.Problem, tuple[cp.Parameter, 
     return _cvx.require_dpp(problem), forms, tau
 
 
-def refuse_empty(forms: Sequence[np.ndarray], errors: np.ndarray, tau: np.ndarray) -> None:
+def refuse_empty(
+    forms: np.ndarray | Sequence[np.ndarray], errors: np.ndarray, tau: np.ndarray
+) -> None:
     """Raise ``EmptyIntersectionError`` if ``sum tau_i F_i`` is positive definite with margin.
 
     ``errors[i]`` bounds the spectral-norm error of ``forms[i]``.
     """
     tau = np.maximum(tau, 0.0)
-    S = sum(t * F for t, F in zip(tau, forms, strict=True))
-    magnitude = float(sum(t * np.linalg.norm(F, 2) for t, F in zip(tau, forms, strict=True)))
-    margin = rounding_bound(S.shape[0], magnitude) + float(tau @ errors)
-    if np.linalg.eigvalsh(S)[0] > margin:
+    forms = np.asarray(forms)
+    size = forms.shape[1]
+    S = (tau @ forms.reshape(len(tau), -1)).reshape(size, size)
+    # Frobenius norms bound the spectral norms from above: a larger margin, never a smaller.
+    magnitude = float(tau @ frobenius(forms))
+    margin = rounding_bound(size, magnitude) + float(tau @ errors)
+    if min_eig(S) > margin:
         raise EmptyIntersectionError(
             "the intersection is empty (certified: sum_i tau_i F_i is positive definite)"
         )

@@ -50,7 +50,8 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
-from optbound.optimal.certify import certify_lmi, rounding_bound
+from optbound.optimal._small import min_eig, min_eigs
+from optbound.optimal.certify import certify_lmi, frobenius, rounding_bound
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.lift import Member, check_clip, lift
@@ -164,7 +165,9 @@ def _frame(
         raise EmptyIntersectionError(f"the quadratic set {bounded!r} is empty")
     if len(quadratics) > 2:
         ellipsoid = _frame_ellipsoid(quadratics) or ellipsoid
-    order = list(dims) + [i for i in range(n) if i not in dims] if dims else list(range(n))
+    if not dims:
+        return ellipsoid.center, ellipsoid.chol
+    order = list(dims) + [i for i in range(n) if i not in dims]
     W = np.zeros((n, n))
     W[np.ix_(order, order)] = np.linalg.cholesky(ellipsoid.shape[np.ix_(order, order)])
     return ellipsoid.center, W
@@ -172,18 +175,20 @@ def _frame(
 
 def _in_frame(
     quadratics: Sequence[QuadraticSet], frame: np.ndarray
-) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
-    """``F_hat_i = T^T F_i T / norm_i`` (unit Frobenius norm), the norms, and error bounds.
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``F_hat_i = T^T F_i T / norm_i`` (unit Frobenius norm, stacked), the norms, and error
+    bounds.
 
-    ``errors[i]`` bounds the rounding of the congruence, relative to the normalised form.
+    ``errors[i]`` bounds the rounding of the congruence, relative to the normalised form (with
+    the Frobenius norm of ``|T|^T |F_i| |T|``, an upper bound on its spectral norm).
     """
     forms = np.stack([q.F for q in quadratics])  # (k, n + 1, n + 1): one batched product each
     scaled = frame.T @ forms @ frame
-    norms = np.linalg.norm(scaled, axis=(1, 2))
+    norms = frobenius(scaled)
     normalized = 0.5 * (scaled + scaled.transpose(0, 2, 1)) / norms[:, None, None]
     abs_frame = np.abs(frame)
-    magnitudes = np.linalg.norm(abs_frame.T @ np.abs(forms) @ abs_frame, 2, axis=(1, 2))
-    return list(normalized), norms, rounding_bound(frame.shape[0], magnitudes) / norms
+    magnitudes = frobenius(abs_frame.T @ np.abs(forms) @ abs_frame)
+    return normalized, norms, rounding_bound(frame.shape[0], magnitudes) / norms
 
 
 def _lifted_form(ellipsoid: Ellipsoid, frame: np.ndarray) -> np.ndarray:
@@ -199,17 +204,17 @@ def _lifted_form(ellipsoid: Ellipsoid, frame: np.ndarray) -> np.ndarray:
     return X.T @ X
 
 
-def _require_certificate(forms: Sequence[np.ndarray]) -> None:
+def _require_certificate(forms: np.ndarray) -> None:
     """Refuse instances where no multipliers can exist, instead of letting the solver fail.
 
     The LMI needs ``sum tau_i A_i >= M > 0`` for the quadratic parts ``A_i``. If every ``A_i``
     is positive semidefinite and their sum is singular, that is impossible: the intersection
     is unbounded, or bounded only by half-spaces, which the S-procedure cannot use alone.
     """
-    parts = [F[:-1, :-1] for F in forms]
-    if any(np.linalg.eigvalsh(A)[0] < -_DEFINITE_RTOL for A in parts):
+    parts = forms[:, :-1, :-1]
+    if np.any(min_eigs(parts) < -_DEFINITE_RTOL):
         return  # an indefinite member (e.g. a ring's outside): leave it to the solver
-    if np.linalg.eigvalsh(sum(parts))[0] <= _DEFINITE_RTOL:
+    if min_eig(parts.sum(axis=0)) <= _DEFINITE_RTOL:
         raise ValueError(
             "no ellipsoid can be certified: the quadratic parts of the members are not jointly "
             "positive definite (the intersection is unbounded, or bounded by half-spaces only; "
@@ -268,7 +273,12 @@ def outer_ellipsoid(
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
         bound on points of the set pushed toward its extreme points; see
-        ``optbound.optimal.lower``).
+        ``optbound.optimal.lower``). Cost: about 10 to 20 times the call without it, e.g.
+        0.09 s against 7 ms (2-D, 10 strips), 0.16 s against 8 ms (3-D, 10 strips), 0.62 s
+        against 62 ms (4-D, 50 strips), medians on the shared 2-core development VM at load
+        average 2.4 (``python -m benchmarks.lower_bound_cost``; before its inner loops were
+        compiled with numba it was 1.6 to 3 times slower). Leave it off unless the bracket is
+        needed.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 
@@ -304,7 +314,8 @@ def outer_ellipsoid(
     _require_certificate(normalized)
 
     template = intersection_template(n, k, objective, dims_t)
-    template.forms.value = np.stack([F.ravel(order="F") for F in normalized], axis=1)
+    # Column i is F_hat_i flattened in column-major order (symmetric: the same as row-major).
+    _cvx.set_value(template.forms, normalized.reshape(k, -1).T)
     if template.weight is not None:
         template.weight.value = _cvx.trace_weight(W)
     try:
@@ -320,7 +331,7 @@ def outer_ellipsoid(
     M = template.M.value
     shape_y = np.linalg.inv(M)
     center_y = -shape_y @ template.bt.value
-    candidate = Ellipsoid(center + W @ center_y, W @ shape_y @ W.T)
+    candidate = Ellipsoid._from_floats(center + W @ center_y, W @ shape_y @ W.T)
     tau = np.maximum(template.tau.value, 0.0)
     corner = np.zeros((n + 1, n + 1))
     corner[n, n] = 1.0
@@ -329,7 +340,8 @@ def outer_ellipsoid(
         candidate,
         lambda e: _lifted_form(e, frame),
         corner,
-        list(zip(tau, normalized, strict=True)),
+        tau,
+        normalized,
         uncertainty=float(tau @ form_errors),
     )
     multipliers = tau / norms

@@ -18,6 +18,7 @@ by ``certify_points``), and its volume is within a factor ``(1 + tol)^{d/2}`` of
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 from optbound.optimal.certify import certify_points
 from optbound.sets import Ellipsoid
@@ -41,35 +42,70 @@ def khachiyan_weights(
 
     A step ``X <- (1 - s) X + s q_j q_j^T`` updates ``X^{-1}`` and all ``w_i`` in O(m d) by the
     Sherman-Morrison formula; they are recomputed from scratch every ``_REFRESH`` steps to
-    keep rounding from accumulating.
+    keep rounding from accumulating. The loop is compiled (numba): one step costs about a
+    microsecond per hundred points instead of tens of microseconds of numpy call overhead.
     """
     P = np.asarray(points, dtype=float)
-    m, n = P.shape
-    Q = np.vstack([P.T, np.ones(m)])
-    d = n + 1
+    m = P.shape[0]
+    Q = np.ascontiguousarray(np.hstack([P, np.ones((m, 1))]))  # rows q_i
     u = np.full(m, 1.0 / m)
+    converged = _iterate(Q, u, float(tol), int(max_iter), _REFRESH)
+    return u, bool(converged)
+
+
+@njit(cache=True)
+def _refresh(Q: np.ndarray, u: np.ndarray, X_inv: np.ndarray, w: np.ndarray) -> None:
+    """``X^{-1}`` and ``w_i = q_i^T X^{-1} q_i`` from scratch (in place)."""
+    X_inv[:, :] = np.linalg.inv((Q.T * u) @ Q)
+    for i in range(Q.shape[0]):
+        w[i] = _quad(X_inv, Q[i])
+
+
+@njit(cache=True)
+def _quad(A: np.ndarray, q: np.ndarray) -> float:
+    """``q^T A q`` by plain loops (a BLAS call per point would dominate at d <= 7)."""
+    total = 0.0
+    for a in range(q.shape[0]):
+        row = 0.0
+        for b in range(q.shape[0]):
+            row += A[a, b] * q[b]
+        total += q[a] * row
+    return total
+
+
+@njit(cache=True)
+def _iterate(Q: np.ndarray, u: np.ndarray, tol: float, max_iter: int, refresh: int) -> bool:
+    """Forward and away steps on ``u`` (in place) until the tolerance holds; whether it did."""
+    m, d = Q.shape
+    X_inv = np.empty((d, d))
+    w = np.empty(m)
     for it in range(max_iter):
-        if it % _REFRESH == 0:
-            X_inv = np.linalg.inv((Q * u) @ Q.T)
-            w = np.einsum("ij,ji->i", Q.T, X_inv @ Q)
-        up = int(np.argmax(w))
-        support = np.flatnonzero(u > 0)
-        down = int(support[np.argmin(w[support])])
+        if it % refresh == 0:
+            _refresh(Q, u, X_inv, w)
+        up, down = 0, -1
+        for i in range(m):
+            if w[i] > w[up]:
+                up = i
+            if u[i] > 0.0 and (down < 0 or w[i] < w[down]):
+                down = i
         if w[up] <= (1.0 + tol) * d and w[down] >= (1.0 - tol) * d:
-            return u, True
+            return True
         j = up if w[up] - d >= d - w[down] else down
         step = (w[j] - d) / (d * (w[j] - 1.0))
         if j == down:
             step = max(step, -u[j] / (1.0 - u[j]))
-        u *= 1.0 - step
-        u[j] += step
-        u[u < 0] = 0.0  # rounding of a full away step
+        for i in range(m):
+            u[i] = max(u[i] * (1.0 - step) + (step if i == j else 0.0), 0.0)  # 0: full away step
         # Sherman-Morrison for X' = (1 - s) X + s q_j q_j^T.
-        z = X_inv @ Q[:, j]
+        z = X_inv @ Q[j]
         denom = (1.0 - step) + step * w[j]
         X_inv = (X_inv - step * np.outer(z, z) / denom) / (1.0 - step)
-        w = (w - step * (Q.T @ z) ** 2 / denom) / (1.0 - step)
-    return u, False
+        for i in range(m):
+            qz = 0.0
+            for a in range(d):
+                qz += Q[i, a] * z[a]
+            w[i] = (w[i] - step * qz * qz / denom) / (1.0 - step)
+    return False
 
 
 def khachiyan_mvee(points: np.ndarray, tol: float = 1e-7, max_iter: int = 100_000) -> Ellipsoid:

@@ -69,23 +69,37 @@ def _bounded_ellipsoid(member: Member) -> Ellipsoid | None:
     return None
 
 
-def _clip(a: np.ndarray, lo: float, hi: float, bounded: Sequence[Ellipsoid]) -> tuple[float, float]:
-    """``[lo, hi]`` intersected with each bounded member's range of ``a^T x`` (widened)."""
+def _clip(
+    member: Member, a: np.ndarray, lo: float, hi: float, bounded: Sequence[Ellipsoid]
+) -> tuple[float, float]:
+    """``[lo, hi]`` intersected with each bounded member's range of ``a^T x`` (widened).
+
+    An empty result is reported with the user's own numbers: the member, its range along its
+    unit normal and the range over the bounded member it misses.
+    """
+    lo0, hi0 = lo, hi
     for ellipsoid in bounded:
         elo, ehi = ellipsoid.extent(a)
         pad = _EXTENT_RTOL * (abs(elo) + abs(ehi) + (ehi - elo))
         lo, hi = max(lo, elo - pad), min(hi, ehi + pad)
-    if lo > hi:
-        raise EmptyIntersectionError(
-            f"the range [{lo}, {hi}] of a^T x with a = {a.tolist()} is empty: "
-            "a strip or half-space misses a bounded member"
-        )
+        if lo > hi:
+            # Along the unit normal: a Strip stores a scaled normal, the user gave bounds.
+            norm = float(np.linalg.norm(a))
+            raise EmptyIntersectionError(
+                f"the intersection is empty: {member!r} allows u^T x in "
+                f"[{lo0 / norm:.6g}, {hi0 / norm:.6g}] along its unit normal "
+                f"u = {np.round(a / norm, 6).tolist()}, but over {ellipsoid!r} u^T x lies in "
+                f"[{elo / norm:.6g}, {ehi / norm:.6g}]"
+            )
     return lo, hi
 
 
 def _quadratic(a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
     if np.isfinite(lo) and np.isfinite(hi):
-        return QuadraticSet.from_bounds(a, lo, hi)
+        # ``a`` is a validated member's normal: only the order of the (clipped) range is left
+        # to check, and ``from_bounds`` refuses a wrong one with its message.
+        build = QuadraticSet._from_valid_bounds if lo <= hi else QuadraticSet.from_bounds
+        return build(a, lo, hi)
     if np.isfinite(hi):
         return QuadraticSet.from_halfspace(Halfspace(a, hi))
     return QuadraticSet.from_halfspace(Halfspace(-a, -lo))
@@ -147,7 +161,7 @@ def lift(
     bounded = [e for e in map(_bounded_ellipsoid, members) if e is not None] if clip else []
     # Linear ranges per member (None for a quadratic member), clipped to the ellipsoids.
     ranges = [
-        [(a, *_clip(a, lo, hi, bounded)) for a, lo, hi in _linear_ranges(member)]
+        [(a, *_clip(member, a, lo, hi, bounded)) for a, lo, hi in _linear_ranges(member)]
         if isinstance(member, Strip | Halfspace | Box)
         else None
         for member in members

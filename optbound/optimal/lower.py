@@ -49,6 +49,7 @@ from collections.abc import Sequence
 from math import lgamma, log, pi
 
 import numpy as np
+from numba import njit
 
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
@@ -193,11 +194,28 @@ def _along_faces(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> np.ndarray
     scale = 1.0 + np.linalg.norm(points, axis=1, keepdims=True)
     active = -_forms(lifted, F, lifted) < _ACTIVE_RTOL * scale * np.sqrt(norm2)
     inv_norm2 = np.where(active & (norm2 > 0), 1.0 / np.where(norm2 > 0, norm2, 1.0), 0.0)
-    for _ in range(_FACE_SWEEPS):
-        for i in range(F.shape[0]):
-            outward = np.maximum(np.sum(G * normals[i], axis=1), 0.0)
-            G = G - (outward * inv_norm2[:, i])[:, None] * normals[i]
+    G = np.array(G, dtype=float)  # a fresh array, projected in place
+    _project_sweeps(G, np.ascontiguousarray(normals), np.ascontiguousarray(inv_norm2), _FACE_SWEEPS)
     return G
+
+
+@njit(cache=True)
+def _project_sweeps(G: np.ndarray, normals: np.ndarray, inv_norm2: np.ndarray, sweeps: int) -> None:
+    """In place: ``sweeps`` passes removing, constraint by constraint, the outward part of each
+    row of G along that constraint's normal at the row's point (where it is active)."""
+    k, m, n = normals.shape
+    for _ in range(sweeps):
+        for i in range(k):
+            for p in range(m):
+                if inv_norm2[p, i] == 0.0:
+                    continue
+                outward = 0.0
+                for j in range(n):
+                    outward += G[p, j] * normals[i, p, j]
+                if outward > 0.0:
+                    scale = outward * inv_norm2[p, i]
+                    for j in range(n):
+                        G[p, j] -= scale * normals[i, p, j]
 
 
 def sample_set(

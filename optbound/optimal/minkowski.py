@@ -132,7 +132,8 @@ def minkowski_outer(
         candidate,
         lambda e: _gram(np.linalg.solve(e.chol, L)),
         np.zeros((k * n, k * n)),
-        list(zip(tau, blocks, strict=True)),
+        tau,
+        np.stack(blocks),
     )
     return OuterResult(
         ellipsoid=ellipsoid,

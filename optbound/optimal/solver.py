@@ -21,14 +21,16 @@ is never accepted.
 
 Fast re-solve (``primal_only=True``, Clarabel only): once a problem has been solved normally,
 its later solves skip the parts of ``problem.solve`` that a cached template does not need.
-cvxpy's compiled parameter map (``ParamConeProg``, built by the first solve) gives Clarabel's
-data as one sparse product with the parameter vector, Clarabel is called directly with the
-first ``ATTEMPTS`` setting, and only the primal values are mapped back, through cvxpy's own
-inverses of its reductions (e.g. the packing of symmetric variables). Dual values are not
-recovered (they keep those of an earlier solve), so only callers that read primal values opt
-in. Any Clarabel status but "Solved" falls back to the full path with its retries and
-refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same statuses and
-values.
+The first solve also prepares, once per compiled program (``_FastProgram``), what every
+re-solve shares: from cvxpy's compiled parameter map (``ParamConeProg``), Clarabel's ``A``
+with its fixed sparsity pattern, the parameter columns, the zero ``P`` and the cones, and for
+each variable the entries of Clarabel's ``x`` that form its value (read off cvxpy's own
+inverse reductions once). A re-solve is then two sparse products with the parameter vector,
+a fresh Clarabel solver with the first ``ATTEMPTS`` setting, and one selection per variable.
+Dual values are not recovered (they keep those of an earlier solve), so only callers that read
+primal values opt in. Any Clarabel status but "Solved" falls back to the full path with its
+retries and refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same
+statuses, values and certified ellipsoids.
 """
 
 from __future__ import annotations
@@ -40,13 +42,16 @@ from functools import cache
 import cvxpy as cp
 import numpy as np
 import scipy.sparse as sp
-from cvxpy.cvxcore.python import canonInterface
+from cvxpy.lin_ops.lin_op import CONSTANT_ID
 from cvxpy.reductions.solution import Solution
 from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import CLARABEL, dims_to_solver_cones
 
 from optbound.optimal.errors import SolverError
 
 SOLVERS = ("CLARABEL", "SCS")
+#: Clarabel's own solve time (its ``solve_time``, seconds) of the last fast-path solve in this
+#: process, or None; ``benchmarks/sdp_cache.py`` divides a whole call's time by it.
+last_clarabel_seconds: float | None = None
 # Clarabel gained PSD cones in 0.5.0; log det needs them together with exponential cones.
 _MIN_CLARABEL = (0, 5, 0)
 # Clarabel's relative duality gap is taken relative to max(1, |objective|), so for the small
@@ -55,6 +60,8 @@ _MIN_CLARABEL = (0, 5, 0)
 # Tighter gaps bring every quick-suite reference within 1.1e-5 of it, for ~9 % more time.
 # Where they cannot be reached (e.g. an MVEE of hundreds of points), the default gaps follow.
 _GAPS = {"tol_gap_abs": 1e-14, "tol_gap_rel": 1e-10}
+# Parameter maps with at most this many entries are kept dense (32 kB at the most).
+_DENSE_ENTRIES = 4096
 ATTEMPTS = {
     "CLARABEL": (
         {"max_step_fraction": 0.9, **_GAPS},
@@ -111,52 +118,159 @@ def _compiled(problem: cp.Problem):
     return program
 
 
-def _clarabel_data(
-    problem: cp.Problem, program
-) -> tuple[np.ndarray, float, sp.csc_array, np.ndarray]:
-    """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``."""
-    for reduction in problem._cache.solving_chain.reductions:
-        reduction.update_parameters(problem)
-    params = canonInterface.get_parameter_vector(
-        program.total_param_size,
-        program.param_id_to_col,
-        program.param_id_to_size,
-        lambda key: np.asarray(program.id_to_param[key].value),
-    )
-    q = program.q @ params
-    # [A, b] is a CSC matrix with a fixed pattern whose values are linear in the parameters
-    # (cvxpy's ``ReducedMat``).
-    program.reduced_A.cache()
-    values = program.reduced_A.reduced_mat @ params
-    indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
-    split = indptr[-2]
-    A = sp.csc_array((-values[:split], indices[:split], indptr[:-1]), shape=(rows, cols - 1))
-    b = np.zeros(rows)
-    b[indices[split:]] = values[split:]
-    return np.ravel(q[:-1]), float(q[-1]), A, b
+class _FastProgram:
+    """One compiled program, prepared for re-solves with Clarabel directly.
+
+    Built once per program (on its first fast re-solve), it holds what does not change between
+    re-solves: the sparsity pattern of ``A`` (cvxpy's ``ReducedMat``: the values of ``[A, b]``
+    are one sparse product with the parameter vector), Clarabel's zero ``P`` and cone list, the
+    parameter columns, and for each variable of the problem the entries of Clarabel's ``x`` that
+    make up its value. The latter map is read off cvxpy's own inverse reductions, evaluated once
+    at ``x = 1, 2, ..., N``; it is used only if every value is a plain selection of entries of
+    ``x`` (symmetric variables are: cvxpy stores their upper triangle), checked again at a
+    positive random ``x`` (positive because the inverses project onto the variables' domains,
+    e.g. ``nonneg``, which ``unpack`` also does). Otherwise ``variables`` is None and the
+    inverse reductions run per solve.
+    """
+
+    def __init__(self, problem: cp.Problem, program) -> None:
+        # No reference back to ``program``, which holds this object: no cycle that only the
+        # garbage collector could free when the template cache drops the problem.
+        self.param_size = program.total_param_size
+        self.q = _dense_if_small(program.q)
+        # Parameters with attributes (e.g. PSD) are replaced by reduced copies in the compiled
+        # program, whose values the reductions' ``update_parameters`` set on every solve.
+        own = {param.id for param in problem.parameters()}
+        self.reduced_params = any(
+            key not in own for key in program.param_id_to_col if key != CONSTANT_ID
+        )
+        self.columns = [
+            (program.id_to_param[key], col, program.param_id_to_size[key])
+            for key, col in program.param_id_to_col.items()
+            if key != CONSTANT_ID
+        ]
+        self.constant_col = program.param_id_to_col.get(CONSTANT_ID)
+        program.reduced_A.cache()
+        self.values_map = _dense_if_small(program.reduced_A.reduced_mat)
+        indices, indptr, (rows, cols) = program.reduced_A.problem_data_index
+        self.split = indptr[-2]
+        self.b_rows = indices[self.split :]
+        n = cols - 1
+        self.A = sp.csc_array(
+            (np.zeros(self.split), indices[: self.split], indptr[:-1]), shape=(rows, n)
+        )
+        self.P = sp.csc_array((n, n))
+        self.cones = dims_to_solver_cones(program.cone_dims)
+        self.variables = self._selections(problem, n)
+
+    def parameter_vector(self, problem: cp.Problem) -> np.ndarray:
+        """cvxpy's parameter vector (``canonInterface.get_parameter_vector``), column order."""
+        if self.reduced_params:
+            for reduction in problem._cache.solving_chain.reductions:
+                reduction.update_parameters(problem)
+        params = np.zeros(self.param_size + 1)
+        for param, col, size in self.columns:
+            params[col : col + size] = np.ravel(param.value, order="F")
+        if self.constant_col is not None:
+            params[self.constant_col] = 1.0
+        return params
+
+    def data(self, params: np.ndarray) -> tuple[np.ndarray, float, sp.csc_array, np.ndarray]:
+        """``(c, d, A, b)`` for ``min c x + d, A x + s = b``, as cvxpy's ``ConicSolver.apply``.
+
+        ``A`` is the one cached matrix with new values (Clarabel copies its data)."""
+        q = self.q @ params
+        values = self.values_map @ params
+        self.A.data[:] = -values[: self.split]
+        b = np.zeros(self.A.shape[0])
+        b[self.b_rows] = values[self.split :]
+        return np.ravel(q[:-1]), float(q[-1]), self.A, b
+
+    @staticmethod
+    def _invert(problem: cp.Problem, x: np.ndarray, objective: float) -> Solution:
+        """Primal values of the problem's variables from Clarabel's ``x``, by cvxpy's own
+        inverses of its reductions (skipping the solver's, which recovers duals)."""
+        solution = Solution(cp.OPTIMAL, objective, {problem._cache.param_prog.x.id: x}, {}, {})
+        chain = problem._cache.solving_chain.reductions[:-1]
+        for reduction, inverse in reversed(
+            list(zip(chain, problem._cache.inverse_data, strict=True))
+        ):
+            solution = reduction.invert(solution, inverse)
+        return solution
+
+    def _selections(self, problem: cp.Problem, n: int) -> list | None:
+        coded = self._invert(problem, np.arange(1.0, n + 1.0), 0.0).primal_vars
+        check = np.random.default_rng(0).uniform(1.0, 2.0, n)
+        checked = self._invert(problem, check, 0.0).primal_vars
+        selections = []
+        for variable in problem.variables():
+            code = np.asarray(coded[variable.id], dtype=float)
+            index = np.rint(code).astype(np.intp) - 1
+            valid = np.array_equal(code, index + 1.0) and np.all((index >= 0) & (index < n))
+            recovered = variable.project(check[index])
+            if not valid or not np.array_equal(recovered, checked[variable.id]):
+                return None
+            selections.append((variable, index, _projection(variable, index)))
+        return selections
+
+    def unpack(self, problem: cp.Problem, x: np.ndarray, objective: float) -> None:
+        """Set the variables' values (and the problem's status) from Clarabel's ``x``."""
+        if self.variables is None:
+            problem.unpack(self._invert(problem, x, objective))
+            return
+        for variable, index, project in self.variables:
+            value = x[index]
+            variable.save_value(value if project is None else project(value))
+        # What ``Problem.unpack`` sets, without re-evaluating the objective (e.g. a log det).
+        problem._status = cp.OPTIMAL
+        problem._value = -objective if isinstance(problem.objective, cp.Maximize) else objective
+
+
+def _dense_if_small(matrix: sp.sparray | sp.spmatrix) -> sp.sparray | sp.spmatrix | np.ndarray:
+    """A small parameter map as a dense array: scipy's sparse product costs microseconds of
+    Python checks, a dense one of this size less than one."""
+    return matrix.toarray() if np.prod(matrix.shape) <= _DENSE_ENTRIES else matrix
+
+
+def _projection(variable: cp.Variable, index: np.ndarray):
+    """What cvxpy's ``variable.project`` does to a selection ``x[index]``: nothing for a plain
+    variable, or for a symmetric one whose selection is symmetric (cvxpy would average it with
+    its transpose); the clipping at 0 for ``nonneg``; else ``project`` itself."""
+    attributes = {name for name, value in variable.attributes.items() if value}
+    if not attributes or (attributes == {"symmetric"} and np.array_equal(index, index.T)):
+        return None
+    if attributes == {"nonneg"}:
+        return lambda value: np.maximum(value, 0.0)
+    return variable.project
+
+
+def _fast_program(problem: cp.Problem) -> _FastProgram | None:
+    """The prepared compiled program of ``problem`` if the fast path can use it, else None."""
+    program = _compiled(problem)
+    if program is None:
+        return None
+    fast = getattr(program, "_optbound_fast", None)
+    if fast is None:
+        fast = _FastProgram(problem, program)
+        program._optbound_fast = fast
+    return fast
 
 
 def _fast_solve(problem: cp.Problem) -> bool:
     """Re-solve a compiled ``problem`` with Clarabel directly; True if Clarabel "Solved" it."""
     import clarabel
 
-    program = _compiled(problem)
-    if program is None:
+    fast = _fast_program(problem)
+    if fast is None:
         return False
-    c, offset, A, b = _clarabel_data(problem, program)
+    c, offset, A, b = fast.data(fast.parameter_vector(problem))
     settings = CLARABEL.parse_solver_opts(False, ATTEMPTS["CLARABEL"][0])
-    P = sp.csc_array((c.size, c.size))
-    cones = dims_to_solver_cones(program.cone_dims)
-    result = clarabel.DefaultSolver(P, c, A, b, cones, settings).solve()
+    result = clarabel.DefaultSolver(fast.P, c, A, b, fast.cones, settings).solve()
+    global last_clarabel_seconds
+    last_clarabel_seconds = float(result.solve_time)
     if str(result.status) != "Solved":
         return False
-    x = {program.x.id: np.asarray(result.x)}
-    solution = Solution(cp.OPTIMAL, result.obj_val + offset, x, {}, {})
-    # cvxpy's own inverses of its reductions (skipping the solver's, which recovers duals).
-    chain = problem._cache.solving_chain.reductions[:-1]
-    for reduction, inverse in reversed(list(zip(chain, problem._cache.inverse_data, strict=True))):
-        solution = reduction.invert(solution, inverse)
-    problem.unpack(solution)
+    fast.unpack(problem, np.asarray(result.x), result.obj_val + offset)
     return True
 
 
@@ -181,6 +295,8 @@ def solve(problem: cp.Problem, solver: str, primal_only: bool = False) -> float:
     for options in ATTEMPTS[name]:
         status = _status_of(problem, name, options)
         if status == cp.OPTIMAL:
+            if fast:  # prepare the re-solves now, as part of the first (compiling) solve
+                _fast_program(problem)
             return time.perf_counter() - start
         statuses.append(status)
         if status in (cp.INFEASIBLE, cp.UNBOUNDED):

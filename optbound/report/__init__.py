@@ -7,12 +7,13 @@
 
 from optbound.report.document import REPORT_FILE, write_report
 from optbound.report.headline import headline_rows
-from optbound.report.readme import source_readme, update_readme
+from optbound.report.readme import headline_refusal, source_readme, update_readme
 from optbound.report.results import RESULTS_FILE, load_results, save_results, write_csv
 
 __all__ = [
     "REPORT_FILE",
     "RESULTS_FILE",
+    "headline_refusal",
     "headline_rows",
     "load_results",
     "save_results",

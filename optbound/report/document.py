@@ -7,7 +7,13 @@ from pathlib import Path
 from optbound.report import figures
 from optbound.report.headline import HEADERS, headline_rows
 from optbound.report.results import write_csv
-from optbound.report.summary import group, ratio_stats, worst_label
+from optbound.report.summary import (
+    DEGENERATE_GAP,
+    group,
+    ratio_stats,
+    without_degenerate_lower,
+    worst_label,
+)
 from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds, markdown_table
 
 REPORT_FILE = "report.md"
@@ -92,8 +98,14 @@ def _family_section(name: str, fam: dict, out: Path) -> list[str]:
             parts += _tightness_section(name, fam["records"], out)
         elif fam["kind"] == "recursive":
             parts += _recursive_section(fam["records"], out)
+        elif fam["kind"] == "papers":
+            parts += papers_section(fam["records"])
         else:
             parts.append(_speed_table(fam["records"]))
+    elif not fam["notes"] and not fam["errors"]:
+        parts.append("No task in this suite.")
+    if fam["kind"] != "papers":  # the papers' records place their own figures
+        parts += [f"![{Path(name).stem}]({name})" for name in sorted(fam.get("attachments", []))]
     parts += [f"> {note}" for note in fam["notes"]]
     if fam["errors"]:
         parts.append(_errors(fam["errors"]))
@@ -183,12 +195,21 @@ def _recursive_section(records: list[dict], out: Path) -> list[str]:
         _k_table(records, "ratio"),
     ]
     if any(rec.get("lower_ratio") is not None for rec in records):
+        cleaned, flagged = without_degenerate_lower(records)
         parts += [
             "The same volumes divided by a lower bound on the smallest outer ellipsoid (the "
             "minimum-volume ellipsoid of points sampled in the exact set): an upper bound on "
             "the recursion's true loss, which lies between the two tables.",
-            _k_table(records, "lower_ratio"),
+            _k_table(cleaned, "lower_ratio"),
         ]
+        if flagged:
+            where = "; ".join(worst_label(rec) for rec in flagged[:MAX_ERRORS_SHOWN])
+            parts.append(
+                f"**{len(flagged)} degenerate lower bound(s)** (SDP / lower bound above "
+                f"{DEGENERATE_GAP:g}: the sampled points collapsed, not a real gap) are left out "
+                f"of this table and of the figure's dotted lines, counted under \"no lower "
+                f'bound": {where}.'
+            )
     return [*parts, f"![recursive tightness]({png.name})"]
 
 
@@ -220,6 +241,32 @@ def _k_table(records: list[dict], field: str) -> str:
         "worst (max) instance",
     ]
     return markdown_table(headers, rows)
+
+
+PAPERS_NOTE = (
+    "One `quantity | paper | optbound` table per reproduction script (`papers_repro/`): the "
+    '**paper** column holds values and claims typed from the paper (quoted; "—" where the '
+    "paper gives none), the **optbound** column is computed by the script in this run."
+)
+
+
+def papers_section(records: list[dict], level: int = 3) -> list[str]:
+    """Each script's Markdown, its headings moved to ``level``, then its figures."""
+    parts = [PAPERS_NOTE]
+    for rec in records:
+        variant = " (quick variant)" if rec["quick"] else ""
+        parts.append(f"Paper **{rec['paper']}**, `papers_repro/{rec['script']}.py`{variant}:")
+        parts.append(_demote(rec["markdown"], level))
+        parts.extend(f"![{Path(fig).stem}]({fig})" for fig in rec["figures"])
+    return parts
+
+
+def _demote(markdown: str, level: int) -> str:
+    """Headings of ``markdown`` shifted so that its top level becomes ``level``."""
+    lines = markdown.splitlines()
+    depths = [len(line) - len(line.lstrip("#")) for line in lines if line.startswith("#")]
+    shift = level - min(depths) if depths else 0
+    return "\n".join("#" * shift + line if line.startswith("#") else line for line in lines)
 
 
 def _speed_table(records: list[dict]) -> str:

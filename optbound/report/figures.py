@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from optbound.report.summary import group
+from optbound.report.summary import group, without_degenerate_lower
 from optbound.sets import Ellipsoid, Strip
 
 # Gaps ratio - 1 below this are solver-level noise; the histograms pile them into the first bin.
@@ -24,6 +24,16 @@ BOUND_COLORS = {
     "robust": "tab:green",
     "recursive": "tab:purple",
 }
+#: Dash pattern of each SDP reference (matched in its label), and their colours in order.
+SDP_DASHES = {
+    "volume": (0, (5, 3)),
+    "trace": (0, (1.5, 1.5)),
+    "projection": (0, (6, 2, 1.5, 2)),
+    "batch": (0, (3, 1.5, 1, 1.5, 1, 1.5)),
+}
+SDP_COLORS = ("k", "#7a0000", "#003d7a", "#3d3d00")
+#: Inset zoom when the exact set's extent is below this fraction of the panel's.
+ZOOM_BELOW = 0.3
 
 
 def pyplot():
@@ -95,7 +105,8 @@ def recursive_plot(records: list[dict], path: Path) -> Path:
     """Ratio of the recursive filter to the batch SDP vs k (median line, min-max band per
     dimension), and its median ratio to the lower bound on the optimum (dotted)."""
     plt = pyplot()
-    by_variant = group([r for r in records if r["ratio"] is not None], ("variant",))
+    cleaned, flagged = without_degenerate_lower(records)
+    by_variant = group([r for r in cleaned if r["ratio"] is not None], ("variant",))
     fig, axes = plt.subplots(
         1,
         len(by_variant),
@@ -144,11 +155,13 @@ def recursive_plot(records: list[dict], path: Path) -> Path:
         title="vs batch SDP: median line, min–max band",
         title_fontsize=8,
     )
-    fig.suptitle(
+    title = (
         "Recursive analytic filter vs batch SDP (solid; below 1: the SDP is loose) and vs a "
-        "lower bound on the optimum (dotted)",
-        fontsize=10,
+        "lower bound on the optimum (dotted)"
     )
+    if flagged:
+        title += f"\n{len(flagged)} degenerate lower bound(s) left out (listed in the report)"
+    fig.suptitle(title, fontsize=10)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -190,41 +203,89 @@ def _minkowski_boundary(summands: list[Ellipsoid], m: int = 720) -> np.ndarray:
 
 
 def _draw_instance(ax, fig_spec: dict) -> None:
-    """One panel: the exact set (shaded) and every bound over it; ``summands`` specs show a
-    Minkowski sum, the others a prior ellipse cut by strips."""
+    """One panel: the exact set (shaded, outlined on top of the bounds) and every bound over
+    it, with an inset zoom when the exact set is small in the panel; ``summands`` specs show
+    a Minkowski sum, the others a prior ellipse cut by strips."""
     bounds = [(b["label"], _ellipsoid(b)) for b in fig_spec["bounds"]]
     lo, hi = _limits([B for _, B in bounds])
-    if "summands" in fig_spec:
-        ax.fill(
-            *_minkowski_boundary([_ellipsoid(e) for e in fig_spec["summands"]]).T, color=EXACT_COLOR
-        )
-    else:
-        E = _ellipsoid(fig_spec["ellipsoid"])
-        strips = [Strip(s["a"], s["b"]) for s in fig_spec["strips"]]
-        xs, ys = np.linspace(lo[0], hi[0], GRID), np.linspace(lo[1], hi[1], GRID)
-        mask = _exact_mask(E, strips, xs, ys)
-        ax.contourf(xs, ys, mask.astype(float), levels=[0.5, 1.5], colors=[EXACT_COLOR])
-        ax.plot(*E.boundary(400).T, color="0.55", lw=0.8, label="prior ellipse")
-        for S in strips:
-            _draw_strip(ax, S, lo, hi)
+    exact = _draw_exact(ax, fig_spec, lo, hi, prior=True)
     for label, B in bounds:
         ax.plot(*B.boundary(400).T, label=label, **_style(label))
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
+    ax.set_xlabel("x₁", fontsize=8)
+    ax.set_ylabel("x₂", fontsize=8)
     ax.set_title(f"{fig_spec['title']} (seed {fig_spec['seed']})", fontsize=9)
     ax.tick_params(labelsize=7)
+    if exact is not None and np.max(exact[1] - exact[0]) < ZOOM_BELOW * np.max(hi - lo):
+        _zoom(ax, fig_spec, bounds, exact)
+
+
+def _draw_exact(ax, fig_spec: dict, lo, hi, prior: bool) -> tuple[np.ndarray, np.ndarray] | None:
+    """Shade the exact set and outline it (above the bounds' lines); its bounding box."""
+    if "summands" in fig_spec:
+        boundary = _minkowski_boundary([_ellipsoid(e) for e in fig_spec["summands"]])
+        ax.fill(*boundary.T, color=EXACT_COLOR)
+        ax.plot(*boundary.T, color="0.25", lw=0.7, zorder=5)
+        return boundary.min(axis=0), boundary.max(axis=0)
+    E = _ellipsoid(fig_spec["ellipsoid"])
+    strips = [Strip(s["a"], s["b"]) for s in fig_spec["strips"]]
+    xs, ys = np.linspace(lo[0], hi[0], GRID), np.linspace(lo[1], hi[1], GRID)
+    mask = _exact_mask(E, strips, xs, ys)
+    ax.contourf(xs, ys, mask.astype(float), levels=[0.5, 1.5], colors=[EXACT_COLOR])
+    ax.contour(xs, ys, mask.astype(float), levels=[0.5], colors=["0.25"], linewidths=0.7, zorder=5)
+    if prior:
+        ax.plot(*E.boundary(400).T, color="0.55", lw=0.8, label="prior ellipse")
+        for S in strips:
+            _draw_strip(ax, S, lo, hi)
+    if not mask.any():
+        return None
+    rows, cols = np.nonzero(mask)
+    return np.array([xs[cols.min()], ys[rows.min()]]), np.array([xs[cols.max()], ys[rows.max()]])
+
+
+def _zoom(ax, fig_spec: dict, bounds: list, exact: tuple[np.ndarray, np.ndarray]) -> None:
+    """An inset magnifying the exact set and the bounds' lines around it."""
+    lo, hi = exact
+    half = 0.75 * float(np.max(hi - lo)) + 1e-12
+    mid = 0.5 * (lo + hi)
+    zlo, zhi = mid - half, mid + half
+    inset = ax.inset_axes([0.6, 0.6, 0.38, 0.38])
+    _draw_exact(inset, fig_spec, zlo, zhi, prior=False)
+    for label, B in bounds:
+        inset.plot(*B.boundary(2000).T, **{**_style(label), "lw": 1.2})
+    inset.set_xlim(zlo[0], zhi[0])
+    inset.set_ylim(zlo[1], zhi[1])
+    inset.set_aspect("equal")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    inset.set_title("zoom on the exact set", fontsize=6)
+    ax.indicate_inset_zoom(inset, edgecolor="0.3")
 
 
 def _style(label: str) -> dict:
-    """One colour per kind of bound across all panels; the SDP optimum dashed black."""
+    """One style per kind of bound across all panels.
+
+    Analytic bounds: wide translucent lines, one colour per criterion. SDP references: thin
+    dark lines on top, one dash pattern per reference (volume, trace, projection, ...), so
+    two references in one panel stay apart.
+    """
     if label.startswith("SDP"):
-        return {"color": "k", "lw": 1.2, "ls": (0, (4, 3)), "zorder": 4}
+        for i, (key, dash) in enumerate(SDP_DASHES.items()):
+            if key in label:
+                return {
+                    "color": SDP_COLORS[i % len(SDP_COLORS)],
+                    "lw": 1.3,
+                    "ls": dash,
+                    "zorder": 4,
+                }
+        return {"color": "k", "lw": 1.3, "ls": (0, (1, 1)), "zorder": 4}
     # Wide and translucent, so that a bound equal to the SDP optimum shows beside its dashes.
     for key, color in BOUND_COLORS.items():
         if key in label:
-            return {"color": color, "lw": 2.6, "alpha": 0.75}
-    return {"lw": 2.6, "alpha": 0.75}
+            return {"color": color, "lw": 2.6, "alpha": 0.6}
+    return {"lw": 2.6, "alpha": 0.6}
 
 
 def _draw_strip(ax, S: Strip, lo: np.ndarray, hi: np.ndarray) -> None:

@@ -6,7 +6,7 @@ the README's bench section, so every number a reader sees first is computed here
 
 from __future__ import annotations
 
-from optbound.report.summary import group, ratio_stats
+from optbound.report.summary import group, ratio_stats, without_degenerate_lower
 from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds
 
 HEADERS = ("measure", "value")
@@ -22,6 +22,8 @@ def headline_rows(results: dict) -> list[tuple[str, str]]:
             rows.extend(_tightness_rows(name, fam["records"]))
         elif fam["kind"] == "recursive":
             rows.extend(_recursive_rows(fam["records"]))
+        elif fam["kind"] == "papers":
+            rows.extend(_paper_rows(fam["records"]))
         else:
             rows.extend(_speed_rows(fam))
     return rows
@@ -42,10 +44,22 @@ def _recursive_rows(records: list[dict]) -> list[tuple[str, str]]:
     for k in sorted({ks[0], ks[len(ks) // 2], ks[-1]}):
         at_k = [rec for rec in records if rec["k"] == k]
         text = stats_text(ratio_stats(at_k))
-        low = ratio_stats(at_k, "lower_ratio")
+        cleaned, flagged = without_degenerate_lower(at_k)
+        low = ratio_stats(cleaned, "lower_ratio")
         if low["n"]:
             text += f"; vs lower bound on the optimum: median {fmt_ratio(low['median'])}"
+        if flagged:
+            text += f" ({len(flagged)} degenerate lower bound(s) left out)"
         rows.append((f"recursive · analytic filter after k={k} strips / batch SDP", text))
+    return rows
+
+
+def _paper_rows(records: list[dict]) -> list[tuple[str, str]]:
+    rows = []
+    for (paper,), recs in group(records, ("paper",)).items():
+        names = ", ".join(f"`{rec['script']}`" for rec in recs)
+        variant = "quick variants" if all(rec["quick"] for rec in recs) else "full"
+        rows.append((f"papers · {paper}", f"reproduced by {names} ({variant}); tables in report"))
     return rows
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import base64
 import csv
 import json
 from pathlib import Path
@@ -13,10 +14,26 @@ CSV_FIRST = ("family", "variant", "dim", "cond", "k", "seed", "criterion", "metr
 
 
 def save_results(results: dict, out_dir: str | Path) -> Path:
-    """Write ``results`` to ``out_dir/results.json`` (strict JSON: no NaN or infinity)."""
-    path = Path(out_dir) / RESULTS_FILE
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(results, indent=1, allow_nan=False) + "\n")
+    """Write ``results`` to ``out_dir/results.json`` (strict JSON: no NaN or infinity).
+
+    A family's ``attachments`` (``{relative path: base64 bytes}``, e.g. the figures of the
+    papers' scripts) are written as files under ``out_dir``; the JSON keeps their names.
+    """
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    families = {}
+    for name, fam in results["families"].items():
+        for rel, data in fam.get("attachments", {}).items():
+            target = out / rel
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(base64.b64decode(data))
+        # The JSON keeps the attachments' names only (the report links them).
+        families[name] = fam
+        if "attachments" in fam:
+            families[name] = {**fam, "attachments": sorted(fam["attachments"])}
+    path = out / RESULTS_FILE
+    text = json.dumps({**results, "families": families}, indent=1, allow_nan=False)
+    path.write_text(text + "\n")
     return path
 
 

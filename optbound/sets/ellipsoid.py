@@ -67,6 +67,17 @@ class Ellipsoid(ConvexSet):
         E._set(center, shape, chol)
         return E
 
+    @classmethod
+    def _from_floats(cls, center: np.ndarray, shape: np.ndarray) -> Ellipsoid:
+        """The checks of ``__init__`` for float64 arrays of matching shapes built by our own
+        code (e.g. from a solver's answer), in one compiled pass without conversions; any
+        failure goes through ``__init__`` for its error message."""
+        shape = 0.5 * (shape + shape.T)
+        L = np.zeros_like(shape)
+        if check_ellipsoid(center, shape, L) != 0:
+            return cls(center, shape)
+        return cls._trusted(center, shape, L)
+
     # ----------------------------------------------------------------- basic attributes
     @property
     def center(self) -> np.ndarray:
@@ -132,6 +143,12 @@ class Ellipsoid(ConvexSet):
         dirs, single = v.points("d", d, self.dim)
         h = dirs @ self._center + np.sqrt(np.einsum("ij,jk,ik->i", dirs, self._shape, dirs))
         return float(h[0]) if single else h
+
+    def extent(self, a) -> tuple[float, float]:
+        """Range ``[c^T a - sqrt(a^T C a), c^T a + sqrt(a^T C a)]`` of ``a^T x``."""
+        a = v.finite_vector("a", a, self.dim)
+        mid, half = float(a @ self._center), float(np.sqrt(a @ self._shape @ a))
+        return mid - half, mid + half
 
     # ---------------------------------------------------------------- operations
     def project(self, dims) -> Ellipsoid:

@@ -46,6 +46,24 @@ class QuadraticSet:
             raise ValueError("F must not be zero")
         self._F = v.symmetric_matrix("F", F)
         self._F.setflags(write=False)
+        self._ellipsoid: Ellipsoid | None = None
+
+    @classmethod
+    def _trusted(cls, F: np.ndarray) -> QuadraticSet:
+        """Wrap an F that a constructor below assembled from validated parts: finite, exactly
+        symmetric and non-zero by construction, so ``__init__``'s checks are skipped."""
+        q = cls.__new__(cls)
+        F.setflags(write=False)
+        q._F, q._ellipsoid = F, None
+        return q
+
+    @staticmethod
+    def _assemble(A: np.ndarray, b: np.ndarray, c: float) -> np.ndarray:
+        """``[[A, b], [b^T, c]]`` (exactly symmetric when A is)."""
+        n = b.shape[0]
+        F = np.empty((n + 1, n + 1))
+        F[:n, :n], F[:n, n], F[n, :n], F[n, n] = A, b, b, c
+        return F
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -62,7 +80,9 @@ class QuadraticSet:
         P = np.linalg.inv(E.shape)
         P = 0.5 * (P + P.T)
         Pc = P @ E.center
-        return cls.from_parts(P, -Pc, E.center @ Pc - 1.0)
+        q = cls._trusted(cls._assemble(P, -Pc, E.center @ Pc - 1.0))
+        q._ellipsoid = E  # the validated original, returned by ``as_ellipsoid``
+        return q
 
     @classmethod
     def from_bounds(cls, a, lo: float, hi: float) -> QuadraticSet:
@@ -77,7 +97,15 @@ class QuadraticSet:
             raise ValueError(f"lo must be <= hi, got lo={lo}, hi={hi}")
         if not np.any(a):
             raise ValueError("a must be a non-zero vector")
-        return cls.from_parts(np.outer(a, a), -0.5 * (lo + hi) * a, lo * hi)
+        return cls._from_valid_bounds(a, lo, hi)
+
+    @classmethod
+    def _from_valid_bounds(cls, a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
+        """``from_bounds`` for a finite non-zero float64 ``a`` and finite ``lo <= hi`` that
+        the caller has validated (e.g. a clipped ``Strip``)."""
+        F = cls._assemble(np.outer(a, a), -0.5 * (lo + hi) * a, lo * hi)
+        # Finite inputs can still overflow (lo * hi): then the checking constructor refuses F.
+        return cls._trusted(F) if np.all(np.isfinite(F)) else cls(F)
 
     @classmethod
     def from_strip(cls, S: Strip) -> QuadraticSet:
@@ -140,6 +168,8 @@ class QuadraticSet:
         ValueError
             If A is not positive definite or the set is a single point (r = 0).
         """
+        if self._ellipsoid is not None:  # built by ``from_ellipsoid``
+            return self._ellipsoid
         _, chol = v.spd_matrix("A (quadratic part of F)", self.A)
         x0 = -np.linalg.solve(self.A, self.b)
         w = np.linalg.solve(chol, self.b)

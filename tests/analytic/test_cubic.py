@@ -58,7 +58,12 @@ def test_roots_of_a_product_of_linear_factors(roots, lead):
     np.testing.assert_allclose(got, r, rtol=0, atol=1e-9 * scale)
 
 
-@given(coeffs=st.lists(st.floats(-10, 10), min_size=4, max_size=4))
+# Zero or of moderate size: with coefficients near underflow numpy's companion matrix itself
+# loses roots (e.g. 5e-278 x + 5e-278 on top of x^3 + x^2), so it is no reference there.
+MODERATE = st.floats(-10, 10).filter(lambda x: x == 0 or abs(x) >= 1e-6)
+
+
+@given(coeffs=st.lists(MODERATE, min_size=4, max_size=4))
 def test_real_roots_agree_with_numpy_roots(coeffs):
     """Every clearly real root of numpy's companion-matrix solver is found, and every root
     found is close to one of numpy's roots."""

@@ -28,13 +28,26 @@ def test_sdp_cache_ratio_is_rebuilt_over_cached():
         "cached_s": 0.003,
         "rebuilt_s": 0.021,
         "cached_solve_s": 0.002,
+        "clarabel_s": 0.001,
+        "call_over_clarabel": 2.8,
         "n_solves": 5,
         "dim": 3,
     }
-    rebuilt, cached, solver = speed_sdp.cache_records(timings)
+    rebuilt, cached, solver, clarabel = speed_sdp.cache_records(timings)
     assert rebuilt["value"] == 0.021
     assert cached["ratio"] == pytest.approx(7.0)
     assert solver["ratio"] == pytest.approx(1.5)
+    assert (clarabel["value"], clarabel["ratio"]) == (0.001, 2.8)
+
+
+def test_sdp_cache_measures_clarabels_own_time():
+    from benchmarks import sdp_cache
+
+    numbers = sdp_cache.run(n_solves=3, seed=1)
+    assert 0 < numbers["clarabel_s"] < numbers["cached_s"]
+    assert numbers["call_over_clarabel"] > 1.0
+    assert 0 < numbers["repeated_clarabel_s"] < numbers["repeated_s"]
+    assert numbers["repeated_over_clarabel"] > 1.0
 
 
 def test_per_call_measures_seconds_per_call():

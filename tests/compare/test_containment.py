@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from optbound import Ellipsoid
+from optbound import Ellipsoid, Strip, analytic
 from optbound.compare import contains, max_level
 
 
@@ -46,3 +46,23 @@ def test_hard_case_center_offset_orthogonal_to_the_long_axis():
     t = np.linspace(0, 2 * np.pi, 200_001)
     brute = np.max((0.9 * np.cos(t)) ** 2 + (0.1 + 0.1 * np.sin(t)) ** 2)
     assert max_level(outer, inner) == pytest.approx(brute, rel=1e-8)
+
+
+def test_tolerance_is_a_relative_slack_on_the_level():
+    outer = Ellipsoid([0.0, 0.0], np.eye(2))
+    slightly = Ellipsoid([0.0, 0.0], (1.0 + 1e-6) * np.eye(2))  # level 1 + 1e-6
+    assert not contains(outer, slightly)
+    assert contains(outer, slightly, tol=2e-6)
+    for bad in (-1e-9, float("nan")):
+        with pytest.raises(ValueError, match="tol must be"):
+            contains(outer, slightly, tol=bad)
+
+
+def test_nearly_equal_ellipsoids_do_not_break_the_root_bracket():
+    # An analytic bound and its SDP twin: equal up to ~1e-9, the secular bracket's upper end
+    # can round to a positive slope.
+    E = Ellipsoid([0.0, 0.0], np.diag([4.0, 1.0]))
+    a = analytic.intersect_strip(E, Strip.from_bounds([1.0, 1.0], -0.5, 1.5)).ellipsoid
+    twin = Ellipsoid(a.center * (1 + 1e-12) + 1e-13, a.shape * (1 - 1e-10))
+    assert max_level(a, twin) == pytest.approx(1.0, abs=1e-8)
+    assert contains(a, twin)

@@ -3,6 +3,7 @@
 import numpy as np
 
 from optbound.localization import geometry, office
+from optbound.localization.geometry import wrap_angle
 
 
 def test_map_has_22_landmarks_and_partitions():
@@ -57,7 +58,7 @@ def test_scans_hold_the_visible_landmarks_within_the_noise_bound():
     for pose, (alphas, seen) in zip(data.poses, data.scans, strict=True):
         L = data.true_landmarks[seen]
         exact = np.arctan2(L[:, 1] - pose[1], L[:, 0] - pose[0]) - pose[2]
-        assert np.all(np.abs(office.wrap(alphas - exact)) <= office.DELTA_ALPHA)
+        assert np.all(np.abs(wrap_angle(alphas - exact)) <= office.DELTA_ALPHA)
         assert seen.size >= 3
 
 

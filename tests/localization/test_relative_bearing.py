@@ -6,6 +6,7 @@ import pytest
 
 from optbound.interval import Interval
 from optbound.localization import relative_bearing as rb
+from optbound.localization.geometry import bearing_residual, wrap_angle
 from optbound.sets import Box
 
 mpmath.mp.prec = 120
@@ -16,7 +17,7 @@ EPS = np.radians(4.0)
 
 def true_bearings(x, landmarks=LANDMARKS, pairs=PAIRS):
     ang = np.arctan2(x[1] - landmarks[:, 1], x[0] - landmarks[:, 0])
-    return rb.wrap_angle([ang[i] - ang[j] for i, j in pairs])
+    return wrap_angle([ang[i] - ang[j] for i, j in pairs])
 
 
 def exact_bearing(x, li, lj):
@@ -58,7 +59,7 @@ def test_circle_of_constant_bearing(gamma):
     # Points of the circle on the arc side see the bearing gamma exactly (up to rounding).
     t = np.linspace(0, 2 * np.pi, 400, endpoint=False)
     pts = M + r * np.column_stack([np.cos(t), np.sin(t)])
-    res = rb.bearing_residual(pts[:, 0], pts[:, 1], li, lj, gamma)
+    res = bearing_residual(pts[:, 0], pts[:, 1], li, lj, gamma)
     on_arc = np.abs(res) < 1e-9
     assert 20 < on_arc.sum() < 400
     # The rest of the circle sees gamma -+ pi (the other arc).
@@ -107,7 +108,7 @@ def test_ring_thickness_is_the_apex_distance():
         R.inner.center - R.outer.center
     )
     assert np.linalg.norm(apex2 - R.outer.center) == pytest.approx(R.outer.hi, rel=1e-12)
-    assert abs(rb.bearing_residual(*apex2, li, lj, g - e)) < 1e-12
+    assert abs(bearing_residual(*apex2, li, lj, g - e)) < 1e-12
 
 
 def test_printed_noise_interval_cuts_the_crescent_but_the_derived_one_does_not():
@@ -128,12 +129,12 @@ def test_bearing_residual_interval_encloses_points():
     lo = rng.uniform(-2, 2, (300, 2))
     hi = lo + rng.uniform(0, 0.2, (300, 2))
     li, lj, g = LANDMARKS[2], LANDMARKS[0], GAMMAS[0]
-    box_res = rb.bearing_residual(
+    box_res = bearing_residual(
         Interval(lo[:, 0], hi[:, 0]), Interval(lo[:, 1], hi[:, 1]), li, lj, g
     )
     for t in rng.random((10, 2)):
         p = lo + t * (hi - lo)
-        r = rb.bearing_residual(p[:, 0], p[:, 1], li, lj, g)
+        r = bearing_residual(p[:, 0], p[:, 1], li, lj, g)
         assert np.all(box_res.contains(r) | (np.abs(r) > 3.0))  # away from the branch cut
 
 
@@ -284,3 +285,13 @@ def test_prior_must_be_a_bounded_2d_box():
         rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, prior=Box([0, 0, 0], [1, 1, 1]))
     with pytest.raises(ValueError, match="prior"):
         rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, prior=[[0, 1], [0, 1]])
+
+
+def test_bearings_and_random_instances_are_consistent():
+    """``bearings`` is [BH, eq. (2)]; random instances have the truth in the exact set."""
+    assert np.allclose(rb.bearings(np.zeros(2), LANDMARKS, PAIRS), true_bearings(np.zeros(2)))
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        L, pairs, g, eps, x = rb.random_instance(rng)
+        assert np.radians(1.0) <= eps <= np.radians(8.0)
+        assert rb.in_exact_set(rb.measurements(L, pairs, g, eps), x[None]).all()

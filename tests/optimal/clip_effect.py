@@ -11,6 +11,7 @@ the wall time of a cached ``outer_ellipsoid`` call (without the lower bound).
 
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -66,18 +67,35 @@ def measure(n: int, k: int, seed: int) -> dict:
     return row
 
 
-def main() -> None:
-    keys = None
-    for n in DIMS:
-        for k in KS:
-            rows = [measure(n, k, 1000 * n + seed) for seed in range(SEEDS)]
-            if keys is None:
-                keys = list(rows[0])
-                print("| n | k | " + " | ".join(keys) + " |")
-                print("|---" * (len(keys) + 2) + "|")
-            medians = [np.median([row[key] for row in rows]) for key in keys]
-            print(f"| {n} | {k} | " + " | ".join(f"{m:.4g}" for m in medians) + " |", flush=True)
+def medians(n: int, k: int) -> dict:
+    """Medians over ``SEEDS`` seeds of :func:`measure`'s entries for one (n, k) cell."""
+    rows = [measure(n, k, 1000 * n + seed) for seed in range(SEEDS)]
+    return {key: float(np.median([row[key] for row in rows])) for key in rows[0]}
+
+
+def _chain(cell: dict, template: str, digits: str) -> str:
+    return " → ".join(f"{cell[template.format(mode)]:{digits}}" for mode in MODES)
+
+
+def table(dims=DIMS, ks=KS) -> str:
+    """The README's table: each entry ``ellipsoids → intersection → products`` (k > 1 only)."""
+    lines = [
+        "| n | k | SDP / lower bound | recursive filter / SDP | time per call (ms) |",
+        "|---|---|---|---|---|",
+    ]
+    for n in dims:
+        for k in ks:
+            if k == 1:
+                continue
+            cell = medians(n, k)
+            times = {f"{mode} ms": 1e3 * cell[f"{mode} s"] for mode in MODES}
+            lines.append(
+                f"| {n} | {k} | {_chain(cell, '{}/lower', '.3g')} "
+                f"| {_chain(cell, 'recursive/{}', '.3g')} | {_chain(times, '{} ms', '.2g')} |"
+            )
+    lines.append(f"\n1-min load average at the end of the run: {os.getloadavg()[0]:.1f}.")
+    return "\n".join(lines)
 
 
 if __name__ == "__main__":
-    main()
+    print(table())

@@ -22,7 +22,7 @@ def _corner(n):
 def test_containing_candidate_passes_without_inflation():
     inner = QuadraticSet.from_ellipsoid(Ellipsoid([0.0, 0.0], np.eye(2)))
     candidate = Ellipsoid([0.0, 0.0], 1.5 * np.eye(2))
-    E, alpha, beta = certify_lmi(candidate, _ball_form, _corner(2), [(0.8, inner.F)])
+    E, alpha, beta = certify_lmi(candidate, _ball_form, _corner(2), np.array([0.8]), inner.F[None])
     assert E is candidate and alpha == 1.0 and beta == 1.0
 
 
@@ -31,7 +31,7 @@ def test_too_small_candidate_is_inflated_to_the_smallest_factor():
     # radius 1). The smallest inflation is 1 / 0.9 (up to the float64 margin).
     inner = QuadraticSet.from_ellipsoid(Ellipsoid([0.0, 0.0], np.eye(2)))
     candidate = Ellipsoid([0.0, 0.0], 0.81 * np.eye(2))
-    E, alpha, _ = certify_lmi(candidate, _ball_form, _corner(2), [(1.0, inner.F)])
+    E, alpha, _ = certify_lmi(candidate, _ball_form, _corner(2), np.array([1.0]), inner.F[None])
     assert alpha == pytest.approx(1.0 / 0.9, rel=1e-6)
     X = Ellipsoid([0.0, 0.0], np.eye(2)).sample_boundary(10_000, 0)
     assert np.all(E.contains(X, tol=0.0))
@@ -41,7 +41,7 @@ def test_wrong_multipliers_raise():
     inner = QuadraticSet.from_ellipsoid(Ellipsoid([0.0, 0.0], np.eye(2)))
     candidate = Ellipsoid([0.0, 0.0], np.eye(2))
     with pytest.raises(CertificationError):
-        certify_lmi(candidate, _ball_form, _corner(2), [(-1.0, inner.F)])
+        certify_lmi(candidate, _ball_form, _corner(2), np.array([-1.0]), inner.F[None])
 
 
 def test_points_outside_are_brought_inside_minimally():

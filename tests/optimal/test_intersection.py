@@ -107,7 +107,7 @@ def test_scs_is_selectable_and_agrees():
 
 # ------------------------------------------------------------------------- bad outcomes
 def test_strip_missing_the_ellipsoid_is_empty():
-    with pytest.raises(EmptyIntersectionError, match="misses"):
+    with pytest.raises(EmptyIntersectionError, match=r"allows u\^T x in \[2, 3\]"):
         outer_ellipsoid([Ellipsoid([0.0, 0.0], np.eye(2)), Strip.from_bounds([1, 0], 2, 3)])
 
 

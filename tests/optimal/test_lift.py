@@ -91,3 +91,14 @@ def test_pair_products_hold_on_the_set():
         values = np.einsum("mi,ij,mj->m", lifted, q.F, lifted)
         assert np.all(values <= 1e-12)
         assert np.max(values) > -1e-2  # active somewhere on the set: not a redundant form
+
+
+def test_empty_intersection_message_uses_the_users_numbers():
+    E = Ellipsoid([1.0, 2.0], [[4.0, 0.0], [0.0, 1.0]])
+    S = Strip.from_bounds([1.0, 0.0], 3.5, 7.25)  # x in [3.5, 7.25]; E has x in [-1, 3]
+    with pytest.raises(EmptyIntersectionError) as exc:
+        lift([E, S])
+    text = str(exc.value)
+    assert "allows u^T x in [3.5, 7.25] along its unit normal u = [1.0, 0.0]" in text
+    assert "u^T x lies in [-1, 3]" in text
+    assert repr(E) in text and repr(S) in text

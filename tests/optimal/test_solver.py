@@ -7,11 +7,13 @@ give the same status and the same values of every variable.
 """
 
 import cvxpy as cp
+import mpmath
 import numpy as np
 import pytest
 
 from optbound import Ellipsoid
 from optbound.optimal import SolverError, enclosing, intersection, minkowski, mvee, solver
+from optbound.optimal.lift import lift
 from optbound.optimal.solver import check_solver, solve
 from tests.analytic.instances import random_ellipsoid, strip_relative_to
 
@@ -76,12 +78,17 @@ def solved_problems(monkeypatch):
 def _assert_paths_agree(problem: cp.Problem) -> None:
     fast_solved = solver._fast_solve(problem)
     fast = [v.value.copy() for v in problem.variables()] if fast_solved else None
+    fast_value = problem.value
+    assert problem.status == cp.OPTIMAL
     status = solver._status_of(problem, "CLARABEL", solver.ATTEMPTS["CLARABEL"][0])
     assert fast_solved == (status == cp.OPTIMAL)
     assert fast_solved, "every instance here should solve"
     for value, variable in zip(fast, problem.variables(), strict=True):
         scale = max(1.0, np.max(np.abs(variable.value)))
         np.testing.assert_allclose(value, variable.value, rtol=0, atol=RTOL * scale)
+    # The fast path reports the conic objective (e.g. the exponential-cone epigraph of a log
+    # det), cvxpy the objective evaluated at the variables: equal to the solver's gap.
+    assert fast_value == pytest.approx(problem.value, rel=1e-7, abs=1e-7)
 
 
 def _strip_sets(n: int, seed: int) -> list:
@@ -136,3 +143,51 @@ def test_a_failed_fast_solve_falls_back_to_the_full_path(solved_problems, monkey
     with pytest.raises(SolverError):
         solver.solve(solved_problems[-1], "CLARABEL", primal_only=True)
     assert len(calls) == 1
+
+
+def _exact_certificate_margin(result, sets) -> mpmath.mpf:
+    """Largest eigenvalue, at 50 digits with the floats read as exact numbers, of
+    ``[I, -c]^T C^{-1} [I, -c] - e e^T - sum_i mu_i F_i`` (``e`` the last unit vector) for the
+    returned ellipsoid (c, C) and multipliers mu: <= 0 certifies that the ellipsoid contains
+    the intersection (the S-procedure)."""
+    with mpmath.workdps(50):
+        E = result.ellipsoid
+        n = E.dim
+        B = mpmath.matrix(n, n + 1)
+        for i in range(n):
+            B[i, i] = 1
+            B[i, n] = -mpmath.mpf(E.center[i])
+        lhs = B.T * mpmath.inverse(mpmath.matrix(E.shape.tolist())) * B
+        lhs[n, n] -= 1
+        for mu, q in zip(result.multipliers, lift(sets), strict=True):
+            lhs -= mpmath.mpf(mu) * mpmath.matrix(q.F.tolist())
+        return max(mpmath.eigsy(lhs, eigvals_only=True))
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+@pytest.mark.parametrize("objective", ["volume", "trace", "projection"])
+def test_fast_path_gives_the_plain_cvxpy_ellipsoid_certified(monkeypatch, n, objective):
+    """On random ellipsoid-and-strip instances, the re-solve with Clarabel called directly on
+    the cached data gives the ellipsoid that ``problem.solve`` gives (to solver tolerance),
+    without calling ``problem.solve``, and that ellipsoid is certified in exact arithmetic."""
+    dims = [0, n - 1] if objective == "projection" else None
+    intersection.outer_ellipsoid(_strip_sets(n, 100), objective=objective, dims=dims)
+    full = solver._status_of
+    calls = []
+    for seed in SEEDS:
+        sets = _strip_sets(n, seed)
+        calls.clear()
+        monkeypatch.setattr(solver, "_status_of", lambda *a: calls.append(a) or full(*a))
+        fast = intersection.outer_ellipsoid(sets, objective=objective, dims=dims)
+        assert not calls  # the fast path only
+        monkeypatch.setattr(solver, "_fast_solve", lambda problem: False)
+        plain = intersection.outer_ellipsoid(sets, objective=objective, dims=dims)
+        monkeypatch.undo()
+        assert calls  # problem.solve only
+        scale = np.linalg.norm(plain.ellipsoid.shape)
+        np.testing.assert_allclose(fast.ellipsoid.shape, plain.ellipsoid.shape, atol=1e-8 * scale)
+        np.testing.assert_allclose(
+            fast.ellipsoid.center, plain.ellipsoid.center, atol=1e-8 * np.sqrt(scale)
+        )
+        assert fast.status == plain.status == cp.OPTIMAL and fast.certified
+        assert _exact_certificate_margin(fast, sets) <= 0

@@ -83,6 +83,15 @@ def sample_results() -> dict:
         ],
         "task_index": 0,
     }
+    paper = {
+        "family": "papers",
+        "paper": "HS96",
+        "script": "hs96_demo",
+        "quick": True,
+        "markdown": "## HS96 demo\n\n| quantity | paper | optbound |\n|---|---|---|\n| x | 1 | 2 |",
+        "figures": ["papers/hs96_demo/demo.png"],
+        "task_index": 0,
+    }
     return {
         "schema": 1,
         "meta": {
@@ -95,6 +104,10 @@ def sample_results() -> dict:
             "python": "3.11",
             "numpy": "2.4",
             "machine": "Linux x86_64",
+            "processor": "Test CPU",
+            "cpus": 2,
+            "load_average": [1.25, 0.8, 0.5],
+            "complete": True,
         },
         "families": {
             "strip": _family(
@@ -106,6 +119,7 @@ def sample_results() -> dict:
             ),
             "recursive": _family("Recursive family", "recursive", recursive),
             "speed": _family("Speed: analytic", "speed", speed, notes=["codac is not installed"]),
+            "papers": _family("Papers", "papers", [paper]),
             "missing": _family("Missing family", "tightness", status="skipped", reason="needs x"),
         },
     }

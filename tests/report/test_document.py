@@ -48,3 +48,18 @@ def test_speed_headline_has_the_ratio_and_the_codac_note():
 def test_rebuilding_gives_the_same_report(tmp_path):
     first = write_report(sample_results(), tmp_path).read_text()
     assert write_report(sample_results(), tmp_path).read_text() == first
+
+
+def test_a_familys_attachments_are_shown_in_its_section(tmp_path):
+    results = sample_results()
+    results["families"]["recursive"]["attachments"] = ["own/picture.png"]
+    text = write_report(results, tmp_path).read_text()
+    section = text.split("## Recursive family")[1].split("\n## ")[0]
+    assert "![picture](own/picture.png)" in section
+
+
+def test_a_family_without_tasks_in_the_suite_says_so(tmp_path):
+    results = sample_results()
+    results["families"]["speed"].update(records=[], notes=[])
+    text = write_report(results, tmp_path).read_text()
+    assert "## Speed: analytic\n\nNo task in this suite." in text

@@ -1,3 +1,5 @@
+import pytest
+
 from optbound.report.readme import BEGIN, END, headline_markdown, update_readme
 from tests.report.sample import sample_results
 
@@ -46,3 +48,25 @@ def test_headline_states_where_the_numbers_come_from():
     text = headline_markdown(sample_results())
     assert "optbound bench --suite quick --seed 0" in text
     assert "median 1.5, max 3 (n=3)" in text
+
+
+def test_only_a_complete_default_run_may_write_the_headline(tmp_path):
+    path = tmp_path / "README.md"
+    path.write_text(README)
+    for change, message in (
+        ({"complete": False}, "complete run"),
+        ({"suite": "full"}, "--suite full"),
+        ({"seed": 2}, "--seed 2"),
+    ):
+        results = sample_results()
+        results["meta"].update(change)
+        with pytest.raises(ValueError, match=message):
+            update_readme(path, results)
+    assert path.read_text() == README
+
+
+def test_headline_states_machine_load_and_date():
+    text = headline_markdown(sample_results())
+    assert "2026-01-01T00:00:00+00:00" in text
+    assert "Linux x86_64, Test CPU, 2 CPUs" in text
+    assert "load average 1.25 / 0.80 / 0.50" in text

@@ -45,3 +45,14 @@ def test_csv_has_one_row_per_record(tmp_path):
     assert len(rows) == len(records_of(results, ("tightness", "recursive")))
     assert list(rows[0])[:3] == ["family", "variant", "dim"]
     assert float(rows[2]["ratio"]) == 3.0
+
+
+def test_attachments_are_written_as_files_and_named_in_the_json(tmp_path):
+    import base64
+
+    results = sample_results()
+    data = base64.b64encode(b"\x89PNG fake").decode("ascii")
+    results["families"]["strip"]["attachments"] = {"strip/x.png": data}
+    save_results(results, tmp_path)
+    assert (tmp_path / "strip" / "x.png").read_bytes() == b"\x89PNG fake"
+    assert load_results(tmp_path)["families"]["strip"]["attachments"] == ["strip/x.png"]

@@ -42,3 +42,22 @@ def test_worst_label_names_the_seed_and_parameters():
 def test_worst_label_of_recursive_record_has_k(k):
     rec = {"seed": 3, "variant": "width 0.2", "dim": 2, "k": k}
     assert worst_label(rec).endswith(f"k={k}")
+
+
+def test_degenerate_lower_bounds_are_flagged_and_left_out():
+    from optbound.report.summary import (
+        DEGENERATE_GAP,
+        is_degenerate_lower,
+        ratio_stats,
+        without_degenerate_lower,
+    )
+
+    fine = {"seed": 1, "dim": 2, "k": 5, "ratio": 2.0, "lower_ratio": 3.0}
+    collapsed = {"seed": 2, "dim": 2, "k": 5, "ratio": 2.0, "lower_ratio": 4.6e15}
+    edge = {"seed": 3, "dim": 2, "k": 5, "ratio": 1.0, "lower_ratio": DEGENERATE_GAP}
+    assert [is_degenerate_lower(r) for r in (fine, collapsed, edge)] == [False, True, False]
+    cleaned, flagged = without_degenerate_lower([fine, collapsed, edge])
+    assert flagged == [collapsed]
+    stats = ratio_stats(cleaned, "lower_ratio")
+    assert (stats["n"], stats["missing"], stats["max"]) == (2, 1, DEGENERATE_GAP)
+    assert collapsed["lower_ratio"] == 4.6e15  # the input is not modified

@@ -172,3 +172,24 @@ def test_scaling_out_of_the_domain_is_a_value_error_not_an_overflow():
     E = Ellipsoid([0.0, 0.0], np.eye(2))
     with pytest.raises(ValueError, match="factor=1e\\+200"):
         E.scaled(1e200)
+
+
+def test_extent_is_the_support_in_both_senses():
+    E = Ellipsoid([0.5, -1.0], [[2.0, 0.3], [0.3, 0.5]])
+    for a in ([1.0, 0.0], [0.3, -2.0], [-1.0, 4.0]):
+        lo, hi = E.extent(a)
+        expected = (-E.support(-np.asarray(a)), E.support(a))
+        np.testing.assert_allclose((lo, hi), expected, rtol=1e-15, atol=1e-15)
+    with pytest.raises(ValueError, match="a must have length 2"):
+        E.extent([1.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match="a must be finite"):
+        E.extent([np.nan, 0.0])
+
+
+def test_from_floats_checks_like_the_constructor():
+    C = np.array([[2.0, 0.3], [0.3 * (1 + 1e-15), 0.5]])  # asymmetric at rounding level
+    fast, slow = Ellipsoid._from_floats(np.array([0.1, 0.2]), C), Ellipsoid([0.1, 0.2], C)
+    assert np.array_equal(fast.shape, slow.shape) and np.array_equal(fast.chol, slow.chol)
+    assert not fast.shape.flags.writeable
+    with pytest.raises(ValueError, match="positive definite"):
+        Ellipsoid._from_floats(np.zeros(2), np.array([[1.0, 0.0], [0.0, -1.0]]))

@@ -29,7 +29,8 @@ def test_from_ellipsoid_membership_and_support_agree(seed):
 
 def test_as_ellipsoid_round_trip():
     E = _ellipsoid(1)
-    back = QuadraticSet.from_ellipsoid(E).as_ellipsoid()
+    assert QuadraticSet.from_ellipsoid(E).as_ellipsoid() is E  # the validated original
+    back = QuadraticSet(QuadraticSet.from_ellipsoid(E).F).as_ellipsoid()  # computed from F
     np.testing.assert_allclose(back.center, E.center, atol=1e-12)
     np.testing.assert_allclose(back.shape, E.shape, rtol=1e-10, atol=1e-12)
 
@@ -98,3 +99,19 @@ def test_bad_matrix_is_rejected_naming_F(F, word):
 def test_as_ellipsoid_refuses_unbounded():
     with pytest.raises(ValueError, match="positive definite"):
         QuadraticSet.from_strip(Strip([1.0, 0.0], 0.0)).as_ellipsoid()
+
+
+def test_trusted_constructors_build_what_the_checking_ones_build():
+    E = _ellipsoid(2)
+    Q = QuadraticSet.from_ellipsoid(E)
+    assert np.array_equal(Q.F, QuadraticSet(Q.F).F) and np.array_equal(Q.F, Q.F.T)
+    assert not Q.F.flags.writeable
+    a, lo, hi = np.array([0.3, -1.2, 2.0]), -0.7, 1.9
+    F = QuadraticSet.from_bounds(a, lo, hi).F
+    expected = QuadraticSet.from_parts(np.outer(a, a), -0.5 * (lo + hi) * a, lo * hi).F
+    assert np.array_equal(F, expected) and not F.flags.writeable
+
+
+def test_bounds_whose_product_overflows_are_refused():
+    with pytest.raises(ValueError, match="F must be finite"):
+        QuadraticSet.from_bounds([1.0, 0.0], -1e200, 1e200)

@@ -1,0 +1,55 @@
+"""Progress of a suite on stderr: one bar per family, and a total whose ETA weighs task cost.
+
+Tasks differ in cost by orders of magnitude (a 4-D recursive task with 50 strips and lower
+bounds against a 2-D strip fusion), so a count of finished tasks says little about the time
+left. The total bar advances by each task's estimated cost (``Family.cost``); tqdm's rate,
+and so its ETA, is then in cost per second, which calibrates the estimate as the run goes.
+"""
+
+from __future__ import annotations
+
+from tqdm import tqdm
+
+_TOTAL_FORMAT = "{desc}: {percentage:3.0f}%|{bar}| [{elapsed}<{remaining}, cost-weighted]"
+# No per-family ETA: with the longest tasks first, a family's tasks start at different times,
+# so its own rate says nothing about the time left; only the total's cost-weighted ETA does.
+_FAMILY_FORMAT = "{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt}"
+
+
+class Progress:
+    """Bars for ``families`` (name -> list of task costs); a no-op when not ``enabled``."""
+
+    def __init__(self, title: str, families: dict[str, list[float]], enabled: bool = True):
+        self.enabled = enabled and bool(families)
+        if not self.enabled:
+            return
+        total = sum(sum(costs) for costs in families.values())
+        self.total = tqdm(total=total, desc=title, bar_format=_TOTAL_FORMAT, position=0)
+        width = max(len(name) for name in families)
+        self.bars = {
+            name: tqdm(
+                total=len(costs),
+                desc=f"  {name:<{width}}",
+                position=i + 1,
+                bar_format=_FAMILY_FORMAT,
+            )
+            for i, (name, costs) in enumerate(families.items())
+        }
+
+    def done(self, name: str, cost: float) -> None:
+        """One task of family ``name``, of estimated ``cost``, has finished."""
+        if self.enabled:
+            self.bars[name].update()
+            self.total.update(cost)
+
+    def close(self) -> None:
+        if self.enabled:
+            for bar in self.bars.values():
+                bar.close()
+            self.total.close()
+
+    def __enter__(self) -> Progress:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()

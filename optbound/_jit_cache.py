@@ -1,0 +1,48 @@
+"""Keep numba's on-disk cache of optbound's compiled kernels consistent with their sources.
+
+``@njit(cache=True)`` invalidates a cached function only when the file that defines it changes,
+not when a jitted function it calls in *another* file changes: the analytic kernels inline
+``analytic._midrad`` and ``sets._domain``, the polygon predicates inline
+``interval._compiled``, and they would silently run stale machine code after an edit of those.
+Before any kernel is loaded (this runs first in ``optbound/__init__.py``), one hash of every
+kernel source is compared with a stamp kept next to the caches; when it differs, every cached
+kernel of the package is dropped (numba then recompiles each once).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+STAMP = "optbound_kernels.stamp"
+
+
+def kernel_sources(root: Path = ROOT) -> list[Path]:
+    """The package's modules that define numba kernels (they mention ``njit``)."""
+    return sorted(p for p in root.rglob("*.py") if b"njit" in p.read_bytes())
+
+
+def refresh(cache_dirs=None, sources=None) -> bool:
+    """Drop all kernel caches if any kernel source changed; True if something was dropped.
+
+    Never raises on file-system errors (a read-only install keeps numba's own behaviour).
+    """
+    sources = kernel_sources() if sources is None else sources
+    digest = hashlib.sha256(b"".join(p.read_bytes() for p in sources)).hexdigest()
+    dirs = cache_dirs or sorted({p.parent / "__pycache__" for p in sources})
+    dropped = False
+    for folder in dirs:
+        stamp = folder / STAMP
+        try:
+            if stamp.exists() and stamp.read_text() == digest:
+                continue
+            for pattern in ("*.nbi", "*.nbc"):
+                for f in folder.glob(pattern):
+                    f.unlink()
+                    dropped = True
+            folder.mkdir(exist_ok=True)
+            stamp.write_text(digest)
+        except OSError:
+            continue
+    return dropped

@@ -1,0 +1,115 @@
+"""Linearized set-theoretic fusion of relative bearings, HS96 style (*not* a guaranteed bound).
+
+The baseline a BH pseudo-ellipsoid is meant to beat [BH, Sect. III-B]: the ellipsoidal
+set-membership filter of [HS96, eqs. (18)-(24)] applied to the relative-bearing data of
+[BH, eq. (2)]. Each measurement ``|gamma_ij(x) - gamma_hat| <= eps`` is linearized around the
+current centre ``c`` (``geometry.bearing_gradient``),
+
+    |g^T x - (g^T c + wrap(gamma_hat - gamma_ij(c)))| <= eps,   g = grad gamma_ij(c),
+
+as [HS96, eqs. (19)-(23)] linearize the bearing equation (18) around the predicted centre, and
+the strip is fused with ``analytic.intersect_strip`` (the member of [HS96, eq. (24)] chosen by
+``criterion``; "volume" minimizes the area in 2-D). With ``relinearize > 0`` the strip is
+linearized again around the fused centre and fused with the set before the update, the
+feedback of [HS96, Sect. 4] also used by ``tracker.SetTracker``.
+
+**Not guaranteed.** The strip of the tangent plane is not the crescent: the exact feasible set
+can stick out of it (curvature of the bearing circles), so the result can miss part of the
+exact set, and the true position. Only the ellipsoid-strip fusion itself is an outer bound.
+``benchmarks/localization_tightness.py`` measures how often the truth and the exact set's
+boxes fall outside.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from optbound import analytic
+from optbound.localization.geometry import bearing_gradient, bearing_residual
+from optbound.localization.relative_bearing import measurements, prior_box
+from optbound.sets import Box, Ellipsoid, Strip
+
+CRITERIA = ("volume", "trace")
+
+
+@dataclass(frozen=True)
+class LinearizedResult:
+    """Result of :func:`linearized_localize`: the final ellipse and the measurements whose
+    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)])."""
+
+    ellipse: Ellipsoid
+    rejected: int
+
+
+def box_ellipse(box: Box) -> Ellipsoid:
+    """The smallest ellipse through the corners of a 2-D box (axis-aligned, half-axes h sqrt 2)."""
+    half = 0.5 * (box.hi - box.lo)
+    return Ellipsoid(0.5 * (box.lo + box.hi), np.diag(2.0 * half * half))
+
+
+def linearized_strip(li, lj, gamma_hat: float, eps: float, about) -> Strip:
+    """The strip of one relative bearing linearized around the point ``about`` [HS96, eq. (23)]."""
+    ax, ay = float(about[0]), float(about[1])
+    if any(ax == p[0] and ay == p[1] for p in (li, lj)):
+        raise ValueError(f"cannot linearize the bearing at {about!r}: a landmark is there")
+    g = np.array(bearing_gradient(ax, ay, li, lj), dtype=float)
+    # wrap(gamma_hat - gamma_ij(c)) = -bearing_residual(c, gamma_hat)
+    b = g @ np.array([ax, ay]) - float(bearing_residual(ax, ay, li, lj, gamma_hat))
+    return Strip(g / eps, b / eps)
+
+
+def linearized_localize(
+    landmarks,
+    pairs,
+    gammas,
+    eps,
+    prior: Box | None = None,
+    relinearize: int = 1,
+    criterion: str = "volume",
+) -> LinearizedResult:
+    """Linearized ellipsoidal localization from relative bearings (module docstring).
+
+    Parameters
+    ----------
+    landmarks, pairs, gammas, eps
+        As in :func:`optbound.localization.relative_bearing.localize`.
+    prior : Box, optional
+        Prior box of the position (default ``relative_bearing.prior_box``); the filter starts
+        from the ellipse through its corners (:func:`box_ellipse`).
+    relinearize : int
+        Extra linearizations per measurement around the fused centre.
+    criterion : {"volume", "trace"}
+        Choice of lambda in [HS96, eq. (24)] (``analytic.intersect_strip``).
+
+    Returns
+    -------
+    LinearizedResult
+        Not guaranteed to contain the feasible set (module docstring).
+    """
+    data = measurements(landmarks, pairs, gammas, eps)
+    if int(relinearize) != relinearize or relinearize < 0:
+        raise ValueError(f"relinearize must be a non-negative integer, got {relinearize!r}")
+    if criterion not in CRITERIA:
+        raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
+    box = prior_box(data) if prior is None else prior
+    if not isinstance(box, Box) or box.dim != 2 or not box.is_bounded:
+        raise ValueError(f"prior must be a bounded 2-D Box, got {prior!r}")
+    E, rejected = box_ellipse(box), 0
+    for k in range(len(data)):
+        li, lj, g, e = data.pair(k)
+        about, fused = E.center, None
+        for _ in range(int(relinearize) + 1):
+            step = analytic.intersect_strip(E, linearized_strip(li, lj, g, e, about), criterion)
+            if step.ellipsoid is None:
+                break
+            fused, about = step.ellipsoid, step.ellipsoid.center
+        if fused is None:
+            rejected += 1
+        else:
+            E = fused
+    return LinearizedResult(E, rejected)
+
+
+__all__ = ["LinearizedResult", "box_ellipse", "linearized_localize", "linearized_strip"]

@@ -1,0 +1,177 @@
+"""Every table of measured numbers in README.md is generated here, never typed by hand.
+
+A generated table sits between ``<!-- BEGIN generated:NAME -->`` and
+``<!-- END generated:NAME -->``; ``GENERATORS[NAME]`` returns its Markdown. The bench headline
+(``<!-- BEGIN bench-headline -->``) is written by ``optbound bench --update-readme`` instead.
+
+``python -m tests.readme_tables [NAME ...]`` recomputes the named blocks (default: all) and
+rewrites them in place. ``tests/test_readme.py`` checks that
+no table of measured numbers lies outside such a block.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+from collections.abc import Callable
+from pathlib import Path
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+# The markers may be indented (a table inside a list item); the body gets their indentation.
+BLOCK = re.compile(
+    r"^(?P<indent>[ \t]*)<!-- BEGIN generated:(?P<name>[\w-]+) -->\n(?P<body>.*?)"
+    r"^[ \t]*<!-- END generated:(?P=name) -->",
+    re.S | re.M,
+)
+
+
+def _battery() -> str:
+    from optbound.report.tables import markdown_table
+    from tests.battery import agreement_rows
+
+    rows = [
+        (
+            row["name"],
+            f"{row['analytic_over_sdp_minus_1']:.2g}",
+            f"{row['inflation_minus_1']:.2g}",
+            "–" if row["sdp_over_lower_bound"] is None else f"{row['sdp_over_lower_bound']:.4f}",
+        )
+        for row in agreement_rows()
+    ]
+    headers = ("case", "analytic/SDP − 1", "inflation − 1", "SDP / lower bound")
+    return "Output of `python -m tests.readme_tables battery`:\n\n" + markdown_table(headers, rows)
+
+
+def _clip_effect() -> str:
+    from tests.optimal.clip_effect import table
+
+    return table()
+
+
+def _sivia_codac() -> str:
+    from benchmarks.sivia_codac import run, table
+
+    return table(run())
+
+
+def _speed_analytic() -> str:
+    """Batch throughput of the analytic updates vs the plain numba kernel (full batch sizes)."""
+    import os
+
+    import numpy as np
+
+    from benchmarks import speed_analytic as sa
+    from optbound.report.tables import markdown_table
+
+    rng = np.random.default_rng(0)
+    batches = sa.BATCHES["full"]
+    strip, mink = sa.strip_timings(rng, batches), sa.minkowski_timings(rng, batches)
+
+    def cells(timings, key) -> list[str]:
+        ours, ref = timings[key]
+        if key == "one":
+            return [f"{ours * 1e6:.1f} µs", f"{ref * 1e6:.1f} µs", f"{ours / ref:.2f}"]
+        return [f"{key / ours / 1e6:.2f} M/s", f"{key / ref / 1e6:.2f} M/s", f"{ours / ref:.2f}"]
+
+    rows = [
+        ["one call" if key == "one" else f"{key:.0e}", *cells(strip, key), *cells(mink, key)]
+        for key in ("one", *batches)
+    ]
+    headers = (
+        "B",
+        "`intersect_strip_batch`",
+        "reference",
+        "time ratio",
+        "`minkowski_sum_batch`",
+        "reference",
+        "time ratio",
+    )
+    return (
+        f"Output of `python -m tests.readme_tables speed-analytic` (1-min load average "
+        f"{os.getloadavg()[0]:.1f}):\n\n" + markdown_table(headers, rows)
+    )
+
+
+def _localization() -> str:
+    """The localization family's BH instance (tiny suite, seed 0): every bound's area ratio."""
+    import os
+
+    from benchmarks import localization_tightness as lt
+    from optbound.report.tables import markdown_table
+
+    (task,) = lt.tasks("tiny", 0)
+    records = lt.run(task)["records"]
+    rows = [
+        (
+            f"`{r['criterion']}`",
+            "yes" if r["guaranteed"] else "no (linearized)",
+            f"[{r['area_lo']:.4f}, {r['area_hi']:.4f}]",
+            f"{r['ratio']:.2f}",
+            f"[{r['ratio_lo']:.2f}, {r['ratio_hi']:.2f}]",
+            f"{r['outside']} / {lt.SAMPLES}",
+            "yes" if r["truth_outside"] else "no",
+            {True: "yes", False: "no"}.get(r.get("proven"), "–"),
+        )
+        for r in records
+    ]
+    headers = (
+        "bound",
+        "guaranteed",
+        "area bracket [m²]",
+        "ratio (midpoints)",
+        "certified ratio bracket",
+        "exact-set points outside",
+        "truth outside",
+        "containment proven",
+    )
+    first = records[0]
+    return (
+        "Output of `python -m tests.readme_tables localization` (BH Sect. V geometry, eps = 4°, "
+        f"exact area in [{first['exact_lo']:.4f}, {first['exact_hi']:.4f}] m² by a paving of "
+        f"width {first['paving_width']:.4f} m; 1-min load average {os.getloadavg()[0]:.1f}):\n\n"
+        + markdown_table(headers, rows)
+    )
+
+
+GENERATORS: dict[str, Callable[[], str]] = {
+    "battery": _battery,
+    "clip-effect": _clip_effect,
+    "sivia-codac": _sivia_codac,
+    "localization": _localization,
+    "speed-analytic": _speed_analytic,
+}
+
+
+def blocks(text: str) -> dict[str, str]:
+    """``{name: body}`` of the generated blocks of ``text``."""
+    return {m["name"]: m["body"] for m in BLOCK.finditer(text)}
+
+
+def update(text: str, names: list[str]) -> str:
+    """``text`` with the blocks ``names`` recomputed."""
+    unknown = sorted(set(names) - set(GENERATORS))
+    if unknown:
+        raise ValueError(f"names has unknown blocks {unknown}; known: {sorted(GENERATORS)}")
+    fresh = {name: GENERATORS[name]() for name in names}
+
+    def replace(m: re.Match) -> str:
+        indent, name = m["indent"], m["name"]
+        if name in fresh:
+            lines = fresh[name].strip("\n").splitlines()
+            body = "".join(f"{indent}{line}".rstrip() + "\n" for line in lines)
+        else:
+            body = m["body"]
+        return (
+            f"{indent}<!-- BEGIN generated:{name} -->\n{body}{indent}<!-- END generated:{name} -->"
+        )
+
+    return BLOCK.sub(replace, text)
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "names", nargs="*", help=f"blocks to recompute (default all: {', '.join(GENERATORS)})"
+    )
+    args = parser.parse_args()
+    README.write_text(update(README.read_text(), args.names or list(GENERATORS)))
