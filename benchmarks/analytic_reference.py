@@ -11,7 +11,7 @@ import numpy as np
 from numba import njit
 
 from optbound.analytic._minkowski_kernel import p_volume
-from optbound.analytic._strip_kernel import lam_volume
+from optbound.analytic._strip_lambda import lam_volume
 from optbound.sets._domain import cholesky
 
 

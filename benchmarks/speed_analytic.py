@@ -10,6 +10,8 @@ a shared machine hits both alike:
   validation, no margin), B = 1e3 ... 1e6;
 - one call: ``intersect_strip(E, S)`` / ``minkowski_sum(E1, E2)`` end to end (including the
   result's Ellipsoid) over one call of the reference kernel;
+- every criterion (strip: trace, projection, robust with and without dims; Minkowski: trace,
+  size_xy_psi) over the volume criterion of the same operation: one call and a batch of 1e4;
 - SDP cost: one SDP solve over one analytic call.
 
 ``python -m benchmarks.speed_analytic [--suite quick]`` prints the ratio table, the JIT
@@ -24,6 +26,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from functools import partial
 
 import numpy as np
 
@@ -164,6 +167,45 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_range, inputs, batches)
 
 
+STRIP_CRITERIA = (
+    ("volume", {}),
+    ("trace", {}),
+    ("projection", {"dims": (0, 1)}),
+    ("robust", {}),
+    ("robust", {"dims": (0, 1)}),
+)
+MINKOWSKI_CRITERIA = (("volume", {}), ("trace", {}), ("size_xy_psi", {}))
+
+
+def criteria_timings(rng: np.random.Generator, count: int = 10**4) -> list[tuple]:
+    """Every criterion against the volume criterion of the same operation (the reference),
+    alternately in the same run: (operation, criterion, one call [s], one call of the volume
+    criterion [s], batch of ``count`` [s], the same batch with the volume criterion [s])."""
+    from optbound import Ellipsoid, Strip, analytic
+
+    c, C, a, b = batch_instances(rng, count, DIM)
+    c2, C2, _, _ = batch_instances(rng, count, DIM)
+    E, S, E2 = Ellipsoid(c[0], C[0]), Strip(a[0], b[0]), Ellipsoid(c2[0], C2[0])
+    ops = [
+        ("strip", crit, kw, lambda kw: analytic.intersect_strip(E, S, **kw),
+         lambda kw: analytic.intersect_strip_batch(c, C, a, b, **kw))
+        for crit, kw in STRIP_CRITERIA
+    ] + [
+        ("minkowski", crit, kw, lambda kw: analytic.minkowski_sum(E, E2, **kw),
+         lambda kw: analytic.minkowski_sum_batch(c, C, c2, C2, **kw))
+        for crit, kw in MINKOWSKI_CRITERIA
+    ]  # fmt: skip
+    rows = []
+    for op, crit, kw, one, batch in ops:
+        kw = {"criterion": crit, **kw}
+        vol = {"criterion": "volume"}
+        one_ours, one_vol = alternating_calls(partial(one, kw), partial(one, vol))
+        batch_ours, batch_vol = alternating(partial(batch, kw), partial(batch, vol))
+        name = crit + (f" dims={kw['dims']}" if "dims" in kw else "")
+        rows.append((op, name, one_ours, one_vol, batch_ours, batch_vol))
+    return rows
+
+
 def run_strip(task: dict) -> list[dict]:
     from optbound import analytic, optimal
 
@@ -278,6 +320,18 @@ def main(argv=None) -> None:
                 f"| {ours / ref:.2f} |"
             )
         print()
+    count = 10**4
+    print(f"every criterion against volume, {DIM}-D; medians of {REPEATS} alternating runs")
+    print(f"| operation | criterion | one call | volume | ratio | batch {count:.0e} | volume "
+          "| ratio |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|")
+    for op, name, one, one_vol, batch, batch_vol in criteria_timings(rng, count):
+        print(
+            f"| {op} | {name} | {one * 1e6:.1f} µs | {one_vol * 1e6:.1f} µs | "
+            f"{one / one_vol:.2f} | {count / batch / 1e6:.2f} M/s | "
+            f"{count / batch_vol / 1e6:.2f} M/s | {batch / batch_vol:.2f} |"
+        )
+    print()
     print("certified margin (relative inflation), random 3-D instances, 1e4 per row")
     print("| operation | cond | median | 99 % | max |")
     print("|---|---|---|---|---|")

@@ -9,7 +9,8 @@ so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centr
    ``[lo, hi]`` of ``a^T (x - c)`` that is fused contains that of E ∩ S *exactly*;
    disjointness is declared only when even the outward interval misses E's outward extent;
 3. clip (optionally) and floor the strip's width, normalize it to |a'^T x - b'| <= 1;
-4. choose lambda (volume root [HS96, eq. (26)], robust [HS96, eq. (30)], or given);
+4. choose lambda (``_strip_lambda``: volume [HS96, eq. (26)], trace, projection
+   [HS96, eqs. (27)-(28)], robust [HS96, eq. (30)] on either, or given);
 5. evaluate the member [HS96, eq. (24)] in midpoint-radius arithmetic and inflate it by the
    certified margin of ``_midrad.inflate`` (widened to the output domain if needed);
 6. any failure (K not provably positive, output too large) falls back to E itself (lambda = 0),
@@ -32,10 +33,12 @@ from optbound.analytic._midrad import (
     mr_mul,
     offset,
 )
+from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
-VOLUME, GIVEN, ROBUST = range(3)
+# How lambda is chosen (ROBUST_PROJECTION: [HS96, eq. (30)] with the projection-optimal lambda).
+VOLUME, GIVEN, ROBUST, TRACE, PROJECTION, ROBUST_PROJECTION = range(6)
 # Error codes beyond those of check_ellipsoid (1..6).
 BAD_A, BAD_B, BAD_LAM = 7, 8, 9
 # The fused strip is never thinner than this fraction of E's extent along a.
@@ -157,19 +160,6 @@ def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     return 0, case, consistency, mid, half, G, G_lo, rG_dd
 
 
-@njit(cache=True, inline="always")
-def lam_volume(Gn, e, n):
-    """Most positive root of [HS96, eq. (26)] with N = n (0 if none): it exists iff
-    G > n (1 - eps^2); the roots then have opposite signs (stable quadratic formula)."""
-    qa = (n - 1) * Gn * Gn
-    qb = (2 * n - 1 + e * e - Gn) * Gn
-    qc = n * (1 - e * e) - Gn
-    if not qc < 0:
-        return 0.0
-    sq = np.sqrt(qb * qb - 4 * qa * qc)
-    return 2 * qc / (-qb - sq) if qb >= 0 else (-qb + sq) / (2 * qa)
-
-
 @njit(cache=True)
 def member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, L, D, dc):
     """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), written into
@@ -235,8 +225,23 @@ def _copy_input(c, C, L, out_c, out_C, out_L):
 
 
 @njit(cache=True)
-def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_C, out_L, work):
-    """One full update (steps 1-6). ``work`` is (3, max(n, 4), n) scratch.
+def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
+    """Step 4 for the cubic criteria (trace, projection); the projection uses ``work`` as
+    scratch (planes 3 and 1, row (0, 3)). Only the volume criterion's lambda is inlined into
+    ``fuse_one``."""
+    if mode == TRACE:
+        return lam_trace(C, w, half, Gn, e)
+    return lam_projection(C, w, half, Gn, e, idx, work[3], work[1], work[0, 3])
+
+
+@njit(cache=True, inline="always")
+def fuse_one(
+    c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c, out_C, out_L, work
+):
+    """One full update (steps 1-6); ``idx`` are the coordinates of the projection criteria
+    (unused otherwise). ``work`` is (4, max(n, 4), n) scratch. Inlined into its two callers:
+    as a separate function, LLVM no longer inlined it into the batch loop once the criteria's
+    branches were added (measured ~10 % slower per instance).
 
     Returns (code, case, consistency, lam, empty, margin).
     """
@@ -260,8 +265,12 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_
         if mode == GIVEN:
             lam = lam_in
         else:
-            lam = lam_volume(Gn, mid / half, n)
-            if mode == ROBUST:
+            e = mid / half
+            if mode == VOLUME or mode == ROBUST:
+                lam = lam_volume(Gn, e, n)
+            else:
+                lam = _lam_cubic(C, wh, e, half, Gn, mode, idx, work)
+            if mode == ROBUST or mode == ROBUST_PROJECTION:
                 lam = lam / (1.0 + np.exp(-steep * (cons - midp)))  # [HS96, eq. (30)]
         lam = min(lam, LAM_MAX, LAMG_MAX / Gn)
     margin = 0.0
@@ -275,53 +284,31 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, steep, midp, out_c, out_
 
 
 @njit(cache=True)
-def fuse_single(c, C, a, b, halfspace, clip, mode, lam, steep, midp):
+def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
     """One instance, without slicing (the same ``fuse_one`` as the batch), plus the result's
     Cholesky factor and its validation code (0 by construction, see ``_midrad.inflate``)."""
     n = c.shape[0]
     out_c = np.empty(n)
     out_C = np.empty((n, n))
     out_L = np.empty((n, n))
-    work = np.zeros((3, max(n, 4), n))
-    r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out_c, out_C, out_L, work)
+    work = np.zeros((4, max(n, 4), n))
+    r = fuse_one(
+        c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out_c, out_C, out_L, work
+    )
     valid = check_ellipsoid(out_c, out_C, out_L)
     return out_c, out_C, out_L, valid, r
 
 
 @njit(cache=True, nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, steep, midp, out, start, stop):
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, start, stop):
     """``fuse_one`` on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
     caller). ``out`` = (centres, shapes, chol, code, case, consistency, lam, empty, margin)."""
     out_c, out_C, out_L, code, case, cons, lam_out, empty, margin = out
     n = c.shape[1]
-    work = np.zeros((3, max(n, 4), n))
+    work = np.zeros((4, max(n, 4), n))
     for i in range(start, stop):
         r = fuse_one(
-            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], steep, midp,
+            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], idx, steep, midp,
             out_c[i], out_C[i], out_L[i], work,
         )  # fmt: skip
         code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
-
-
-@njit(cache=True)
-def prepare_batch(c, C, a, b, halfspace, clip):
-    """Steps 1-3 over B instances, for the criteria whose lambda is chosen in numpy: the
-    normalized strip's eps' = mid / half, G' = G / half^2 and C a' = w / half (floats)."""
-    B, n = c.shape
-    ws = np.empty((B, n))
-    code = np.zeros(B, np.int8)
-    case = np.zeros(B, np.int8)
-    cons = np.zeros(B)
-    epsn = np.zeros(B)
-    Gn = np.ones(B)
-    L = np.empty((n, n))
-    wl = np.empty(n)
-    we = np.empty(n)
-    for i in range(B):
-        r = prepare(c[i], C[i], a[i], b[i], halfspace, clip, L, ws[i], wl, we)
-        code[i], case[i], cons[i], mid, half, G, _, _ = r
-        if code[i] == 0 and case[i] != INCONSISTENT:
-            epsn[i] = mid / half
-            Gn[i] = G / (half * half)
-            ws[i] /= half
-    return code, case, cons, epsn, Gn, ws

@@ -27,10 +27,10 @@ from optbound.analytic._minkowski_kernel import (
     P_GIVEN,
     P_TRACE,
     P_VOLUME,
+    P_XY_PSI,
     sum_range,
     sum_single,
 )
-from optbound.analytic._roots import argmin_candidates, real_roots
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
@@ -81,40 +81,6 @@ def _xy_psi_dims(dims, n: int) -> tuple[np.ndarray, np.ndarray]:
     return planar, heading
 
 
-def _p_trace(C1: np.ndarray, C2: np.ndarray) -> np.ndarray:
-    """p = sqrt(tr C1 / tr C2), i.e. kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))."""
-    return np.sqrt(np.trace(C1, axis1=1, axis2=2) / np.trace(C2, axis1=1, axis2=2))
-
-
-def _p_xy_psi(C1: np.ndarray, C2: np.ndarray, planar, heading) -> np.ndarray:
-    """p of the root of the cubic [HS96, eqs. (16)-(17)] minimizing tr(proj_xy C) tr(proj_psi C)."""
-
-    def block_trace(C, idx):
-        return np.trace(C[:, idx][:, :, idx], axis1=1, axis2=2)
-
-    t1, t2 = block_trace(C1, planar), block_trace(C2, planar)
-    h1, h2 = block_trace(C1, heading), block_trace(C2, heading)
-    m11, m22, m12, m21 = t1 * h1, t2 * h2, t1 * h2, t2 * h1  # M_AB [HS96, eq. (15)]
-    coeffs = np.column_stack(
-        [
-            2.0 * (m11 + m22 - m12 - m21),
-            3.0 * (m12 + m21 - 2.0 * m22),
-            6.0 * m22 - m12 - m21,
-            -2.0 * m22,
-        ]
-    )
-    roots, real = real_roots(coeffs)
-    # The trace-optimal kappa is an always-valid extra candidate (a safety net, never worse).
-    candidates = np.column_stack([roots, 1.0 / (1.0 + _p_trace(C1, C2))])
-    allowed = np.column_stack([real & (roots > 0) & (roots < 1), np.ones(len(t1), dtype=bool)])
-
-    def size(k):
-        return (t1[:, None] / (1 - k) + t2[:, None] / k) * (h1[:, None] / (1 - k) + h2[:, None] / k)
-
-    kappa = argmin_candidates(candidates, allowed, size)
-    return (1.0 - kappa) / kappa
-
-
 _NAMES_SINGLE = (("E1.center", "E1.shape"), ("E2.center", "E2.shape"))
 _NAMES_BATCH = (("centers1", "shapes1"), ("centers2", "shapes2"))
 
@@ -132,21 +98,28 @@ def _raise(code: int, index: int, names, batched: bool) -> None:
     raise_for(code % 10, *names[code // 10], where)
 
 
-def _mode(criterion: str, kappa, dims, C1, C2) -> tuple[int, np.ndarray]:
-    """Kernel mode and per-instance p = (1 - kappa) / kappa (zeros where the kernel solves)."""
+def _mode(criterion: str, kappa, dims, n_batch: int, n: int):
+    """Kernel mode, per-instance p = (1 - kappa) / kappa (zeros where the kernel solves) and
+    the (planar, heading) coordinates of ``size_xy_psi`` (empty otherwise)."""
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
-    n_batch = C1.shape[0]
     if kappa is not None:
         k = _batch.per_instance("kappa", kappa, n_batch, ())
         if np.any((k <= 0) | (k >= 1)):
             raise ValueError(f"kappa must lie in the open interval (0, 1), got {kappa}")
-        return P_GIVEN, np.ascontiguousarray((1.0 - k) / k)
-    if criterion == "volume":
-        return P_VOLUME, np.zeros(n_batch)
-    if criterion == "trace":
-        return P_TRACE, np.zeros(n_batch)
-    return P_GIVEN, _p_xy_psi(C1, C2, *_xy_psi_dims(dims, C1.shape[-1]))
+        return P_GIVEN, np.ascontiguousarray((1.0 - k) / k), _NO_DIMS, _NO_DIMS
+    if criterion == "size_xy_psi":
+        planar, heading = _xy_psi_dims(dims, n)
+        return (
+            P_XY_PSI,
+            np.zeros(n_batch),
+            *(d.astype(np.int64, copy=False) for d in (planar, heading)),
+        )
+    mode = P_VOLUME if criterion == "volume" else P_TRACE
+    return mode, np.zeros(n_batch), _NO_DIMS, _NO_DIMS
+
+
+_NO_DIMS = np.zeros(0, np.int64)
 
 
 def minkowski_sum(
@@ -190,9 +163,9 @@ def minkowski_sum(
             raise TypeError(f"{name} must be an Ellipsoid, got {type(E).__name__}")
     if E1.dim != E2.dim:
         raise ValueError(f"E1 and E2 must have the same dimension, got {E1.dim} and {E2.dim}")
-    mode, p = _mode(criterion, kappa, dims, E1.shape[None], E2.shape[None])
+    mode, p, planar, heading = _mode(criterion, kappa, dims, 1, E1.dim)
     c, C, L, valid, (code, p_used, margin) = sum_single(
-        E1.center, E1.shape, E2.center, E2.shape, mode, p[0]
+        E1.center, E1.shape, E2.center, E2.shape, mode, p[0], planar, heading
     )
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)
@@ -231,9 +204,9 @@ def minkowski_sum_batch(
     for name, C in (("shapes1", C1), ("shapes2", C2)):
         if C.shape != (*c1.shape, c1.shape[1]):
             raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
-    mode, p = _mode(criterion, kappa, dims, C1, C2)
+    mode, p, planar, heading = _mode(criterion, kappa, dims, *c1.shape)
     out = ellipsoid_outputs(c1.shape[0], c1.shape[1], np.int8, float, float)
-    run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, out)
+    run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, planar, heading, out)
     out_c, out_C, _, code, p_used, margin = out
     bad = np.flatnonzero(code)
     if bad.size:

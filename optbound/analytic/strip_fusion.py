@@ -35,10 +35,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.special import expit
 
 from optbound.analytic import _batch
-from optbound.analytic._roots import argmin_candidates, real_roots
 from optbound.analytic._strip_kernel import (
     BAD_A,
     BAD_B,
@@ -47,11 +45,13 @@ from optbound.analytic._strip_kernel import (
     LAM_MAX,
     LAMG_MAX,
     MIN_REL_WIDTH,
+    PROJECTION,
     ROBUST,
+    ROBUST_PROJECTION,
+    TRACE,
     VOLUME,
     fuse_range,
     fuse_single,
-    prepare_batch,
 )
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
@@ -115,69 +115,6 @@ class StripFusionBatch:
     margin: np.ndarray | None = None
 
 
-# ------------------------------------------------------------------------ choice of lambda
-def _shape_factor(lam, G, eps):
-    """K of [HS96, eq. (24)] for candidate arrays lam (B, k) and per-instance G, eps (B,)."""
-    u = 1 + lam * G[:, None]
-    return 1 + lam - lam * eps[:, None] ** 2 / u
-
-
-def _best_root(coeffs, size) -> np.ndarray:
-    """The nonnegative real root (or 0) with the smallest ``size``."""
-    roots, real = real_roots(coeffs)
-    candidates = np.column_stack([np.zeros(len(coeffs)), roots])
-    allowed = np.column_stack([np.ones(len(coeffs), dtype=bool), real & (roots > 0)])
-    return argmin_candidates(candidates, allowed, size)
-
-
-def _lam_projection(C, w, G, eps, idx) -> np.ndarray:
-    """Root of the cubic [HS96, eq. (27)] minimizing the projection's volume [HS96, eq. (34)]."""
-    L = idx.size
-    P = C[:, idx][:, :, idx]
-    wd = w[:, idx]
-    H = np.einsum("bi,bi->b", wd, np.linalg.solve(P, wd[:, :, None])[:, :, 0])  # eq. (28)
-    H = np.clip(H, 0.0, G)  # 0 <= H <= G up to rounding
-    e2 = eps * eps
-    coeffs = np.column_stack(
-        [
-            (G - H) * G * G * L,
-            (L * (3 * G - 2 * H) - H) * G,
-            (3 * G - H + e2 * (H - G)) * L - G * H - H + e2 * H,
-            L * (1 - e2) - H,
-        ]
-    )
-
-    def size(lam):
-        K = _shape_factor(lam, G, eps)
-        logK = np.where(K > 0, np.log(np.where(K > 0, K, 1.0)), np.inf)
-        return L * logK + np.log1p(lam * (G - H)[:, None]) - np.log1p(lam * G[:, None])
-
-    return _best_root(coeffs, size)
-
-
-def _lam_trace(C, w, G, eps) -> np.ndarray:
-    """Root of the cubic d/dlambda [K tr C0] = 0 (derived from [HS96, eq. (24)])."""
-    T = np.trace(C, axis1=1, axis2=2)
-    W = np.einsum("bi,bi->b", w, w)
-    e2 = eps * eps
-    D = G * T - W  # >= 0 by Cauchy-Schwarz
-    coeffs = np.column_stack(
-        [
-            G * G * D,
-            3 * G * D,
-            -G * T * e2 + 3 * G * T - G * W + 2 * W * e2 - 2 * W,
-            T * (1 - e2) - W,
-        ]
-    )
-
-    def size(lam):
-        u = 1 + lam * G[:, None]
-        K = _shape_factor(lam, G, eps)
-        return np.where(K > 0, K * (T[:, None] - lam * W[:, None] / u), np.inf)
-
-    return _best_root(coeffs, size)
-
-
 # ----------------------------------------------------------------------------- the core
 _BAD = {
     BAD_A: "{a} must be finite and non-zero, with a norm in [1e-60, 1e60] (the supported domain)",
@@ -194,29 +131,15 @@ def _raise(code: int, index: int, names: tuple[str, str, str, str], batched: boo
     raise_for(code, names[0], names[1], where)
 
 
-def _lam_numpy(c, C, a, b, halfspace, clip, criterion, idx, steepness, midpoint, names, batched):
-    """lambda of the criteria solved in numpy (trace, projection, robust with dims)."""
-    code, _, cons, eps, Gs, ws = prepare_batch(c, C, a, b, halfspace, clip)
-    bad = np.flatnonzero(code)
-    if bad.size:
-        _raise(int(code[bad[0]]), int(bad[0]), names, batched)
-    if criterion == "trace":
-        lam = _lam_trace(C, ws, Gs, eps)
-    else:
-        lam = _lam_projection(C, ws, Gs, eps, idx)
-    if criterion == "robust":
-        lam = lam * expit(steepness * (cons - midpoint))  # [HS96, eq. (30)]
-    return np.where(np.isfinite(lam) & (lam > 0), lam, 0.0)
-
-
 def _mode(criterion, dims, lam, n_batch, n):
-    """Kernel mode and per-instance lambda array (NaN where the kernel chooses it)."""
+    """Kernel mode, per-instance lambda array (zeros where the kernel chooses it) and the
+    coordinates of the projection criteria (empty if unused)."""
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
     if n < 2:
         raise ValueError("strip fusion needs dimension >= 2 (in 1-D E ∩ S is an interval)")
-    idx = None if dims is None else v.dims_index("dims", dims, n)
-    if criterion == "projection" and idx is None:
+    idx = _NO_DIMS if dims is None else v.dims_index("dims", dims, n).astype(np.int64, copy=False)
+    if criterion == "projection" and dims is None:
         raise ValueError("dims is required for criterion='projection' (the subspace to project on)")
     if lam is not None:
         lam = np.ascontiguousarray(_batch.per_instance("lam", lam, n_batch, ()))
@@ -225,11 +148,14 @@ def _mode(criterion, dims, lam, n_batch, n):
                 f"lam must be >= 0 (every lambda >= 0 gives an outer bound), got {lam}"
             )
         return GIVEN, lam, idx
-    if criterion == "volume":
-        return VOLUME, np.zeros(n_batch), idx
-    if criterion == "robust" and idx is None:
-        return ROBUST, np.zeros(n_batch), idx
-    return None, None, idx
+    if criterion == "robust":
+        mode = ROBUST if dims is None else ROBUST_PROJECTION
+    else:
+        mode = {"volume": VOLUME, "trace": TRACE, "projection": PROJECTION}[criterion]
+    return mode, np.zeros(n_batch), idx
+
+
+_NO_DIMS = np.zeros(0, np.int64)
 
 
 def _check_robust(steepness, midpoint) -> tuple[float, float]:
@@ -300,15 +226,8 @@ def intersect_strip(
     mode, lams, idx = _mode(criterion, dims, lam, 1, E.dim)
     steep, midp = _check_robust(steepness, midpoint)
     halfspace = isinstance(S, Halfspace)
-    a, b = S.a, S.b
-    if mode is None:
-        mode = GIVEN
-        lams = _lam_numpy(
-            E.center[None], E.shape[None], a[None], np.array([b]), halfspace, clip,
-            criterion, idx, steep, midp, _NAMES_SINGLE, False,
-        )  # fmt: skip
     c, C, L, valid, r = fuse_single(
-        E.center, E.shape, a, b, halfspace, clip, mode, lams[0], steep, midp
+        E.center, E.shape, S.a, S.b, halfspace, clip, mode, lams[0], idx, steep, midp
     )
     code, case, consistency, lam_used, empty, margin = r
     if code:
@@ -374,13 +293,8 @@ def intersect_strip_batch(
     b = np.ascontiguousarray(_batch.per_instance("b", b, n_batch, ()))
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
-    if mode is None:
-        mode = GIVEN
-        lams = _lam_numpy(
-            c, C, a, b, halfspace, clip, criterion, idx, steep, midp, _NAMES_BATCH, True
-        )
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
-    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, steep, midp, out)
+    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out)
     out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)
     if bad.size:

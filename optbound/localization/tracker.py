@@ -133,17 +133,18 @@ class SetTracker:
         ``c3 = c2 (x_LM - x) + c1 (y_LM - y)`` at the linearization point ``about`` (default
         the current centre), ``D = (c1, -c2, -c3)``, ``r = c1 x_LM - c2 y_LM - c3 psi``.
         """
-        x, y, psi = self.set.center if about is None else about
-        lx, ly = self.map.landmarks[landmark]
+        # Python floats: scalar arithmetic on numpy scalars costs several times more.
+        x, y, psi = (self.set.center if about is None else np.asarray(about, float)).tolist()
+        lx, ly = self.map.landmarks[landmark].tolist()
         c1, c2 = math.sin(alpha + psi), math.cos(alpha + psi)
         c3 = c2 * (lx - x) + c1 * (ly - y)
-        d = np.array([-c1, c2])
-        e_max = math.sqrt(max(d @ self.map.shapes[landmark] @ d, 0.0)) + abs(c3) * self.delta_alpha
+        (s11, s12), (s21, s22) = self.map.shapes[landmark].tolist()
+        dCd = c1 * c1 * s11 - c1 * c2 * (s12 + s21) + c2 * c2 * s22  # d^T C d, d = (-c1, c2)
+        e_max = math.sqrt(max(dCd, 0.0)) + abs(c3) * self.delta_alpha
         r = c1 * lx - c2 * ly - c3 * psi
-        normal = np.array([c1, -c2, -c3])
         if e_max <= 0.0:
             raise ValueError("the strip has zero width: give delta_alpha > 0 or landmark shapes")
-        return Strip(normal / e_max, r / e_max)
+        return Strip(np.array([c1 / e_max, -c2 / e_max, -c3 / e_max]), r / e_max)
 
     def update(self, alpha: float, landmark: int) -> UpdateInfo:
         """Fuse one bearing ``alpha`` of landmark index ``landmark`` [HS96, eqs. (18)-(30)].

@@ -6,6 +6,9 @@ NaN or a non-PD matrix learns which argument was wrong instead of getting a NaN 
 
 from __future__ import annotations
 
+import functools
+import math
+
 import numpy as np
 
 from optbound.sets._domain import SYMMETRY_RTOL, real_array
@@ -21,7 +24,7 @@ def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
         raise ValueError(f"{name} must be a 1-D vector, got shape {arr.shape}")
     if arr.size == 0:
         raise ValueError(f"{name} must not be empty")
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         raise ValueError(f"{name} must be finite, got {arr}")
     if dim is not None and arr.shape[0] != dim:
         raise ValueError(f"{name} must have length {dim}, got {arr.shape[0]}")
@@ -30,6 +33,10 @@ def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:
 
 def finite_scalar(name: str, value) -> float:
     """Return ``value`` as a finite Python float."""
+    if type(value) is float or type(value) is np.float64:  # the common case, no array round trip
+        if math.isfinite(value):
+            return float(value)
+        raise ValueError(f"{name} must be finite, got {float(value)}")
     arr = real_array(name, value)
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a scalar, got shape {arr.shape}")
@@ -98,7 +105,24 @@ def points(name: str, value, dim: int) -> tuple[np.ndarray, bool]:
 
 
 def dims_index(name: str, dims, dim: int) -> np.ndarray:
-    """Validate a list of distinct coordinate indices into a ``dim``-dimensional space."""
+    """Validate a list of distinct coordinate indices into a ``dim``-dimensional space.
+
+    A tuple of Python ints (the common case, e.g. ``(0, 1)`` in a tracker's every update) is
+    validated once and cached: the returned array is then shared and read-only.
+    """
+    if type(dims) is tuple and all(type(d) is int for d in dims):
+        return _int_tuple_index(name, dims, dim)
+    return _dims_index(name, dims, dim)
+
+
+@functools.lru_cache(maxsize=256)
+def _int_tuple_index(name: str, dims: tuple[int, ...], dim: int) -> np.ndarray:
+    idx = _dims_index(name, dims, dim)
+    idx.flags.writeable = False
+    return idx
+
+
+def _dims_index(name: str, dims, dim: int) -> np.ndarray:
     idx = np.atleast_1d(np.asarray(dims))
     if idx.ndim != 1 or idx.size == 0 or not np.issubdtype(idx.dtype, np.integer):
         raise ValueError(f"{name} must be a non-empty sequence of integer coordinates, got {dims}")

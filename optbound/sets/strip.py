@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from optbound.sets import _validate as v
@@ -11,11 +13,9 @@ from optbound.sets.base import ConvexSet
 
 def _normal(name: str, a) -> np.ndarray:
     a = v.finite_vector(name, a).copy()
-    if not np.any(a):
+    norm = math.hypot(*a.tolist())  # scaled internally: no overflow or underflow
+    if norm == 0.0:
         raise ValueError(f"{name} must be a non-zero vector")
-    # Scaled norm: no overflow or underflow in forming it.
-    top = np.max(np.abs(a))
-    norm = top * np.linalg.norm(a / top)
     if not 1.0 / MAG <= norm <= MAG:
         raise ValueError(
             f"{name} must have a norm in [{1 / MAG:.0e}, {MAG:.0e}] (the supported domain; the "

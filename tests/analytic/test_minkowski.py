@@ -123,19 +123,26 @@ def test_size_xy_psi_uses_the_dims_convention():
     assert permuted.kappa == pytest.approx(default.kappa, rel=1e-12)
 
 
+@pytest.mark.parametrize("criterion", ["volume", "trace", "size_xy_psi", "kappa"])
 @given(pair=ellipsoid_pair())
-def test_batch_matches_single_calls(pair):
+def test_batch_matches_single_calls(criterion, pair):
+    """Every criterion: one compiled pass over the batch gives the bits of single calls."""
     E1, E2 = pair
+    kw = {"kappa": 0.3} if criterion == "kappa" else {"criterion": criterion}
+    if criterion == "size_xy_psi":
+        kw["dims"] = ((0, 1), (2,)) if E1.dim > 2 else ((1,), (0,))
     out = analytic.minkowski_sum_batch(
         np.stack([E1.center, E2.center]),
         np.stack([E1.shape, E2.shape]),
         np.stack([E2.center, E1.center]),
         np.stack([E2.shape, E1.shape]),
+        **kw,
     )
     for i, (X, Y) in enumerate([(E1, E2), (E2, E1)]):
-        single = analytic.minkowski_sum(X, Y)
-        assert out.kappa[i] == single.kappa
+        single = analytic.minkowski_sum(X, Y, **kw)
+        assert out.kappa[i] == single.kappa and out.margin[i] == single.margin
         np.testing.assert_array_equal(out.shapes[i], single.ellipsoid.shape)
+        np.testing.assert_array_equal(out.centers[i], single.ellipsoid.center)
 
 
 E2D = Ellipsoid([0.0, 0.0], np.eye(2))

@@ -89,6 +89,10 @@ def _log_width_x(shapes):
     return np.log(shapes[:, 0, 0])
 
 
+def _log_width_y(shapes):
+    return np.log(shapes[:, 1, 1])
+
+
 def _trace(shapes):
     return np.log(np.trace(shapes, axis1=1, axis2=2))
 
@@ -99,12 +103,15 @@ def _trace(shapes):
         ("volume", {}, _logdet),
         ("projection", {"dims": (0, 1)}, _logdet_xy),
         ("projection", {"dims": (0,)}, _log_width_x),
+        ("projection", {"dims": (1,)}, _log_width_y),
+        ("projection", {"dims": (1, 0)}, _logdet_xy),
         ("trace", {}, _trace),
     ],
 )
 @given(inst=ellipsoid_and_strip(min_dim=2, max_dim=5))
 def test_closed_form_root_matches_numeric_minimum(criterion, kw, size, inst):
-    """Eqs. (26), (27) and the trace cubic give the numeric minimum of their size measure."""
+    """Eqs. (26), (27) and the trace cubic (solved in the compiled kernel) give the numeric
+    minimum of their size measure over the family."""
     E, S = inst
     fused = _fuse(E, S, criterion, **kw)
     if fused.case in ("inconsistent", "no_reduction"):
@@ -217,28 +224,44 @@ def test_clearly_disjoint_is_inconsistent_without_nan():
 
 
 # ------------------------------------------------------------------- robust criterion
-def test_robust_lambda_is_logistic_in_the_consistency():
-    E = Ellipsoid(np.zeros(2), np.eye(2))
-    S = Strip([2.0, 0.0], 0.0)  # consistency 1/sqrt(2)
-    opt = analytic.intersect_strip(E, S).lam
-    robust = analytic.intersect_strip(E, S, "robust", midpoint=1 / np.sqrt(2))
+@pytest.mark.parametrize(
+    ("optimal", "kw"),
+    [("volume", {}), ("projection", {"dims": (0,)}), ("projection", {"dims": (1,)})],
+)
+def test_robust_lambda_is_logistic_in_the_consistency(optimal, kw):
+    """[HS96, eq. (30)] on the volume-optimal lambda, or the projection-optimal one with dims."""
+    E = Ellipsoid(np.zeros(2), np.diag([1.0, 0.5]))
+    S = Strip([2.0, 2.0], 0.0)  # every optimal lambda is positive here
+    opt = analytic.intersect_strip(E, S, optimal, **kw).lam
+    assert opt > 0.0
+    cm = analytic.intersect_strip(E, S).consistency
+    robust = analytic.intersect_strip(E, S, "robust", midpoint=cm, **kw)
     assert robust.lam == pytest.approx(opt / 2, rel=1e-14)
-    steep = analytic.intersect_strip(E, S, "robust", steepness=1e3)
+    steep = analytic.intersect_strip(E, S, "robust", steepness=1e3, **kw)
     assert steep.lam == pytest.approx(opt, rel=1e-12)
+    shy = analytic.intersect_strip(E, S, "robust", steepness=10.0, midpoint=cm + 0.1, **kw)
+    assert shy.lam == pytest.approx(opt / (1 + np.exp(1.0)), rel=1e-14)
 
 
 # -------------------------------------------------------------------------- batching
+@pytest.mark.parametrize(("criterion", "kw"), CRITERIA)
 @given(inst=ellipsoid_and_strip())
-def test_batch_matches_single_calls(inst):
+def test_batch_matches_single_calls(criterion, kw, inst):
+    """Every criterion: one compiled pass over the batch gives the bits of single calls."""
     E, S = inst
     rng = np.random.default_rng(0)
     others = [random_ellipsoid(rng, E.dim) for _ in range(3)]
     ellipsoids = [E, *others]
     out = analytic.intersect_strip_batch(
-        np.stack([e.center for e in ellipsoids]), np.stack([e.shape for e in ellipsoids]), S.a, S.b
+        np.stack([e.center for e in ellipsoids]),
+        np.stack([e.shape for e in ellipsoids]),
+        S.a,
+        S.b,
+        criterion,
+        **kw,
     )
     for i, e in enumerate(ellipsoids):
-        single = analytic.intersect_strip(e, S)
+        single = analytic.intersect_strip(e, S, criterion, **kw)
         assert analytic.CASES[out.case[i]] == single.case
         assert out.empty[i] == (single.ellipsoid is None)
         assert out.lam[i] == single.lam and out.consistency[i] == single.consistency
