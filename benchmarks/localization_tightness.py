@@ -175,6 +175,7 @@ def run(task: dict) -> dict:
             "seed": task["seed"],
             "eps_deg": float(np.degrees(eps)),
             "criterion": criterion,
+            "bound": "optimal" if criterion.startswith(("sdp", "optimal")) else "analytic",
             "reference": REFERENCE,
             "metric": "area_ratio",
             "exact_lo": float(exact_lo),

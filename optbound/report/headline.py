@@ -32,7 +32,8 @@ def headline_rows(results: dict) -> list[tuple[str, str]]:
 def _tightness_rows(name: str, records: list[dict]) -> list[tuple[str, str]]:
     rows = []
     for (criterion, reference), recs in group(records, ("criterion", "reference")).items():
-        rows.append((f"{name} · analytic {criterion} / {reference}", stats_text(ratio_stats(recs))))
+        kind = recs[0].get("bound", "analytic")  # "optimal" for a reference measured likewise
+        rows.append((f"{name} · {kind} {criterion} / {reference}", stats_text(ratio_stats(recs))))
     return rows
 
 

@@ -39,6 +39,15 @@ def test_headline_counts_refused_sdp_references():
     assert text == "median 1.15, max 1.2 (n=2); 1 SDP solves refused"
 
 
+def test_headline_names_a_reference_measured_like_a_bound():
+    results = sample_results()
+    recs = results["families"]["strip"]["records"]
+    results["families"]["strip"]["records"] = [{**r, "bound": "optimal"} for r in recs]
+    rows = dict(headline_rows(results))
+    assert "strip · optimal trace / SDP trace" in rows
+    assert not any(label.startswith("strip · analytic") for label in rows)
+
+
 def test_speed_headline_has_the_ratio_and_the_codac_note():
     rows = headline_rows(sample_results())
     assert ("batch", "200 ns; 200× speed-up vs one call") in rows
