@@ -40,7 +40,9 @@ class Progress:
         """One task of family ``name``, of estimated ``cost``, has finished."""
         if self.enabled:
             self.bars[name].update()
-            self.total.update(cost)
+            # Float costs summed in another order can overshoot the total by rounding, which
+            # tqdm would show as a negative time left.
+            self.total.update(min(cost, self.total.total - self.total.n))
 
     def close(self) -> None:
         if self.enabled:

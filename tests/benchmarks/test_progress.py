@@ -17,3 +17,11 @@ def test_disabled_progress_does_nothing():
     with Progress("run", {"a": [1.0]}, enabled=False) as bar:
         bar.done("a", 1.0)
     assert not bar.enabled
+
+
+def test_total_never_overshoots_by_rounding():
+    costs = [0.3, 0.2, 0.1]  # total 0.6; done in reverse order they sum to 0.6000000000000001
+    with Progress("run", {"a": costs}, enabled=True) as bar:
+        for cost in reversed(costs):
+            bar.done("a", cost)
+        assert bar.total.n <= bar.total.total
