@@ -169,8 +169,7 @@ def minkowski_sum(
     )
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)
-    # Validated in the kernel; the full constructor only if that ever failed.
-    E = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
+    E = Ellipsoid._from_kernel(c, C, L, valid)
     return MinkowskiResult(E, 1.0 / (1.0 + p_used), margin)
 
 

@@ -236,8 +236,8 @@ def intersect_strip(
         ellipsoid = None
     elif lam_used == 0.0:
         ellipsoid = E
-    else:  # validated in the kernel; the full constructor only if that ever failed
-        ellipsoid = Ellipsoid._trusted(c, C, L) if valid == 0 else Ellipsoid(c, C)
+    else:
+        ellipsoid = Ellipsoid._from_kernel(c, C, L, valid)
     return StripFusion(ellipsoid, float(lam_used), CASES[case], float(consistency), float(margin))
 
 

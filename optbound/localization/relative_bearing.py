@@ -250,7 +250,8 @@ def rings(li, lj, gamma_hat: float, eps: float) -> Rings:
 
 
 def all_rings(data: Measurements) -> list[Rings]:
-    return [rings(*data.pair(k)[:2], *data.pair(k)[2:]) for k in range(len(data))]
+    """The rings of every measurement, in order."""
+    return [rings(*data.pair(k)) for k in range(len(data))]
 
 
 # -------------------------------------------------------------------------- lifted rows

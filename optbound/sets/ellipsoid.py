@@ -68,6 +68,12 @@ class Ellipsoid(ConvexSet):
         return E
 
     @classmethod
+    def _from_kernel(cls, center, shape, chol, status: int) -> Ellipsoid:
+        """An analytic kernel's output: wrapped as is when the kernel's own ``check_ellipsoid``
+        passed (``status == 0``), else through ``__init__`` (which raises the precise error)."""
+        return cls._trusted(center, shape, chol) if status == 0 else cls(center, shape)
+
+    @classmethod
     def _from_floats(cls, center: np.ndarray, shape: np.ndarray) -> Ellipsoid:
         """The checks of ``__init__`` for float64 arrays of matching shapes built by our own
         code (e.g. from a solver's answer), in one compiled pass without conversions; any
