@@ -11,10 +11,10 @@ from functools import cached_property
 from math import lgamma, log, pi
 
 import numpy as np
-from scipy.linalg import solve_triangular
 
 from optbound.sets import _validate as v
 from optbound.sets._domain import check_ellipsoid, raise_for, real_array
+from optbound.sets._triangular import lower_inverse
 from optbound.sets.base import ConvexSet
 from optbound.sets.box import Box
 
@@ -105,7 +105,7 @@ class Ellipsoid(ConvexSet):
     @cached_property
     def chol_inv(self) -> np.ndarray:
         """``L^{-1}``: maps the set onto the unit ball (computed once, then reused)."""
-        return solve_triangular(self._chol, np.eye(self.dim), lower=True)
+        return lower_inverse(self._chol)
 
     @cached_property
     def shape_inv(self) -> np.ndarray:

@@ -76,7 +76,6 @@ class QuadraticSet:
     @classmethod
     def from_ellipsoid(cls, E: Ellipsoid) -> QuadraticSet:
         """``(x - c)^T C^{-1} (x - c) - 1 <= 0``."""
-        # numpy's inverse, not E.shape_inv: scipy's threaded triangular solve is slow under load.
         P = np.linalg.inv(E.shape)
         P = 0.5 * (P + P.T)
         Pc = P @ E.center
