@@ -16,10 +16,10 @@ from optbound.sets._domain import cholesky
 
 
 @njit(cache=True, nogil=True)
-def strip_one(c, C, a, b, out_c, out_C):
-    """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula."""
+def strip_one(c, C, a, b, out_c, out_C, w):
+    """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula; ``w``
+    (n,) is scratch (allocated once per slice, not per instance)."""
     n = c.shape[0]
-    w = np.empty(n)
     G = 0.0
     ac = 0.0
     for i in range(n):
@@ -47,8 +47,9 @@ def strip_one(c, C, a, b, out_c, out_C):
 
 @njit(cache=True, nogil=True)
 def strip_range(c, C, a, b, out_c, out_C, start, stop):
+    w = np.empty(c.shape[1])
     for i in range(start, stop):
-        strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i])
+        strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
 
 
 @njit(cache=True, nogil=True)

@@ -120,6 +120,30 @@ def up(x):
     return x + 4.0 * U * abs(x) + TINY
 
 
+@njit(cache=True, inline="always")
+def output_floor(trace, cmax):
+    """The eigenvalue floor of a result with shape trace ``trace`` and centre ``|c|_inf =
+    cmax``: keeping lambda_min above twice it keeps the result inside the domain (``inflate``)."""
+    return max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
+
+
+@njit(cache=True, inline="always")
+def segment_scale(dd, lref):
+    """``scale = 1 + rho`` of Schweppe's bound for a centre error of squared norm ``dd`` on a
+    shape with lambda_min ~ ``lref`` (rho = |d| / sqrt(lref) balances the two terms). The
+    guarantee uses rho = scale - 1 exactly (Sterbenz): at least one ulp above 1."""
+    if dd > 0.0:
+        return max(1.0 + np.sqrt(dd / lref), 1.0 + 2.0 * U)
+    return 1.0
+
+
+@njit(cache=True, inline="always")
+def segment_term(dd, rho):
+    """``(1 + 1/rho) |d|^2`` of Schweppe's bound (0 without centre error); rounded down by at
+    most a factor (1 - U)^3, covered by ``RADIUS_SAFETY``."""
+    return (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
+
+
 @njit(cache=True)
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
@@ -163,7 +187,7 @@ def inflate(S, D, c, d, T, L) -> float:
     for i in range(n):
         trace += S[i, i]
         cmax = max(cmax, abs(c[i]))
-    floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
+    floor = output_floor(trace, cmax)
     lmin = 0.0  # lambda_min(S) estimated; 0 if S is (numerically) singular: full widening
     if cholesky(S, L) > 0.0:
         lmin = lambda_min_estimate(L)
@@ -173,10 +197,7 @@ def inflate(S, D, c, d, T, L) -> float:
     dd = 0.0
     for i in range(n):
         dd += d[i] * d[i]
-    scale = 1.0
-    if dd > 0.0:
-        # The guarantee uses rho = scale - 1 exactly (Sterbenz): at least one ulp above 1.
-        scale = max(1.0 + np.sqrt(dd / lref), 1.0 + 2.0 * U)
+    scale = segment_scale(dd, lref)
     rho = scale - 1.0
     DF = 0.0
     SF = 0.0
@@ -187,7 +208,7 @@ def inflate(S, D, c, d, T, L) -> float:
             SF += w * S[i, j] * S[i, j]
     DF = np.sqrt(DF) * (1.0 + 4.0 * U)
     SF = np.sqrt(SF) * (1.0 + 4.0 * U)
-    centre = (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
+    centre = segment_term(dd, rho)
     # Rounding of forming T: |F_ij| <= 2 U |T_ij|, and ||T||_F <= scale ||S||_F + sqrt(n) mu.
     need = scale * DF + centre + 2.0 * U * scale * SF
     mu = need * RADIUS_SAFETY / (1.0 - 2.0 * U * np.sqrt(n) * RADIUS_SAFETY) + TINY
