@@ -45,11 +45,17 @@ def strip_one(c, C, a, b, out_c, out_C, w):
             out_C[i, j] = K * (C[i, j] - gam * w[i] * w[j])
 
 
-@njit(cache=True, nogil=True)
-def strip_range(c, C, a, b, out_c, out_C, start, stop):
-    w = np.empty(c.shape[1])
+@njit(cache=True, nogil=True, _nrt=False)
+def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
+    """The same loop structure as ``optbound.analytic._strip_kernel._fuse_loop`` (views without
+    reference counting), so that the ratio compares the per-instance work only."""
     for i in range(start, stop):
         strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
+
+
+@njit(cache=True, nogil=True)
+def strip_range(c, C, a, b, out_c, out_C, start, stop):
+    _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
 @njit(cache=True, nogil=True)

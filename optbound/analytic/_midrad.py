@@ -86,7 +86,7 @@ def _two_sum(a, b):
     return s, e
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def offset(b, a, c):
     """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
     certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
@@ -144,7 +144,7 @@ def segment_term(dd, rho):
     return (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
 
