@@ -56,18 +56,12 @@ LAMG_MAX = 1e16
 @njit(cache=True, inline="always")
 def _strip_ok(a, b) -> int:
     n = a.shape[0]
-    top = 0.0
-    for i in range(n):
-        if not np.isfinite(a[i]):
-            return BAD_A
-        top = max(top, abs(a[i]))
-    if top == 0.0:
-        return BAD_A
+    # No scaling is needed: |a| in [1 / MAG, MAG] puts |a|^2 in [1e-120, 1e120], far from
+    # overflow and underflow; a non-finite entry makes the sum non-finite (and fails).
     ss = 0.0
     for i in range(n):
-        ss += (a[i] / top) ** 2
-    norm = top * np.sqrt(ss)
-    if not (1.0 / MAG <= norm <= MAG):
+        ss += a[i] * a[i]
+    if not (1.0 / (MAG * MAG) <= ss <= MAG * MAG):
         return BAD_A
     if not (np.isfinite(b) and abs(b) <= MAG * MAG):
         return BAD_B
@@ -239,8 +233,9 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
     as ``sh + sl``, K and ``scale K`` as ``Kh + Kl``) within a certified e_ij (O(U^2)) and then
     rounded once: ``|F_ij| <= e_ij + U |T_ij|`` off the diagonal (the stored float), and
     ``<= e_ii + U (|fl(l + mu)| + |T_ii|)`` on it (``T_ii = fl(h + fl(l + mu))``); ||F||_2 <=
-    ||F||_F. mu is checked against that bound after the diagonal is rounded and raised until
-    it holds (the bound grows by ~2 U sqrt(n) per unit of mu, so this ends at once).
+    ||F||_F <= ||(e_ij)||_F + ||(rounding)||_F. mu is checked against that bound after the
+    diagonal is rounded and raised until it holds (the bound grows by ~2 U sqrt(n) per unit of
+    mu, so this ends at once).
 
     lambda_min(C*) (for rho, the widening and the reported margin) is estimated without a
     factorization: by Sherman-Morrison ``(C - gam w w^T)^{-1} = C^{-1} + gam a a^T / om``
@@ -283,12 +278,31 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
     Sh, Sl = _two_sum(p, Sl0)
     rS = scale * rK + U * (abs(t) + abs(Sl0)) + TINY
     Sa = Sh + abs(Sl) + rS  # >= |scale K| up to rounding (covered by RADIUS_SAFETY)
-    hd, ld, ed = buf[0], buf[1], buf[2]  # diagonal: h, l, e before its rounding
-    off = 0.0  # sum of F_ij^2 bounds over the off-diagonal entries (both triangles)
+    # Error of the double-double entry h + lo against scale K* (C_ij - gam w*_i w*_j), derived
+    # from |sK* - Sh - Sl| <= rS, the error err of sh + sl (the c0 bound of the old midrad code:
+    # ``gam X_ij + 4 U (|ql| + |sl| + U |qh|)``), the dropped Sl sl and the four roundings of
+    # lo (|e1| <= U |h|, |t4| <= (1 + U) Sh |sl|, |t5| <= (1 + U) |Sl| |sh|):
+    #     e_ij <= Sa gam X_ij + alpha |sl| + beta |sh| + gamma (|ql| + U |qh|),
+    # X_ij = W_i we_j + we_i W_j + |wl_i| |wl_j| + 4 U (|wh_i| |wl_j| + |wl_i| |wh_j|) a sum
+    # of outer products, so ||X||_F <= 2 |W| |we| + |wl|^2 + 8 U |wh| |wl| (vector 2-norms).
+    alpha = 4.0 * U * (Sa + Sh) + rS + abs(Sl)
+    beta = rS + 4.0 * U * (abs(Sl) + U * Sh)
+    gamma = 4.0 * U * Sa
+    nW = 0.0
+    nwe = 0.0
+    nwl = 0.0
+    nwh = 0.0
     for i in range(n):
-        Wi = abs(wh[i]) + abs(wl[i]) + we[i]
+        nW += (abs(wh[i]) + abs(wl[i]) + we[i]) ** 2
+        nwe += we[i] * we[i]
+        nwl += wl[i] * wl[i]
+        nwh += wh[i] * wh[i]
+    nX = 2.0 * np.sqrt(nW * nwe) + nwl + 8.0 * U * np.sqrt(nwh * nwl)
+    hd, ld = buf[0], buf[1]  # the diagonal's h, lo before its rounding (mu is added first)
+    e2 = 0.0  # sum of the e_ij parts but X over the whole matrix (off-diagonal twice)
+    r2 = 0.0  # sum of T_ij^2 over the off-diagonal entries (their rounding: U |T_ij|)
+    for i in range(n):
         for j in range(i + 1):
-            Wj = abs(wh[j]) + abs(wl[j]) + we[j]
             ph, pl = _two_prod(wh[i], wh[j])
             cross = wh[i] * wl[j] + wl[i] * wh[j]
             pl += cross
@@ -296,45 +310,37 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
             ql += gam * pl
             sh, sl = _two_sum(C[i, j], -qh)
             sl -= ql
-            # C_ij - gam w_i w_j (exact w) is within err of sh + sl.
-            err = gam * (
-                Wi * we[j] + we[i] * Wj + abs(wl[i] * wl[j])
-                + 4.0 * U * (abs(wh[i] * wl[j]) + abs(wl[i] * wh[j]))
-            ) + 4.0 * U * (abs(ql) + abs(sl) + U * abs(qh))  # fmt: skip
             h, e1 = _two_prod(Sh, sh)
-            t4 = Sh * sl
-            t5 = Sl * sh
-            lo = (e1 + t4) + t5
-            eij = (
-                Sa * err + rS * (abs(sh) + abs(sl)) + abs(Sl * sl)
-                + 4.0 * U * (abs(e1) + abs(t4) + abs(t5))
-            )  # fmt: skip
+            lo = (e1 + Sh * sl) + Sl * sh
+            eij = alpha * abs(sl) + beta * abs(sh) + gamma * (abs(ql) + U * abs(qh))
             if i == j:
-                hd[i], ld[i], ed[i] = h, lo, eij
+                hd[i], ld[i] = h, lo
+                e2 += eij * eij
             else:
                 tij = h + lo
                 out_C[i, j] = tij
                 out_C[j, i] = tij
-                f = eij + U * abs(tij)
-                off += 2.0 * f * f
-    mu = 0.0
+                e2 += 2.0 * eij * eij
+                r2 += 2.0 * tij * tij
+    # ||F||_F <= ||E||_F + ||rounding||_F (triangle inequality); the diagonal's rounding is
+    # U (|fl(lo + mu)| + |T_ii|) (two roundings).
+    en = Sa * gam * nX + np.sqrt(e2)
+    d2 = 0.0
     for i in range(n):
-        f = ed[i] + U * (2.0 * abs(hd[i]) + 3.0 * abs(ld[i]))
-        mu += f * f
-    # A first guess that the check below accepts (the diagonal's rounding of mu: 3 U mu).
-    mu = (centre + np.sqrt(off + mu)) * RADIUS_SAFETY / (1.0 - 3.0 * U * np.sqrt(n)) + TINY
-    mu = max(mu, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
+        d2 += (abs(hd[i]) + 3.0 * abs(ld[i])) ** 2
+    # A first guess that the check below accepts (the diagonal's rounding of mu: ~2 U mu).
+    mu = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY / (1.0 - 3.0 * U * np.sqrt(n))
+    mu = max(mu + TINY, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
     while True:
-        diag = 0.0
+        d2 = 0.0
         for i in range(n):
             lm = ld[i] + mu
             tii = hd[i] + lm
             if not tii <= MAX_DIAG:
                 return -1.0
             out_C[i, i] = tii
-            f = ed[i] + U * (abs(lm) + abs(tii))
-            diag += f * f
-        need = (centre + np.sqrt(off + diag)) * RADIUS_SAFETY + TINY
+            d2 += (abs(lm) + abs(tii)) ** 2
+        need = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY + TINY
         if mu >= need:
             break
         mu = need * (1.0 + 4.0 * U * n)
