@@ -166,6 +166,28 @@ def lambda_min_estimate(L) -> float:
 
 
 @njit(cache=True)
+def trace_inverse(L, r) -> float:
+    """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``
+    needs n (n + 1) / 2): row i of X = L^{-1} is ``X_ii = r_i = 1 / L_ii``,
+    ``X_ij = -r_i (L_ij r_j + sum_{j<k<i} L_ik X_kj)``. ``r`` (n,) is scratch; the strict lower
+    part of X is stored transposed in L's (unused) strict upper triangle."""
+    n = L.shape[0]
+    total = 0.0
+    for i in range(n):
+        ri = 1.0 / L[i, i]
+        r[i] = ri
+        total += ri * ri
+        for j in range(i):
+            s = L[i, j] * r[j]
+            for k in range(j + 1, i):
+                s += L[i, k] * L[j, k]
+            x = -ri * s
+            L[j, i] = x
+            total += x * x
+    return total
+
+
+@njit(cache=True)
 def inflate(S, D, c, d, T, L) -> float:
     """Outward shape T (written, symmetric) containing the exact member; see the module doc.
 

@@ -30,13 +30,13 @@ from optbound.analytic._midrad import (
     _fma,
     _two_prod,
     _two_sum,
-    lambda_min_estimate,
     mr_add,
     mr_mul,
     offset,
     output_floor,
     segment_scale,
     segment_term,
+    trace_inverse,
 )
 from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
@@ -262,7 +262,7 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
         ww += wh[i] * wh[i]
         trace_c += C[i, i]
     # Estimates of lambda_min(C*) and tr(C*) (see the docstring).
-    lmin = Kh / (1.0 / lambda_min_estimate(L) + gam * aa / om)
+    lmin = Kh / (trace_inverse(L, buf[2]) + gam * aa / om)
     trace = Kh * max(trace_c - gam * ww, 0.0)
     floor = output_floor(trace, cmax)
     if not (lmin > 0.0 and trace <= 1e14 * lmin):  # beyond the estimate's accuracy
