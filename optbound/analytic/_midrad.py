@@ -86,7 +86,7 @@ def _two_sum(a, b):
     return s, e
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def offset(b, a, c):
     """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
     certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
@@ -144,7 +144,7 @@ def segment_term(dd, rho):
     return (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
 
@@ -167,10 +167,11 @@ def lambda_min_estimate(L) -> float:
 
 @njit(cache=True)
 def trace_inverse(L, r) -> float:
-    """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``
-    needs n (n + 1) / 2): row i of X = L^{-1} is ``X_ii = r_i = 1 / L_ii``,
-    ``X_ij = -r_i (L_ij r_j + sum_{j<k<i} L_ik X_kj)``. ``r`` (n,) is scratch; the strict lower
-    part of X is stored transposed in L's (unused) strict upper triangle."""
+    """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``,
+    which has no scratch vector, needs n (n + 1) / 2): row i of X = L^{-1} is
+    ``X_ii = r_i = 1 / L_ii``, ``X_ij = -r_i (L_ij r_j + sum_{j<k<i} L_ik X_kj)``. ``r`` (n,)
+    is scratch; the strict lower part of X is stored transposed in L's (unused) strict upper
+    triangle."""
     n = L.shape[0]
     total = 0.0
     for i in range(n):
