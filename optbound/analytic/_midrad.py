@@ -86,7 +86,7 @@ def _two_sum(a, b):
     return s, e
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def offset(b, a, c):
     """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
     certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
@@ -165,7 +165,7 @@ def lambda_min_estimate(L) -> float:
     return 1.0 / total
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def trace_inverse(L, r) -> float:
     """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``,
     which has no scratch vector, needs n (n + 1) / 2): row i of X = L^{-1} is
