@@ -214,9 +214,9 @@ def _shape_factor(gam, mid, half, G, G_lo, rG):
 @njit(cache=True, inline="always")
 def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf):
     """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), inflated and
-    written into out_c, out_C; ``L`` is the Cholesky factor of C (strict upper part overwritten), ``buf``
-    (>= (3, n)) scratch. Returns the margin, or -1.0 if it cannot be certified (the caller
-    falls back to E).
+    written into out_c, out_C; ``L`` is the Cholesky factor of C (its strict upper part is
+    overwritten), ``buf`` (>= (3, n)) scratch. Returns the margin, or -1.0 if it cannot be
+    certified (the caller falls back to E).
 
     Parametrized by ``gam = lambda / (u half^2)`` itself, the member of [HS96, eq. (24)] for
     the fused strip reads, with w = C a exactly and ``lambda' = gam half^2 / (1 - gam G)``:
