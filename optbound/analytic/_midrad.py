@@ -16,6 +16,10 @@ ellipsoid and a segment, ``E(0, C*) + [-delta, delta] ⊆ E(0, (1+rho) C* + (1 +
 delta^T)``, for any rho > 0. No eigenvalue needs to be certified for this; rho only balances
 the two terms (rho = |d| / sqrt(lambda_min(S)), estimated).
 
+The strip member (``_strip_kernel.member``) applies the same rule with the scale folded into
+its scalar factor, so that each entry of its shape is rounded only once (``output_floor``,
+``segment_scale`` and ``segment_term`` are shared).
+
 The radii themselves are computed in floating point from non-negative terms; a chain of k such
 operations underestimates by at most a factor (1 - U)^k, covered by ``RADIUS_SAFETY`` (k <= 1e4).
 """
@@ -86,7 +90,7 @@ def _two_sum(a, b):
     return s, e
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def offset(b, a, c):
     """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
     certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
@@ -120,6 +124,30 @@ def up(x):
     return x + 4.0 * U * abs(x) + TINY
 
 
+@njit(cache=True, inline="always")
+def output_floor(trace, cmax):
+    """The eigenvalue floor of a result with shape trace ``trace`` and centre ``|c|_inf =
+    cmax``: keeping lambda_min above twice it keeps the result inside the domain (``inflate``)."""
+    return max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
+
+
+@njit(cache=True, inline="always")
+def segment_scale(dd, lref):
+    """``scale = 1 + rho`` of Schweppe's bound for a centre error of squared norm ``dd`` on a
+    shape with lambda_min ~ ``lref`` (rho = |d| / sqrt(lref) balances the two terms). The
+    guarantee uses rho = scale - 1 exactly (Sterbenz): at least one ulp above 1."""
+    if dd > 0.0:
+        return max(1.0 + np.sqrt(dd / lref), 1.0 + 2.0 * U)
+    return 1.0
+
+
+@njit(cache=True, inline="always")
+def segment_term(dd, rho):
+    """``(1 + 1/rho) |d|^2`` of Schweppe's bound (0 without centre error); rounded down by at
+    most a factor (1 - U)^3, covered by ``RADIUS_SAFETY``."""
+    return (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
+
+
 @njit(cache=True)
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
@@ -139,6 +167,29 @@ def lambda_min_estimate(L) -> float:
             L[j, i] = -s / L[i, i]
             total += L[j, i] * L[j, i]
     return 1.0 / total
+
+
+@njit(cache=True, inline="always")
+def trace_inverse(L, r) -> float:
+    """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``,
+    which has no scratch vector, needs n (n + 1) / 2): row i of X = L^{-1} is
+    ``X_ii = r_i = 1 / L_ii``, ``X_ij = -r_i (L_ij r_j + sum_{j<k<i} L_ik X_kj)``. ``r`` (n,)
+    is scratch; the strict lower part of X is stored transposed in L's (unused) strict upper
+    triangle."""
+    n = L.shape[0]
+    total = 0.0
+    for i in range(n):
+        ri = 1.0 / L[i, i]
+        r[i] = ri
+        total += ri * ri
+        for j in range(i):
+            s = L[i, j] * r[j]
+            for k in range(j + 1, i):
+                s += L[i, k] * L[j, k]
+            x = -ri * s
+            L[j, i] = x
+            total += x * x
+    return total
 
 
 @njit(cache=True)
@@ -163,7 +214,7 @@ def inflate(S, D, c, d, T, L) -> float:
     for i in range(n):
         trace += S[i, i]
         cmax = max(cmax, abs(c[i]))
-    floor = max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
+    floor = output_floor(trace, cmax)
     lmin = 0.0  # lambda_min(S) estimated; 0 if S is (numerically) singular: full widening
     if cholesky(S, L) > 0.0:
         lmin = lambda_min_estimate(L)
@@ -173,10 +224,7 @@ def inflate(S, D, c, d, T, L) -> float:
     dd = 0.0
     for i in range(n):
         dd += d[i] * d[i]
-    scale = 1.0
-    if dd > 0.0:
-        # The guarantee uses rho = scale - 1 exactly (Sterbenz): at least one ulp above 1.
-        scale = max(1.0 + np.sqrt(dd / lref), 1.0 + 2.0 * U)
+    scale = segment_scale(dd, lref)
     rho = scale - 1.0
     DF = 0.0
     SF = 0.0
@@ -187,7 +235,7 @@ def inflate(S, D, c, d, T, L) -> float:
             SF += w * S[i, j] * S[i, j]
     DF = np.sqrt(DF) * (1.0 + 4.0 * U)
     SF = np.sqrt(SF) * (1.0 + 4.0 * U)
-    centre = (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
+    centre = segment_term(dd, rho)
     # Rounding of forming T: |F_ij| <= 2 U |T_ij|, and ||T||_F <= scale ||S||_F + sqrt(n) mu.
     need = scale * DF + centre + 2.0 * U * scale * SF
     mu = need * RADIUS_SAFETY / (1.0 - 2.0 * U * np.sqrt(n) * RADIUS_SAFETY) + TINY

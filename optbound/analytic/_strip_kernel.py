@@ -11,8 +11,9 @@ so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centr
 3. clip (optionally) and floor the strip's width, normalize it to |a'^T x - b'| <= 1;
 4. choose lambda (``_strip_lambda``: volume [HS96, eq. (26)], trace, projection
    [HS96, eqs. (27)-(28)], robust [HS96, eq. (30)] on either, or given);
-5. evaluate the member [HS96, eq. (24)] in midpoint-radius arithmetic and inflate it by the
-   certified margin of ``_midrad.inflate`` (widened to the output domain if needed);
+5. evaluate the member [HS96, eq. (24)] with certified error bounds (each shape entry formed
+   in double-double and rounded once) and inflate it by the certified margin of ``_midrad``
+   (widened to the output domain if needed);
 6. any failure (K not provably positive, output too large) falls back to E itself (lambda = 0),
    which always contains E ∩ S.
 """
@@ -23,18 +24,22 @@ import numpy as np
 from numba import njit
 
 from optbound.analytic._midrad import (
+    RADIUS_SAFETY,
     TINY,
     U,
+    _fma,
     _two_prod,
     _two_sum,
-    inflate,
     mr_add,
-    mr_div,
     mr_mul,
     offset,
+    output_floor,
+    segment_scale,
+    segment_term,
+    trace_inverse,
 )
 from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
-from optbound.sets._domain import MAG, check_ellipsoid
+from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 # How lambda is chosen (ROBUST_PROJECTION: [HS96, eq. (30)] with the projection-optimal lambda).
@@ -51,25 +56,19 @@ LAMG_MAX = 1e16
 @njit(cache=True, inline="always")
 def _strip_ok(a, b) -> int:
     n = a.shape[0]
-    top = 0.0
-    for i in range(n):
-        if not np.isfinite(a[i]):
-            return BAD_A
-        top = max(top, abs(a[i]))
-    if top == 0.0:
-        return BAD_A
+    # No scaling is needed: |a| in [1 / MAG, MAG] puts |a|^2 in [1e-120, 1e120], far from
+    # overflow and underflow; a non-finite entry makes the sum non-finite (and fails).
     ss = 0.0
     for i in range(n):
-        ss += (a[i] / top) ** 2
-    norm = top * np.sqrt(ss)
-    if not (1.0 / MAG <= norm <= MAG):
+        ss += a[i] * a[i]
+    if not (1.0 / (MAG * MAG) <= ss <= MAG * MAG):
         return BAD_A
     if not (np.isfinite(b) and abs(b) <= MAG * MAG):
         return BAD_B
     return 0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     """Steps 1-3. Writes C's Cholesky factor into L and ``w = C a`` as ``wh + wl`` with error
     bounds ``we``. Returns (code, case, consistency, mid, half, G, G_lo, r_G): the fused strip
@@ -160,43 +159,150 @@ def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     return 0, case, consistency, mid, half, G, G_lo, rG_dd
 
 
-@njit(cache=True)
-def member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, L, D, dc):
-    """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), written into
-    out_c, out_C (inflated) with its Cholesky factor in L. Returns the margin, or -1.0 if it
-    cannot be certified (the caller falls back to E).
+@njit(cache=True, inline="always")
+def _shape_factor(gam, mid, half, G, G_lo, rG):
+    """K = 1 + gam half^2 / (1 - gam G) - gam mid^2 for the exact G (within rG of G + G_lo) as
+    a double-double ``Kh + Kl`` within ``rK`` of the exact K, and ``1 - gam G`` (float).
+    Returns (Kh, Kl, rK, om), rK = -1.0 if ``1 - gam G`` is not provably positive.
+
+    Error bound (every step exact or one rounding, |fl(x) - x| <= U |fl(x)|):
+    ``gam (G + G_lo) = p + e + t1`` with p + e exact and t1 = fl(gam G_lo); ``1 - p = oh + ot``
+    exactly, ``ol = fl(ot - fl(e + t1))``, so om* = 1 - gam G* is within
+    ``rom = U (|t1| + |q| + |ol|) + gam rG`` of ``oh + ol``. ``om_low`` rounds
+    ``oh - |ol| - rom`` down (two subtractions, each off by <= U (1 + U) |oh|, covered by the
+    extra 3 U |oh|). The quotient lp = gam half^2 / om* is ``q1 + q2``: q1 = fl(gh / oh) has
+    the exact remainder r1 = fma(-q1, oh, gh) (the remainder of a rounded division is a
+    float); ``q2 = fl(res / oh)`` with res = fl(fl(r1 + gl) - fl(q1 ol)) within
+    ``3 U (|r1| + |gl| + |q1 ol|)`` of gh + gl - q1 (oh + ol), and ``|res - q2 oh| <= U |res|``.
+    So ``|gh + gl - (q1 + q2) om*| <= R + |q1 + q2| rom`` (R the terms above plus ``|q2 ol|``),
+    and lp is within ``(R + rgl + |q1 + q2| rom) / om_low`` of q1 + q2. K then sums four
+    exact parts (two two_sums) and three small ones (<= 4 U their magnitudes).
+    """
+    p, e = _two_prod(gam, G)
+    t1 = gam * G_lo
+    q = e + t1
+    oh, ot = _two_sum(1.0, -p)
+    ol = ot - q
+    rom = U * (abs(t1) + abs(q) + abs(ol)) + gam * rG + TINY
+    om_low = (oh - abs(ol)) - (rom + 3.0 * U * abs(oh))
+    if not om_low > 0.0:
+        return 1.0, 0.0, -1.0, 0.0
+    hh, hl = _two_prod(half, half)
+    gh, g2 = _two_prod(gam, hh)
+    t2 = gam * hl
+    gl = g2 + t2
+    rgl = U * (abs(t2) + abs(gl))  # gh + gl is within rgl of gam half^2
+    q1 = gh / oh
+    r1 = _fma(-q1, oh, gh)
+    res = (r1 + gl) - q1 * ol
+    q2 = res / oh
+    R = 3.0 * U * (abs(r1) + abs(gl) + abs(q1 * ol)) + U * abs(res) + abs(q2 * ol)
+    rlp = (R + rgl + abs(q1 + q2) * rom) / om_low
+    m1, m2 = _two_prod(gam, mid)  # gam mid^2 = n1 + n2 + m2 mid
+    n1, n2 = _two_prod(m1, mid)
+    t3 = m2 * mid
+    nl = n2 + t3
+    rgm2 = U * (abs(t3) + abs(nl))
+    s1, u1 = _two_sum(1.0, q1)
+    s2, u2 = _two_sum(s1, -n1)
+    kl = ((u1 + u2) + q2) - nl
+    Kh, Kl = _two_sum(s2, kl)
+    rK = rlp + rgm2 + 4.0 * U * (abs(u1) + abs(u2) + abs(q2) + abs(nl)) + TINY
+    return Kh, Kl, rK, oh + ol
+
+
+@njit(cache=True, inline="always")
+def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf):
+    """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), inflated and
+    written into out_c, out_C; ``L`` is the Cholesky factor of C (its strict upper part is
+    overwritten), ``buf`` (>= (3, n)) scratch. Returns the margin, or -1.0 if it cannot be
+    certified (the caller falls back to E).
 
     Parametrized by ``gam = lambda / (u half^2)`` itself, the member of [HS96, eq. (24)] for
     the fused strip reads, with w = C a exactly and ``lambda' = gam half^2 / (1 - gam G)``:
 
         centre = c + gam mid w,   shape = K (C - gam w w^T),   K = 1 + lambda' - gam mid^2,
 
-    so no rounding of lambda, u or the normalization enters the matrix; ``C - gam w w^T``
-    (where the cancellation is) is formed in twice the working precision.
+    so no rounding of lambda, u or the normalization enters the matrix.
+
+    Certified margin (the outward rule of ``_midrad``, evaluated so that each entry of the
+    shape is rounded once): with the centre's error |d| and rho = scale - 1 chosen first,
+    T = scale C* + mu I + F must dominate ``(1 + rho) C* + (1 + 1/rho) |d|^2 I`` (Schweppe's
+    bound for the centre, C* the exact member), i.e. ``mu >= (1 + 1/rho) |d|^2 + ||F||_2``.
+    Every entry ``scale K (C_ij - gam w_i w_j)`` is formed in double-double (``C - gam w w^T``
+    as ``sh + sl``, K and ``scale K`` as ``Kh + Kl``) within a certified e_ij (O(U^2)) and then
+    rounded once: ``|F_ij| <= e_ij + U |T_ij|`` off the diagonal (the stored float), and
+    ``<= e_ii + U (|fl(l + mu)| + |T_ii|)`` on it (``T_ii = fl(h + fl(l + mu))``); ||F||_2 <=
+    ||F||_F <= ||(e_ij)||_F + ||(rounding)||_F. mu is checked against that bound after the
+    diagonal is rounded and raised until it holds (the bound grows by ~2 U sqrt(n) per unit of
+    mu, so this ends at once).
+
+    lambda_min(C*) (for rho, the widening and the reported margin) is estimated without a
+    factorization: by Sherman-Morrison ``(C - gam w w^T)^{-1} = C^{-1} + gam a a^T / om``
+    (w = C a, om = 1 - gam a^T C a), so ``tr(C*^{-1}) = (tr(C^{-1}) + gam |a|^2 / om) / K``,
+    and ``1 / tr(X^{-1}) <= lambda_min(X) <= n / tr(X^{-1})``; tr(C^{-1}) = ||L^{-1}||_F^2.
+    Only estimates: no guarantee rests on them (as in ``_midrad.inflate``).
     """
     n = c.shape[0]
-    # 1 - gam G without cancellation error (it is ~ 1 / u, small when lambda G is large).
-    p, e = _two_prod(gam, G)
-    q = e + gam * G_lo
-    om = (1.0 - p) - q
-    rom = U * abs(1.0 - p) + 2.0 * U * (abs(q) + abs(om)) + gam * rG + TINY
-    if not om - rom > 0.0:
+    Kh, Kl, rK, om = _shape_factor(gam, mid, half, G, G_lo, rG)
+    if not (rK >= 0.0 and Kh > 2.0 * (abs(Kl) + rK)):
         return -1.0
-    hh, rhh = mr_mul(half, 0.0, half, 0.0)
-    gh, rgh = mr_mul(gam, 0.0, hh, rhh)
-    lp, rlp = mr_div(gh, rgh, om, rom)
     gm, rgm = mr_mul(gam, 0.0, mid, 0.0)
-    gm2, rgm2 = mr_mul(gm, rgm, mid, 0.0)
-    k1, rk1 = mr_add(1.0, 0.0, lp, rlp)
-    K, rK = mr_add(k1, rk1, -gm2, rgm2)
-    if not K - rK > 0.0:
-        return -1.0
+    dd = 0.0
+    cmax = 0.0
+    aa = 0.0
+    ww = 0.0
+    trace_c = 0.0
     for i in range(n):
         fw, rfw = mr_mul(gm, rgm, wh[i], abs(wl[i]) + we[i])
-        out_c[i], dc[i] = mr_add(c[i], 0.0, fw, rfw)
-        Wi = abs(wh[i]) + abs(wl[i]) + we[i]
+        out_c[i], di = mr_add(c[i], 0.0, fw, rfw)
+        dd += di * di
+        cmax = max(cmax, abs(out_c[i]))
+        aa += a[i] * a[i]
+        ww += wh[i] * wh[i]
+        trace_c += C[i, i]
+    # Estimates of lambda_min(C*) and tr(C*) (see the docstring).
+    lmin = Kh / (trace_inverse(L, buf[2]) + gam * aa / om)
+    trace = Kh * max(trace_c - gam * ww, 0.0)
+    floor = output_floor(trace, cmax)
+    if not (lmin > 0.0 and trace <= 1e14 * lmin):  # beyond the estimate's accuracy
+        lmin = 0.0
+    lref = max(lmin, floor)
+    scale = segment_scale(dd, lref)
+    rho = scale - 1.0
+    centre = segment_term(dd, rho)
+    # scale K as a double-double within rS.
+    p, e = _two_prod(scale, Kh)
+    t = scale * Kl
+    Sl0 = e + t
+    Sh, Sl = _two_sum(p, Sl0)
+    rS = scale * rK + U * (abs(t) + abs(Sl0)) + TINY
+    Sa = Sh + abs(Sl) + rS  # >= |scale K| up to rounding (covered by RADIUS_SAFETY)
+    # Error of the double-double entry h + lo against scale K* (C_ij - gam w*_i w*_j), derived
+    # from |sK* - Sh - Sl| <= rS, the error err of sh + sl (the c0 bound of the old midrad code:
+    # ``gam X_ij + 4 U (|ql| + |sl| + U |qh|)``), the dropped Sl sl and the four roundings of
+    # lo (|e1| <= U |h|, |t4| <= (1 + U) Sh |sl|, |t5| <= (1 + U) |Sl| |sh|):
+    #     e_ij <= Sa gam X_ij + alpha |sl| + beta |sh| + gamma (|ql| + U |qh|),
+    # X_ij = W_i we_j + we_i W_j + |wl_i| |wl_j| + 4 U (|wh_i| |wl_j| + |wl_i| |wh_j|) a sum
+    # of outer products, so ||X||_F <= 2 |W| |we| + |wl|^2 + 8 U |wh| |wl| (vector 2-norms).
+    alpha = 4.0 * U * (Sa + Sh) + rS + abs(Sl)
+    beta = rS + 4.0 * U * (abs(Sl) + U * Sh)
+    gamma = 4.0 * U * Sa
+    nW = 0.0
+    nwe = 0.0
+    nwl = 0.0
+    nwh = 0.0
+    for i in range(n):
+        nW += (abs(wh[i]) + abs(wl[i]) + we[i]) ** 2
+        nwe += we[i] * we[i]
+        nwl += wl[i] * wl[i]
+        nwh += wh[i] * wh[i]
+    nX = 2.0 * np.sqrt(nW * nwe) + nwl + 8.0 * U * np.sqrt(nwh * nwl)
+    hd, ld = buf[0], buf[1]  # the diagonal's h, lo before its rounding (mu is added first)
+    e2 = 0.0  # sum of the e_ij parts but X over the whole matrix (off-diagonal twice)
+    r2 = 0.0  # sum of T_ij^2 over the off-diagonal entries (their rounding: U |T_ij|)
+    for i in range(n):
         for j in range(i + 1):
-            Wj = abs(wh[j]) + abs(wl[j]) + we[j]
             ph, pl = _two_prod(wh[i], wh[j])
             cross = wh[i] * wl[j] + wl[i] * wh[j]
             pl += cross
@@ -204,24 +310,52 @@ def member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, L, D, dc
             ql += gam * pl
             sh, sl = _two_sum(C[i, j], -qh)
             sl -= ql
-            c0 = sh + sl
-            err = gam * (
-                Wi * we[j] + we[i] * Wj + abs(wl[i] * wl[j])
-                + 4.0 * U * (abs(wh[i] * wl[j]) + abs(wl[i] * wh[j]))
-            ) + 4.0 * U * (abs(ql) + abs(sl)) + U * abs(c0)  # fmt: skip
-            out_C[i, j], D[i, j] = mr_mul(K, rK, c0, err)
-    margin = inflate(out_C, D, out_c, dc, out_C, L)
-    return margin
+            h, e1 = _two_prod(Sh, sh)
+            lo = (e1 + Sh * sl) + Sl * sh
+            eij = alpha * abs(sl) + beta * abs(sh) + gamma * (abs(ql) + U * abs(qh))
+            if i == j:
+                hd[i], ld[i] = h, lo
+                e2 += eij * eij
+            else:
+                tij = h + lo
+                out_C[i, j] = tij
+                out_C[j, i] = tij
+                e2 += 2.0 * eij * eij
+                r2 += 2.0 * tij * tij
+    # ||F||_F <= ||E||_F + ||rounding||_F (triangle inequality); the diagonal's rounding is
+    # U (|fl(lo + mu)| + |T_ii|) (two roundings).
+    en = Sa * gam * nX + np.sqrt(e2)
+    d2 = 0.0
+    for i in range(n):
+        d2 += (abs(hd[i]) + 3.0 * abs(ld[i])) ** 2
+    # A first guess that the check below accepts (the diagonal's rounding of mu: ~2 U mu).
+    mu = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY / (1.0 - 3.0 * U * np.sqrt(n))
+    mu = max(mu + TINY, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
+    while True:
+        d2 = 0.0
+        for i in range(n):
+            lm = ld[i] + mu
+            tii = hd[i] + lm
+            if not tii <= MAX_DIAG:
+                return -1.0
+            out_C[i, i] = tii
+            d2 += (abs(lm) + abs(tii)) ** 2
+        need = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY + TINY
+        if mu >= need:
+            break
+        mu = need * (1.0 + 4.0 * U * n)
+    if not cmax <= MAG:
+        return -1.0
+    return rho + mu / lref
 
 
 @njit(cache=True)
-def _copy_input(c, C, L, out_c, out_C, out_L):
+def _copy_input(c, C, out_c, out_C):
     n = c.shape[0]
     for i in range(n):
         out_c[i] = c[i]
         for j in range(n):
             out_C[i, j] = C[i, j] if j <= i else C[j, i]
-            out_L[i, j] = L[i, j]
 
 
 @njit(cache=True)
@@ -235,9 +369,7 @@ def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
 
 
 @njit(cache=True, inline="always")
-def fuse_one(
-    c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c, out_C, out_L, work
-):
+def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c, out_C, work):
     """One full update (steps 1-6); ``idx`` are the coordinates of the projection criteria
     (unused otherwise). ``work`` is (4, max(n, 4), n) scratch. Inlined into its two callers:
     as a separate function, LLVM no longer inlined it into the batch loop once the criteria's
@@ -246,7 +378,7 @@ def fuse_one(
     Returns (code, case, consistency, lam, empty, margin).
     """
     n = c.shape[0]
-    wh, wl, we, dc, D, L = work[0, 0], work[0, 1], work[0, 2], work[0, 3], work[1, :n], work[2, :n]
+    wh, wl, we, L = work[0, 0], work[0, 1], work[0, 2], work[2, :n]
     code, case, cons, mid, half, G, G_lo, rG = prepare(c, C, a, b, halfspace, clip, L, wh, wl, we)
     if code != 0:
         return code, case, 0.0, 0.0, True, 0.0
@@ -257,7 +389,6 @@ def fuse_one(
             out_c[i] = 0.0
             for j in range(n):
                 out_C[i, j] = 0.0
-                out_L[i, j] = 0.0
         return 0, case, 0.0, 0.0, True, 0.0
     lam = 0.0
     Gn = G / (half * half)
@@ -276,9 +407,10 @@ def fuse_one(
     margin = 0.0
     if lam > 0.0:
         gam = lam / ((1.0 + lam * Gn) * (half * half))
-        margin = member(c, C, gam, mid, half, G, G_lo, rG, wh, wl, we, out_c, out_C, out_L, D, dc)
+        buf = work[1, :3]
+        margin = member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf)
     if not lam > 0.0 or margin < 0.0:
-        _copy_input(c, C, L, out_c, out_C, out_L)
+        _copy_input(c, C, out_c, out_C)
         return 0, case, cons, 0.0, False, 0.0
     return 0, case, cons, lam, False, margin
 
@@ -286,29 +418,37 @@ def fuse_one(
 @njit(cache=True)
 def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
     """One instance, without slicing (the same ``fuse_one`` as the batch), plus the result's
-    Cholesky factor and its validation code (0 by construction, see ``_midrad.inflate``)."""
+    Cholesky factor and its validation code (0 by construction: ``member`` keeps the result
+    in the domain as ``_midrad.inflate`` does)."""
     n = c.shape[0]
     out_c = np.empty(n)
     out_C = np.empty((n, n))
     out_L = np.empty((n, n))
     work = np.zeros((4, max(n, 4), n))
-    r = fuse_one(
-        c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out_c, out_C, out_L, work
-    )
+    r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out_c, out_C, work)
     valid = check_ellipsoid(out_c, out_C, out_L)
     return out_c, out_C, out_L, valid, r
+
+
+@njit(cache=True, nogil=True, _nrt=False)
+def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, work, start, stop):
+    """The batch loop, compiled without numba's reference counting (``_nrt=False``): every
+    per-instance view (``c[i]``, ``work[0, 0]``, ...) otherwise increments and decrements the
+    parent array's counter atomically, a cache line both threads fight over (measured: half
+    the time per instance). Nothing here allocates; the views live no longer than the call."""
+    out_c, out_C, code, case, cons, lam_out, empty, margin = out
+    for i in range(start, stop):
+        r = fuse_one(
+            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], idx, steep, midp,
+            out_c[i], out_C[i], work,
+        )  # fmt: skip
+        code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
 
 
 @njit(cache=True, nogil=True)
 def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, start, stop):
     """``fuse_one`` on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller). ``out`` = (centres, shapes, chol, code, case, consistency, lam, empty, margin)."""
-    out_c, out_C, out_L, code, case, cons, lam_out, empty, margin = out
+    caller). ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin)."""
     n = c.shape[1]
     work = np.zeros((4, max(n, 4), n))
-    for i in range(start, stop):
-        r = fuse_one(
-            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], idx, steep, midp,
-            out_c[i], out_C[i], out_L[i], work,
-        )  # fmt: skip
-        code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
+    _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, work, start, stop)

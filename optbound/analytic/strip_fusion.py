@@ -14,9 +14,11 @@ interval ``[b - 1, b + 1]`` for a^T x with the ellipsoid's ``[a^T c - sqrt(G), a
 Conventions of this module (numerical decisions, all conservative):
 
 - Guarantee: the result's floats, read exactly, contain E ∩ S. The member is evaluated in the
-  local frame of E's centre with certified error bounds (``eps = b - a^T c`` in twice the
-  working precision, everything else in midpoint-radius arithmetic) and inflated by a
-  certified margin (``optbound.analytic._midrad``); ``margin`` reports it. Near-degenerate
+  local frame of E's centre with certified error bounds (``eps = b - a^T c``, ``C a`` and
+  each entry of the shape in twice the working precision, the centre in midpoint-radius
+  arithmetic) and inflated by a certified margin (``optbound.analytic._midrad``); ``margin``
+  reports it. It is about ``U cond(result)`` (each shape entry is rounded once; storing the
+  result as floats alone costs that much in its thin direction). Near-degenerate
   results are widened to the output domain (``optbound.sets._domain``), never refused.
 - ``clip=True`` first clips each plane to the ellipsoid's (outward) extent: a plane missing the
   ellipsoid moves to the tangent plane. This does not change E ∩ S but shrinks the result a lot
@@ -294,8 +296,9 @@ def intersect_strip_batch(
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    out = out[:2] + out[3:]  # no Cholesky factors: the batch returns bare arrays
     run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out)
-    out_c, out_C, _, code, case, cons, lam_used, empty, margin = out
+    out_c, out_C, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)
     if bad.size:
         _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
