@@ -48,9 +48,36 @@ def khachiyan_weights(
     P = np.asarray(points, dtype=float)
     m = P.shape[0]
     Q = np.ascontiguousarray(np.hstack([P, np.ones((m, 1))]))  # rows q_i
-    u = np.full(m, 1.0 / m)
+    u = np.zeros(m)
+    core = core_set(P)
+    u[core] = 1.0 / core.size
     converged = _iterate(Q, u, float(tol), int(max_iter), _REFRESH)
     return u, bool(converged)
+
+
+def core_set(points: np.ndarray) -> np.ndarray:
+    """Indices of the Kumar-Yildirim initial core set: at most 2n points whose ellipsoid is
+    already within a factor ``n^2`` of the minimum volume [Kumar & Yildirim 2005, Lemma 3.1].
+
+    For each of n directions, orthogonal to the differences of the pairs found so far, the
+    points with the largest and the smallest coordinate along it.
+    """
+    P = np.asarray(points, dtype=float)
+    n = P.shape[1]
+    basis = np.zeros((0, n))
+    chosen: list[int] = []
+    for _ in range(n):
+        residual = np.eye(n) - basis.T @ basis  # projector off the differences found so far
+        b = residual[int(np.argmax(np.sum(residual * residual, axis=0)))]
+        along = P @ b
+        top, bottom = int(np.argmax(along)), int(np.argmin(along))
+        chosen += [top, bottom]
+        diff = residual @ (P[top] - P[bottom])
+        size = float(np.linalg.norm(diff))
+        if size == 0.0:  # the points are flat: no direction left to add
+            break
+        basis = np.vstack([basis, diff / size])
+    return np.unique(np.array(chosen))
 
 
 @njit(cache=True)

@@ -34,13 +34,24 @@ gave a volume bound 2.2 times too low that way). The points are:
    met (the level is convex, so the far end of the segment is the higher one; on a polytope
    this reaches a vertex), and (b) a ray from ``x0`` past the point shifted uphill or at
    random (for curved boundaries); a trial replaces the point when it lies farther out.
+   Only the climbing points go on: of rays that climbed to one vertex one is kept, and a point
+   that has not risen (by ``_MIN_RISE``) for ``_PATIENCE`` rounds stops unless it is near the
+   top level (``_TOP_BAND``): most of the thousands of rays stall at low vertices after a few
+   rounds (in 2-D all but one per vertex after two), and the rounds cost what the points do.
 
 Every point is pulled back toward its start by a relative ``_SHRINK`` and kept only if every
 quadratic is negative there by more than a bound on its float64 rounding, so every point is in
 the set. For a non-convex set the rays see only what is visible from ``x0``, which still gives
 a valid (if looser) bound. Near-duplicates (rays that climbed to one vertex) are merged, and
 Khachiyan's weights are computed on a growing working set of the points farthest out (zero
-weight elsewhere), since it crawls on thousands of points near one boundary.
+weight elsewhere), started from the Kumar-Yildirim core set
+(``optbound.optimal.khachiyan.core_set``), which also keeps the working set full-dimensional.
+
+Cost (``python -m benchmarks.lower_bound_cost``, the recursive family's instances): about 3 to
+12 times the ``outer_ellipsoid`` call without the bound, per (n, k) median, see
+``optbound.optimal.intersection.outer_ellipsoid``. What remains is the search of point 3 in
+n >= 3: its thousands of rays are what the bound's quality rests on there (halving them lowers
+the 4-D bounds by 0.7 % on average and up to 3 %), so they were not cut.
 """
 
 from __future__ import annotations
@@ -53,14 +64,16 @@ from numba import njit
 
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
-from optbound.optimal.khachiyan import covariance, khachiyan_weights
+from optbound.optimal.khachiyan import core_set, covariance, khachiyan_weights
 from optbound.sets import Ellipsoid, QuadraticSet
 from optbound.sets import _validate as v
 
-_SAMPLES = 20_000
-_ROUNDS = 3
+_SAMPLES = 2_000  # first batch of samples for x0; four times more while too few are inside
+_MAX_SAMPLES = 512_000
 _CANDIDATES = 200  # interior samples whose depth is compared when choosing x0
 _RAYS_PER_DIM = 300
+# In 2-D the climbs collapse onto the polygon's few vertices: fewer rays find them all.
+_RAYS_PER_DIM_2D = 50
 _SEARCH_ROUNDS = 20  # uphill moves along the boundary, alternating with random ones
 _FIRST_STEP = 0.3  # move length relative to the ray's length; doubled on success, else halved
 _REFIT_EVERY = 5  # rounds between refits of the enclosing ellipsoid that defines 'uphill'
@@ -72,7 +85,11 @@ _ACTIVE_RTOL = 1e-7
 _FACE_SWEEPS = 3
 _WEIGHT_TOL = 1e-6
 _WEIGHT_STEPS = 5_000  # any weights give a valid bound; more steps only tighten it
+_TRACE_STEPS = 20_000  # Frank-Wolfe's rate is 1/steps; compiled, a step costs microseconds
 _SEARCH_WEIGHT_STEPS = 500  # a rough enclosing ellipsoid is enough to rank points
+_PATIENCE = 3  # rounds without rising after which a point low in the level stops climbing
+_TOP_BAND = 0.9  # "near the top": level above this fraction of the highest
+_MIN_RISE = 1e-3  # a relative rise of the level below this does not count
 
 
 def _stack(quadratics: Sequence[QuadraticSet]) -> np.ndarray:
@@ -87,7 +104,25 @@ def _lifted(X: np.ndarray) -> np.ndarray:
 
 def _forms(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
     """``U_m^T F_k V_m`` for every row pair m and form k, shape (m, k)."""
-    return np.einsum("kmj,mj->mk", U @ F, V)  # U @ F broadcasts to (k, m, n + 1), on BLAS
+    return _forms_loop(np.ascontiguousarray(U), np.ascontiguousarray(F), np.ascontiguousarray(V))
+
+
+@njit(cache=True)
+def _forms_loop(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
+    # Plain loops: numpy's einsum / batched matmul cost more in overhead at n + 1 <= 7.
+    m, d = U.shape
+    k = F.shape[0]
+    out = np.empty((m, k))
+    for p in range(m):
+        for i in range(k):
+            total = 0.0
+            for a in range(d):
+                row = 0.0
+                for b in range(d):
+                    row += F[i, a, b] * V[p, b]
+                total += U[p, a] * row
+            out[p, i] = total
+    return out
 
 
 def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
@@ -122,12 +157,14 @@ def _interior_point(F: np.ndarray, outer: Ellipsoid, gen: np.random.Generator) -
     Depth is the shortest exit along the outer ellipsoid's axes (in its own metric, so that
     elongated sets are judged fairly); candidates are its centre and uniform samples.
     """
-    for attempt in range(_ROUNDS):
-        X = np.vstack([outer.center, outer.sample(_SAMPLES * 4**attempt, gen)])
-        inside = X[_inside(F, X)]
-        if inside.shape[0] > 0:
-            break
-    else:
+    found = [outer.center[None, :]] if _inside(F, outer.center[None, :])[0] else []
+    size = _SAMPLES
+    while sum(x.shape[0] for x in found) < _CANDIDATES and size <= _MAX_SAMPLES:
+        X = outer.sample(size, gen)
+        found.append(X[_inside(F, X)])
+        size *= 4
+    inside = np.vstack(found) if found else np.empty((0, outer.dim))
+    if inside.shape[0] == 0:
         raise ValueError("sampling found no point of the set for a lower bound")
     candidates = inside[:_CANDIDATES]
     axes = np.vstack([outer.chol.T, -outer.chol.T])
@@ -175,10 +212,18 @@ def _unit_rows(Z: np.ndarray) -> np.ndarray:
 def _distinct(points: np.ndarray) -> np.ndarray:
     """One point of each cluster closer than ``_MERGE_RTOL`` (relative to the spread): rays
     that climbed to one vertex nearly coincide, and make Khachiyan's matrix singular."""
-    spread = float(np.max(np.ptp(points, axis=0)))
-    keys = np.round((points - points.min(axis=0)) / (_MERGE_RTOL * spread))
-    _, first = np.unique(keys, axis=0, return_index=True)
-    return points[np.sort(first)]
+    return points[np.sort(_cluster_firsts(points, points))]
+
+
+def _cluster_firsts(points: np.ndarray, reference: np.ndarray) -> np.ndarray:
+    """Indices of the first row of each ``_MERGE_RTOL`` cluster of ``points`` (grid cells
+    relative to the spread of ``reference``)."""
+    spread = float(np.max(np.ptp(reference, axis=0)))
+    cells = np.round((points - reference.min(axis=0)) / (_MERGE_RTOL * spread))
+    # One integer key per row (a random linear hash of the cells; a collision only merges
+    # two points, which drops one valid point): np.unique on rows is several times slower.
+    keys = cells @ np.random.default_rng(0).uniform(1.0, 2.0, points.shape[1])
+    return np.unique(keys, return_index=True)[1]
 
 
 def _along_faces(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> np.ndarray:
@@ -233,7 +278,8 @@ def sample_set(
     n = outer.dim
     F = _stack(quadratics)
     x0 = _interior_point(F, outer, gen)
-    Z = np.vstack([np.eye(n), -np.eye(n), _unit_rows(gen.standard_normal((_RAYS_PER_DIM * n, n)))])
+    rays = (_RAYS_PER_DIM_2D if n == 2 else _RAYS_PER_DIM) * n
+    Z = np.vstack([np.eye(n), -np.eye(n), _unit_rows(gen.standard_normal((rays, n)))])
     first, _ = _cast(F, x0, Z, outer.chol)
     # The outer ellipsoid can be far longer than the set (the projection objective leaves the
     # other coordinates free): shape the rays again by the exits' own enclosing ellipsoid.
@@ -243,20 +289,43 @@ def sample_set(
     cols = list(dims) if dims else list(range(n))
     embed = np.eye(n)[cols]
     step = np.full(points.shape[0], _FIRST_STEP)
+    stalled = np.zeros(points.shape[0], dtype=int)
+    alive = np.arange(points.shape[0])
     for round_ in range(_SEARCH_ROUNDS):
         if round_ % _REFIT_EVERY == 0:
             # With the first exits, so that it never collapses onto the few vertices reached.
             fit = _distinct(np.vstack([start, points])[:, cols])
             mean, inv = _rough_mvee(validated_points(fit))
             level = _level(points[:, cols], mean, inv)
-        gradient = (points[:, cols] - mean) @ inv @ embed
-        index, new = _face_walk(F, points, _along_faces(F, points, gradient))
-        _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        shift = gradient @ chol if round_ % 2 == 0 else gen.standard_normal(points.shape)
-        index, new = _shifted_rays(F, x0, chol, points, shift, step)
-        success = _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        step = np.where(success, np.minimum(2.0 * step, 1.0), 0.5 * step)
+        alive = _still_climbing(points, level, alive, stalled)
+        if alive.size == 0:
+            break
+        sub, sub_level = points[alive], level[alive]
+        gradient = (sub[:, cols] - mean) @ inv @ embed
+        index, new = _face_walk(F, sub, _along_faces(F, sub, gradient))
+        _keep_higher(sub, sub_level, index, new, _level(new[:, cols], mean, inv))
+        shift = gradient @ chol if round_ % 2 == 0 else gen.standard_normal(sub.shape)
+        index, new = _shifted_rays(F, x0, chol, sub, shift, step[alive])
+        success = _keep_higher(sub, sub_level, index, new, _level(new[:, cols], mean, inv))
+        risen = sub_level > (1.0 + _MIN_RISE) * level[alive]
+        points[alive], level[alive] = sub, sub_level
+        step[alive] = np.where(success, np.minimum(2.0 * step[alive], 1.0), 0.5 * step[alive])
+        stalled[alive] = np.where(risen, 0, stalled[alive] + 1)
     return _distinct(np.vstack([start, points]))
+
+
+def _still_climbing(
+    points: np.ndarray, level: np.ndarray, alive: np.ndarray, stalled: np.ndarray
+) -> np.ndarray:
+    """The climbing points worth another round: one of each cluster (rays that climbed to one
+    vertex), and of the points that did not rise for ``_PATIENCE`` rounds only those near the
+    top level (they pin the enclosing ellipsoid; a low one that stalled is at a low vertex)."""
+    top = np.max(level)
+    keep = (stalled[alive] < _PATIENCE) | (level[alive] >= _TOP_BAND * top)
+    alive = alive[keep]
+    if alive.size == 0:
+        return alive
+    return alive[np.sort(_cluster_firsts(points[alive], points))]
 
 
 def _face_walk(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -305,7 +374,9 @@ def _enclosing_weights(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """
     n = points.shape[1]
     level = _level(points, *_rough_mvee(points))
-    active = np.argsort(level)[::-1][: _WORKING_PER_DIM * n]
+    # The core set keeps the working set full-dimensional: the points farthest out can all lie
+    # near one edge.
+    active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
     for round_ in range(_WORKING_ROUNDS):
         u, _ = khachiyan_weights(points[active], tol=_WEIGHT_TOL, max_iter=_WEIGHT_STEPS)
         mean, cov = covariance(points[active], u)
@@ -333,24 +404,50 @@ def trace_lower_bound(points: np.ndarray) -> float:
 
     The gradient of ``tr Sigma_u^{1/2}`` in ``u_i`` is ``(p_i - mu)^T Sigma^{-1/2} (p_i - mu) / 2``.
     """
-    m = points.shape[0]
+    P = np.ascontiguousarray(points, dtype=float)
+    return _frank_wolfe_trace(P, _TRACE_STEPS, _WEIGHT_TOL) ** 2
+
+
+@njit(cache=True)
+def _frank_wolfe_trace(P: np.ndarray, steps: int, tol: float) -> float:
+    """The best ``tr Sigma_u^{1/2}`` over Frank-Wolfe iterates from uniform weights (any u
+    gives a bound; the loop is compiled as each step is an n x n eigendecomposition)."""
+    m, n = P.shape
     u = np.full(m, 1.0 / m)
+    grad = np.empty(m)
     best = 0.0
-    for k in range(_WEIGHT_STEPS):
-        mean, cov = covariance(points, u)
+    for k in range(steps):
+        mean = np.zeros(n)
+        cov = np.zeros((n, n))
+        for i in range(m):
+            for a in range(n):
+                mean[a] += u[i] * P[i, a]
+                for b in range(n):
+                    cov[a, b] += u[i] * P[i, a] * P[i, b]
+        cov -= np.outer(mean, mean)
         lam, V = np.linalg.eigh(cov)
         lam = np.maximum(lam, 0.0)  # a PSD matrix's rounding can leave tiny negatives
-        value = float(np.sum(np.sqrt(lam)))
+        value = np.sum(np.sqrt(lam))
         best = max(best, value)
         inv_root = (V / np.sqrt(np.maximum(lam, 1e-300))) @ V.T
-        grad = 0.5 * _level(points, mean, inv_root)
-        j = int(np.argmax(grad))
-        if grad[j] - grad @ u <= _WEIGHT_TOL * value:  # Frank-Wolfe duality gap
+        j, average = 0, 0.0
+        for i in range(m):
+            total = 0.0
+            for a in range(n):
+                row = 0.0
+                for b in range(n):
+                    row += inv_root[a, b] * (P[i, b] - mean[b])
+                total += (P[i, a] - mean[a]) * row
+            grad[i] = 0.5 * total
+            average += u[i] * grad[i]
+            if grad[i] > grad[j]:
+                j = i
+        if grad[j] - average <= tol * value:  # Frank-Wolfe duality gap
             break
         step = 2.0 / (k + 3.0)
         u *= 1.0 - step
         u[j] += step
-    return best**2
+    return best
 
 
 def sampled_lower_bound(

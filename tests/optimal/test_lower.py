@@ -41,7 +41,7 @@ def test_sampled_points_are_in_the_set_and_reach_its_boundary():
     ring = QuadraticSet.from_parts(-np.eye(2), [0.0, 0.0], 0.25)  # |x| >= 0.5
     sets = [E, Strip.from_bounds([0.0, 1.0], 0.0, 2.0), ring]
     X = sample_set(lift(sets), E, rng=0)
-    assert X.shape[0] > 1000
+    assert X.shape[0] > 200  # start and climbed points of two casts of 104 rays
     assert np.all([s.contains(X, tol=0.0) for s in sets])
     assert np.max(E.level(X)) > 1.0 - 1e-6  # boundary points reach the ellipse
 
