@@ -85,8 +85,9 @@ _ACTIVE_RTOL = 1e-7
 _FACE_SWEEPS = 3
 _WEIGHT_TOL = 1e-6
 _WEIGHT_STEPS = 5_000  # any weights give a valid bound; more steps only tighten it
-_TRACE_STEPS = 20_000  # Frank-Wolfe's rate is 1/steps; compiled, a step costs microseconds
+_TRACE_STEPS = 20_000  # Frank-Wolfe steps (compiled: microseconds each)
 _SEARCH_WEIGHT_STEPS = 500  # a rough enclosing ellipsoid is enough to rank points
+_ROUGH_TOL = 1e-3
 _PATIENCE = 3  # rounds without rising after which a point low in the level stops climbing
 _TOP_BAND = 0.9  # "near the top": level above this fraction of the highest
 _MIN_RISE = 1e-3  # a relative rise of the level below this does not count
@@ -128,8 +129,29 @@ def _forms_loop(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
 def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Rows of X where every ``q_i`` is negative by more than its float64 rounding bound."""
     lifted = _lifted(X)
-    size = _forms(np.abs(lifted), np.abs(F), np.abs(lifted))
-    return np.all(_forms(lifted, F, lifted) < -4.0 * lifted.shape[1] * EPS * size, axis=1)
+    return _inside_loop(np.ascontiguousarray(F), np.abs(F), lifted, 4.0 * lifted.shape[1] * EPS)
+
+
+@njit(cache=True)
+def _inside_loop(F: np.ndarray, absF: np.ndarray, L: np.ndarray, rel: float) -> np.ndarray:
+    """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, per row ``x~`` of L (compiled: one
+    pass per point, stopping at the first form that fails)."""
+    m, d = L.shape
+    out = np.ones(m, dtype=np.bool_)
+    for p in range(m):
+        for i in range(F.shape[0]):
+            value, size = 0.0, 0.0
+            for a in range(d):
+                row, row_abs = 0.0, 0.0
+                for b in range(d):
+                    row += F[i, a, b] * L[p, b]
+                    row_abs += absF[i, a, b] * abs(L[p, b])
+                value += L[p, a] * row
+                size += abs(L[p, a]) * row_abs
+            if not value < -rel * size:
+                out[p] = False
+                break
+    return out
 
 
 def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
@@ -138,17 +160,37 @@ def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
     ``X0`` is one point (n,) or one per direction (m, n). ``q(x0 + t d) = a t^2 + 2 b t + g``
     with ``g = q(x0) <= 0``.
     """
-    lifted = _lifted(np.broadcast_to(X0, D.shape))
+    lifted = _lifted(np.ascontiguousarray(np.broadcast_to(X0, D.shape)))
     D1 = np.hstack([D, np.zeros((D.shape[0], 1))])
-    a, b, g = _forms(D1, F, D1), _forms(D1, F, lifted), _forms(lifted, F, lifted)
-    disc = b * b - a * g
-    root = np.sqrt(np.maximum(disc, 0.0))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        # a < 0: the concave q rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0.
-        concave = np.where((b > 0) & (disc >= 0), (b - root) / -a, np.inf)
-        quad = np.where(a > 0, (root - b) / a, concave)
-        t = np.where(a == 0, np.where(b > 0, -g / (2 * b), np.inf), quad)
-    return np.min(np.where(t >= 0, t, np.inf), axis=1)
+    return _first_exit_loop(np.ascontiguousarray(F), lifted, D1)
+
+
+@njit(cache=True)
+def _first_exit_loop(F: np.ndarray, L: np.ndarray, D1: np.ndarray) -> np.ndarray:
+    m, d = L.shape
+    out = np.full(m, np.inf)
+    for p in range(m):
+        for i in range(F.shape[0]):
+            a, b, g = 0.0, 0.0, 0.0
+            for r in range(d):
+                row_l, row_d = 0.0, 0.0
+                for c in range(d):
+                    row_l += F[i, r, c] * L[p, c]
+                    row_d += F[i, r, c] * D1[p, c]
+                a += D1[p, r] * row_d
+                b += D1[p, r] * row_l
+                g += L[p, r] * row_l
+            disc = b * b - a * g
+            root = np.sqrt(max(disc, 0.0))
+            if a == 0.0:
+                t = -g / (2.0 * b) if b > 0.0 else np.inf
+            elif a > 0.0:
+                t = (root - b) / a
+            else:  # concave q: it rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0
+                t = (b - root) / -a if (b > 0.0 and disc >= 0.0) else np.inf
+            if t >= 0.0 and t < out[p]:
+                out[p] = t
+    return out
 
 
 def _interior_point(F: np.ndarray, outer: Ellipsoid, gen: np.random.Generator) -> np.ndarray:
@@ -186,18 +228,13 @@ def _cast(
     return points[kept], finite[kept]
 
 
-def _rough_fit(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _rough_fit(
+    points: np.ndarray, level: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """Centre and weighted covariance of a rough minimum-volume ellipsoid around the points
-    (its shape is n times the covariance)."""
-    u, _ = khachiyan_weights(points, tol=1e-3, max_iter=_SEARCH_WEIGHT_STEPS)
-    return covariance(points, u)
-
-
-def _rough_mvee(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Centre and inverse covariance of ``_rough_fit``; its level is
-    ``(x - mean)^T inv (x - mean)`` up to a constant factor."""
-    mean, cov = _rough_fit(points)
-    return mean, np.linalg.inv(cov)
+    (its shape is n times the covariance); ``level`` as in ``_enclosing_weights``."""
+    active, u = _enclosing_weights(points, level, _ROUGH_TOL, _SEARCH_WEIGHT_STEPS)
+    return covariance(points[active], u)
 
 
 def _level(X: np.ndarray, mean: np.ndarray, inv: np.ndarray) -> np.ndarray:
@@ -283,11 +320,13 @@ def sample_set(
     first, _ = _cast(F, x0, Z, outer.chol)
     # The outer ellipsoid can be far longer than the set (the projection objective leaves the
     # other coordinates free): shape the rays again by the exits' own enclosing ellipsoid.
-    chol = np.linalg.cholesky(_rough_fit(validated_points(_distinct(first)))[1])
+    mean, cov = _rough_fit(validated_points(_distinct(first)))
+    chol = np.linalg.cholesky(cov)
     start = np.vstack([first, _cast(F, x0, Z, chol)[0]])
     points = start.copy()
     cols = list(dims) if dims else list(range(n))
     embed = np.eye(n)[cols]
+    mean, inv = mean[cols], np.linalg.inv(cov[np.ix_(cols, cols)])  # ranks the first refit
     step = np.full(points.shape[0], _FIRST_STEP)
     stalled = np.zeros(points.shape[0], dtype=int)
     alive = np.arange(points.shape[0])
@@ -295,7 +334,8 @@ def sample_set(
         if round_ % _REFIT_EVERY == 0:
             # With the first exits, so that it never collapses onto the few vertices reached.
             fit = _distinct(np.vstack([start, points])[:, cols])
-            mean, inv = _rough_mvee(validated_points(fit))
+            mean, cov = _rough_fit(fit, _level(fit, mean, inv))  # ranked by the last fit
+            inv = np.linalg.inv(cov)
             level = _level(points[:, cols], mean, inv)
         alive = _still_climbing(points, level, alive, stalled)
         if alive.size == 0:
@@ -364,24 +404,32 @@ def _keep_higher(
     return success
 
 
-def _enclosing_weights(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _enclosing_weights(
+    points: np.ndarray,
+    level: np.ndarray | None = None,
+    tol: float = _WEIGHT_TOL,
+    steps: int = _WEIGHT_STEPS,
+) -> tuple[np.ndarray, np.ndarray]:
     """Khachiyan's weights, computed on a working set of the points farthest out.
 
     Khachiyan's algorithm crawls on thousands of points near one boundary; the weights of a
     working set (zero elsewhere) are weights of all points, and the set grows by the points
-    its ellipsoid leaves out until none is left out by more than the tolerance. Returns the
-    working set's indices and its weights.
+    its ellipsoid leaves out until none is left out by more than the tolerance. ``level``
+    ranks the points for the first working set (default: by their covariance).
+    Returns the working set's indices and its weights.
     """
     n = points.shape[1]
-    level = _level(points, *_rough_mvee(points))
+    if level is None:  # the points' own spread (uniform weights) ranks them well enough
+        mean, cov = covariance(points, np.full(points.shape[0], 1.0 / points.shape[0]))
+        level = _level(points, mean, np.linalg.pinv(cov))
     # The core set keeps the working set full-dimensional: the points farthest out can all lie
     # near one edge.
     active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
     for round_ in range(_WORKING_ROUNDS):
-        u, _ = khachiyan_weights(points[active], tol=_WEIGHT_TOL, max_iter=_WEIGHT_STEPS)
+        u, _ = khachiyan_weights(points[active], tol=tol, max_iter=steps)
         mean, cov = covariance(points[active], u)
         level = _level(points, mean, np.linalg.inv(n * cov))
-        outside = np.setdiff1d(np.flatnonzero(level > 1.0 + _WEIGHT_TOL), active)
+        outside = np.setdiff1d(np.flatnonzero(level > 1.0 + tol), active)
         if outside.size == 0 or round_ == _WORKING_ROUNDS - 1:
             break
         worst = outside[np.argsort(level[outside])[::-1][: _WORKING_PER_DIM * n]]
