@@ -1,6 +1,9 @@
 """Khachiyan's algorithm for the minimum-volume enclosing ellipsoid (an independent check).
 
-Khachiyan (1996) with the away steps of Todd & Yildirim (2007). Lift the points to
+Khachiyan (1996) with the away steps of Todd & Yildirim (2007), started from the initial core
+set of Kumar & Yildirim (2005) (``core_set``: at most 2n points) instead of uniform weights:
+from uniform weights every interior point needs an away step of its own before the tolerance
+can hold, so the iteration count grew with the number of points. Lift the points to
 ``q_i = [p_i; 1]`` and iterate on weights ``u`` in the simplex. With
 ``X(u) = sum_i u_i q_i q_i^T`` and ``w_i = q_i^T X(u)^{-1} q_i`` (``d = n + 1``):
 

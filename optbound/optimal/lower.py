@@ -47,11 +47,12 @@ Khachiyan's weights are computed on a growing working set of the points farthest
 weight elsewhere), started from the Kumar-Yildirim core set
 (``optbound.optimal.khachiyan.core_set``), which also keeps the working set full-dimensional.
 
-Cost (``python -m benchmarks.lower_bound_cost``, the recursive family's instances): about 3 to
-12 times the ``outer_ellipsoid`` call without the bound, per (n, k) median, see
-``optbound.optimal.intersection.outer_ellipsoid``. What remains is the search of point 3 in
-n >= 3: its thousands of rays are what the bound's quality rests on there (halving them lowers
-the 4-D bounds by 0.7 % on average and up to 3 %), so they were not cut.
+Cost, as a ratio to the ``outer_ellipsoid`` call without the bound (median per instance of
+the recursive family, ``python -m benchmarks.lower_bound_cost``): about 3 at n = 2, k = 10,
+6 at n = 3, k = 10 and 5 at n = 4, k = 50 (24, 20 and 10 before the core-set start and the
+pruned climb). What remains is the climb of point 3 from n = 3 on, whose thousands of rays
+the bound's quality rests on (``_RAYS_PER_DIM``: 300 rays per dimension lowered the 4-D
+bounds of the recursive family by 0.4 % on average and 5 % at most against 450).
 """
 
 from __future__ import annotations
@@ -71,9 +72,10 @@ from optbound.sets import _validate as v
 _SAMPLES = 2_000  # first batch of samples for x0; four times more while too few are inside
 _MAX_SAMPLES = 512_000
 _CANDIDATES = 200  # interior samples whose depth is compared when choosing x0
-_RAYS_PER_DIM = 300
-# In 2-D the climbs collapse onto the polygon's few vertices: fewer rays find them all.
-_RAYS_PER_DIM_2D = 50
+# Random rays per dimension, by dimension (the last entry for all higher ones): in 2-D the
+# climbs collapse onto the polygon's few vertices; the vertices a climb can end at grow in
+# number with the dimension (module docstring, "Cost").
+_RAYS_PER_DIM = {2: 50, 3: 200, 4: 450}
 _SEARCH_ROUNDS = 20  # uphill moves along the boundary, alternating with random ones
 _FIRST_STEP = 0.3  # move length relative to the ray's length; doubled on success, else halved
 _REFIT_EVERY = 5  # rounds between refits of the enclosing ellipsoid that defines 'uphill'
@@ -315,7 +317,7 @@ def sample_set(
     n = outer.dim
     F = _stack(quadratics)
     x0 = _interior_point(F, outer, gen)
-    rays = (_RAYS_PER_DIM_2D if n == 2 else _RAYS_PER_DIM) * n
+    rays = _RAYS_PER_DIM[min(max(n, 2), max(_RAYS_PER_DIM))] * n
     Z = np.vstack([np.eye(n), -np.eye(n), _unit_rows(gen.standard_normal((rays, n)))])
     first, _ = _cast(F, x0, Z, outer.chol)
     # The outer ellipsoid can be far longer than the set (the projection objective leaves the
