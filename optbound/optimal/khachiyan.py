@@ -36,9 +36,15 @@ def covariance(points: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarra
 
 
 def khachiyan_weights(
-    points: np.ndarray, tol: float = 1e-7, max_iter: int = 100_000
+    points: np.ndarray,
+    tol: float = 1e-7,
+    max_iter: int = 100_000,
+    start: np.ndarray | None = None,
 ) -> tuple[np.ndarray, bool]:
     """The weights ``u`` (simplex, ``(m,)``) of Khachiyan's algorithm with away steps.
+
+    ``start``: initial weights (in the simplex, their ellipsoid full-dimensional), e.g. the
+    answer for a subset of the points padded with zeros; default: the core set's.
 
     Returns the weights and whether the tolerance was reached within ``max_iter`` steps (any
     weights still give the lower bound of ``optbound.optimal.lower``).
@@ -51,9 +57,12 @@ def khachiyan_weights(
     P = np.asarray(points, dtype=float)
     m = P.shape[0]
     Q = np.ascontiguousarray(np.hstack([P, np.ones((m, 1))]))  # rows q_i
-    u = np.zeros(m)
-    core = core_set(P)
-    u[core] = 1.0 / core.size
+    if start is None:
+        u = np.zeros(m)
+        core = core_set(P)
+        u[core] = 1.0 / core.size
+    else:
+        u = np.array(start, dtype=float)
     converged = _iterate(Q, u, float(tol), int(max_iter), _REFRESH)
     return u, bool(converged)
 

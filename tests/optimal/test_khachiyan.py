@@ -47,3 +47,10 @@ def test_core_set_start_converges_in_fewer_steps_than_points():
     X = np.random.default_rng(4).standard_normal((5000, 3))
     u, converged = khachiyan_weights(X, tol=1e-6, max_iter=2000)
     assert converged and np.count_nonzero(u) < 100
+
+
+def test_a_converged_start_needs_no_step():
+    X = np.random.default_rng(5).standard_normal((300, 3))
+    u, _ = khachiyan_weights(X, tol=1e-6)
+    again, converged = khachiyan_weights(X, tol=1e-6, max_iter=1, start=u)
+    assert converged and np.array_equal(again, u)

@@ -111,7 +111,7 @@ def _polytope(n: int, k: int, seed: int) -> tuple[list, np.ndarray]:
     return [Ellipsoid(np.zeros(n), radius**2 * np.eye(n)), *strips], V
 
 
-# Measured (seeds 0-2): lower bound / exact >= 1 - 2e-9 in 2-D, 0.9993 in 3-D, 0.992 in 4-D
+# Measured (seeds 0-2): lower bound / exact >= 1 - 2e-9 in 2-D, 0.999 in 3-D, 0.994 in 4-D
 # (the sampling code before the core-set Khachiyan: 0.9985, 0.9972, 0.973).
 @pytest.mark.parametrize(("n", "k", "rtol"), [(2, 5, 1e-6), (3, 6, 2e-3), (4, 6, 3e-2)])
 @pytest.mark.parametrize("seed", [0, 1, 2])
