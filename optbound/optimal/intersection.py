@@ -275,10 +275,10 @@ def outer_ellipsoid(
         bound on points of the set pushed toward its extreme points; see
         ``optbound.optimal.lower``). Cost, as a ratio to the same call without it (median
         per instance, recursive-family instances, ``python -m benchmarks.lower_bound_cost``):
-        about 3 at n = 2, k = 10; 6 at n = 3, k = 10; 5 at n = 4, k = 50 (it was 24, 20 and
-        10 before the core-set start of Khachiyan's iteration and the pruned climb). What
-        remains is mostly the search for the set's extreme points, on which the bound's
-        quality rests from n = 3 on.
+        about 4 at n = 2, k = 10; 7 at n = 3, k = 10; 5 at n = 4, k = 50 (17, 18 and 12 in the
+        same run for the code before the core-set start of Khachiyan's iteration and the
+        pruned climb; 2-core VM at load 4). What remains is mostly the search for the set's
+        extreme points, on which the bound's quality rests from n = 3 on.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 
