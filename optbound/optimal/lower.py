@@ -54,10 +54,11 @@ weight elsewhere), started from the Kumar-Yildirim core set
 
 Cost, as a ratio to the ``outer_ellipsoid`` call without the bound (median per instance of
 the recursive family, ``python -m benchmarks.lower_bound_cost``): about 4 at n = 2, k = 10,
-7 at n = 3, k = 10 and 5 at n = 4, k = 50 (17, 18 and 12 in the same run before the
-core-set start, the pruned climb and the polish; 2-core VM at load 4). What remains is the climb of point 3 from n = 3 on, whose thousands of rays
-the bound's quality rests on (``_RAYS_PER_DIM``: 300 rays per dimension lowered the 4-D
-bounds of the recursive family by 0.4 % on average and 5 % at most against 450).
+7 at n = 3, k = 10 and 5 at n = 4, k = 50 (17, 18 and 12 in the same run before the core-set
+start, the pruned climb and the polish; 2-core VM at load 4). What remains is the climb of
+point 3 from n = 3 on, whose thousands of rays the bound's quality rests on
+(``_RAYS_PER_DIM``: 300 rays per dimension lowered the 4-D bounds of the recursive family by
+0.4 % on average and 5 % at most against 450).
 """
 
 from __future__ import annotations
