@@ -273,12 +273,12 @@ def outer_ellipsoid(
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
         bound on points of the set pushed toward its extreme points; see
-        ``optbound.optimal.lower``). Cost: about 10 to 20 times the call without it, e.g.
-        0.09 s against 7 ms (2-D, 10 strips), 0.16 s against 8 ms (3-D, 10 strips), 0.62 s
-        against 62 ms (4-D, 50 strips), medians on the shared 2-core development VM at load
-        average 2.4 (``python -m benchmarks.lower_bound_cost``; before its inner loops were
-        compiled with numba it was 1.6 to 3 times slower). Leave it off unless the bracket is
-        needed.
+        ``optbound.optimal.lower``). Cost, as a ratio to the same call without it (median
+        per instance, recursive-family instances, ``python -m benchmarks.lower_bound_cost``):
+        about 4 at n = 2, k = 10; 7 at n = 3, k = 10; 5 at n = 4, k = 50 (17, 18 and 12 in the
+        same run for the code before the core-set start of Khachiyan's iteration and the
+        pruned climb; 2-core VM at load 4). What remains is mostly the search for the set's
+        extreme points, on which the bound's quality rests from n = 3 on.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from optbound.optimal.khachiyan import covariance, khachiyan_mvee, khachiyan_weights
+from optbound.optimal.khachiyan import core_set, covariance, khachiyan_mvee, khachiyan_weights
 
 
 def test_square_corners_give_the_circumcircle():
@@ -31,3 +31,26 @@ def test_non_convergence_raises():
     assert not khachiyan_weights(X, tol=1e-12, max_iter=3)[1]
     with pytest.raises(RuntimeError, match="converge"):
         khachiyan_mvee(X, tol=1e-12, max_iter=3)
+
+
+def test_core_set_is_small_and_full_dimensional():
+    X = np.random.default_rng(3).standard_normal((500, 4))
+    core = core_set(X)
+    assert core.size <= 8 and np.unique(core).size == core.size
+    assert np.linalg.matrix_rank(X[core] - X[core[0]]) == 4
+
+
+def test_core_set_start_converges_in_fewer_steps_than_points():
+    # From uniform weights every interior point's weight must be removed by an away step of
+    # its own before the tolerance can hold (> 4000 steps here); from the core set it need
+    # never be given one.
+    X = np.random.default_rng(4).standard_normal((5000, 3))
+    u, converged = khachiyan_weights(X, tol=1e-6, max_iter=2000)
+    assert converged and np.count_nonzero(u) < 100
+
+
+def test_a_converged_start_needs_no_step():
+    X = np.random.default_rng(5).standard_normal((300, 3))
+    u, _ = khachiyan_weights(X, tol=1e-6)
+    again, converged = khachiyan_weights(X, tol=1e-6, max_iter=1, start=u)
+    assert converged and np.array_equal(again, u)
