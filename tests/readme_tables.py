@@ -92,6 +92,28 @@ def _speed_analytic() -> str:
     )
 
 
+def _margin() -> str:
+    """The certified margins of the analytic updates against the float-storage floor."""
+    from benchmarks.speed_analytic import margin_distribution
+    from optbound.report.tables import markdown_table
+
+    rows = [
+        (op, f"{cond:.0e}", f"{med:.1e}", f"{p99:.1e}", f"{top:.1e}", f"{cond_out:.1e}",
+         f"{floor:.2f}")
+        for op, cond, med, p99, top, cond_out, floor in margin_distribution()
+    ]  # fmt: skip
+    headers = (
+        "operation",
+        "input cond",
+        "median",
+        "99 %",
+        "max",
+        "median cond(result)",
+        "median margin / (U cond(result))",
+    )
+    return "Output of `python -m tests.readme_tables margin`:\n\n" + markdown_table(headers, rows)
+
+
 def _localization() -> str:
     """The localization family's BH instance (tiny suite, seed 0): every bound's area ratio."""
     import os
@@ -139,6 +161,7 @@ GENERATORS: dict[str, Callable[[], str]] = {
     "sivia-codac": _sivia_codac,
     "localization": _localization,
     "speed-analytic": _speed_analytic,
+    "margin": _margin,
 }
 
 
