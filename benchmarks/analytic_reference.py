@@ -55,10 +55,10 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
 def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same Newton solver as ours."""
     n = c1.shape[0]
-    L1, L2, A, L, X = work[0], work[1], work[2], work[3], work[4]
+    L1, L2, M, Y, Z = work[0], work[1], work[2], work[3], work[4]
     cholesky(C1, L1)
     cholesky(C2, L2)
-    p = p_volume(C1, C2, L1, L2, A, L, X)
+    p = p_volume(C1, C2, L1, L2, M, Y, Z)
     for i in range(n):
         out_c[i] = c1[i] + c2[i]
         for j in range(n):
