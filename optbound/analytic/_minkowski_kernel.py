@@ -29,7 +29,7 @@ NEWTON_MAX_STEPS = 100
 NEWTON_RTOL = 1e-9
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def reduce_pencil(A, LB, M, Y, r):
     """``M = LB^{-1} A LB^{-T}`` (A symmetric, its lower triangle used; LB lower triangular):
     the standard form of the pencil (A, LB LB^T), same eigenvalues. Y (n, n) and r (n,) are
@@ -51,7 +51,7 @@ def reduce_pencil(A, LB, M, Y, r):
             M[i, j] = s * r[i]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def tridiagonalize(M, v, w):
     """Householder reduction of the symmetric M (lower triangle) to tridiagonal form T in
     place: T's diagonal on M's, its sub-diagonal on M's (orthogonal similarity, same
@@ -90,7 +90,7 @@ def tridiagonalize(M, v, w):
                 M[i, j] -= v[i] * w[j] + w[i] * v[j]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def h_tridiagonal(T, q):
     """``h(q) = q (q + 1) tr((T + q I)^{-1}) - n`` and h'(q) for the tridiagonal T (diagonal
     and sub-diagonal of the array T), in O(n), or (nan, nan) if T + q I is not numerically
@@ -130,7 +130,7 @@ def h_tridiagonal(T, q):
     return qq * f - n, (2.0 * q + 1.0) * f + qq * df
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def h_shifted(A, B, LB, q, S, L, W):
     """h(q) and h'(q) (module docstring) from the Cholesky factor L of ``S = A + q B``:
     with ``W = L^{-1} LB`` (LB the Cholesky factor of B), ``tr(S^{-1} B) = ||W||_F^2`` and
@@ -163,7 +163,7 @@ def h_shifted(A, B, LB, q, S, L, W):
     return qq * t1 - n, (2.0 * q + 1.0) * t1 - qq * t2
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def newton(shifted, A, B, LB, T, L, X, q, hi):
     """Root of the increasing h in ``(0, hi]`` by Newton's method safeguarded by a bracket,
     started at q in (0, hi]; the result is finite and > 0. h is :func:`h_tridiagonal` on T,
@@ -199,7 +199,7 @@ def newton(shifted, A, B, LB, T, L, X, q, hi):
     return q
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def gershgorin_max(T) -> float:
     """Gershgorin's upper bound on the largest eigenvalue of the tridiagonal T."""
     n = T.shape[0]
@@ -214,32 +214,40 @@ def gershgorin_max(T) -> float:
     return big
 
 
-@njit(cache=True, error_model="numpy")
-def p_volume(C1, C2, L1, L2, M, Y, Z):
-    """The volume-optimal p (module docstring): L1, L2 are the Cholesky factors of C1, C2;
-    M, Y, Z are (n, n) work space.
-
-    Oriented so that the solved root is not small: if ``p0 = (det C1 / det C2)^(1 / 2n)``
-    (the root for equal eigenvalues) is below 1, the pencil is swapped to (C2, C1), whose root
-    is 1 / p (for p << 1, h = p (p + 1) tr(...) - n would lose the digits of p to
-    cancellation). Stage 1 solves on the tridiagonal form in O(n) per step; stage 2 polishes
-    with :func:`h_shifted` (usually one evaluation, which confirms the root), since the
-    standard form loses accuracy when both shapes are ill-conditioned."""
-    n = C1.shape[0]
-    p0 = 1.0
-    for i in range(n):
-        p0 *= (L1[i, i] / L2[i, i]) ** (1.0 / n)
-    A, B, LB, q = C1, C2, L2, p0
-    if p0 < 1.0:
-        A, B, LB, q = C2, C1, L1, 1.0 / p0
+@njit(cache=True, error_model="numpy", inline="always")
+def root_oriented(A, B, LB, q, M, Y, Z):
+    """Root of h for the pencil (A, B), LB the Cholesky factor of B, from the start q > 0:
+    stage 1 on the tridiagonal form (O(n) per step), stage 2 polishing with
+    :func:`h_shifted` (usually one evaluation, which confirms the root), since the standard
+    form loses accuracy when both shapes are ill-conditioned. M, Y, Z are work space."""
     reduce_pencil(A, LB, M, Y, Z[0])
-    if n > 2:
+    if A.shape[0] > 2:
         tridiagonalize(M, Y[0], Y[1])
     # h(sqrt(l_max)) >= 0; the factor covers the rounding of T's eigenvalues (normwise).
     hi = np.sqrt(gershgorin_max(M)) * 1.01
     q = newton(False, A, B, LB, M, Y, Z, min(q, hi), hi)
-    q = newton(True, A, B, LB, M, Y, Z, q, hi)
-    return q if p0 >= 1.0 else 1.0 / q
+    return newton(True, A, B, LB, M, Y, Z, q, hi)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def p_volume(C1, C2, L1, L2, M, Y, Z):
+    """The volume-optimal p (module docstring): L1, L2 are the Cholesky factors of C1, C2;
+    M, Y, Z are (n, n) work space.
+
+    Oriented so that the solved root is not small: if ``p0 = sqrt(tr C1 / tr C2)`` (in
+    ``[sqrt(l_min), sqrt(l_max)]``, the root for equal eigenvalues) is below 1, the pencil is
+    swapped to (C2, C1), whose root is 1 / p (for p << 1, h = p (p + 1) tr(...) - n would lose
+    the digits of p to cancellation; a root p << 1 has every l_i <~ n p^2, so p0 <~ sqrt(n) p
+    is small too)."""
+    t1 = 0.0
+    t2 = 0.0
+    for i in range(C1.shape[0]):
+        t1 += C1[i, i]
+        t2 += C2[i, i]
+    p0 = np.sqrt(t1 / t2)
+    if p0 >= 1.0:
+        return root_oriented(C1, C2, L2, p0, M, Y, Z)
+    return 1.0 / root_oriented(C2, C1, L1, 1.0 / p0, M, Y, Z)
 
 
 @njit(cache=True)
