@@ -352,17 +352,25 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     return out_c, out_C, out_L, valid, r
 
 
+@njit(cache=True, nogil=True, _nrt=False)
+def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, stop):
+    """The batch loop, compiled without numba's reference counting (``_nrt=False``, as
+    ``_strip_kernel._fuse_loop``): every per-instance view otherwise increments and decrements
+    its parent's counter atomically, a cache line both threads fight over. Nothing here
+    allocates; the views live no longer than the call."""
+    out_c, out_C, code, p, margin = out
+    for i in range(start, stop):
+        r = sum_one(
+            c1[i], C1[i], c2[i], C2[i], mode, p_in[i], planar, heading, out_c[i], out_C[i], work
+        )
+        code[i], p[i], margin[i] = r
+
+
 @njit(cache=True, nogil=True)
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """``sum_one`` on instances ``start..stop`` (p_in broadcast to (B,) by the caller).
     ``out`` = (centres, shapes, code, p, margin); no Cholesky factors (the batch returns none).
     """
-    out_c, out_C, code, p, margin = out
     n = c1.shape[1]
     work = np.zeros((6, max(n, 1), n))
-    for i in range(start, stop):
-        r = sum_one(
-            c1[i], C1[i], c2[i], C2[i], mode, p_in[i], planar, heading,
-            out_c[i], out_C[i], work,
-        )  # fmt: skip
-        code[i], p[i], margin[i] = r
+    _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, stop)
