@@ -6,7 +6,8 @@ For any kappa in (0, 1), the ellipsoid with centre ``c1 + c2`` and shape
 - ``"volume"``: the exact minimizer of det. With p = (1 - kappa) / kappa it is the unique root
   of ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
   ``C1 v = l C2 v``), which is increasing in p and bracketed by ``[sqrt(min l), sqrt(max l)]``;
-  solved by safeguarded Newton to full precision. For two summands this member is the
+  solved by safeguarded Newton on a tridiagonal standard form, polished on ``C1 + p C2``
+  (``optbound.analytic._minkowski_kernel``). For two summands this member is the
   minimum-volume ellipsoid among all outer ellipsoids (Durieu, Walter & Polyak 2001).
 - ``"trace"``: ``kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))`` (closed form).
 - ``"size_xy_psi"``: the root of the cubic [HS96, eqs. (15)-(17)] for the size measure
