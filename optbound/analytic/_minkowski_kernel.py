@@ -184,10 +184,12 @@ def h_shifted(A, B, LB, q, S, L, W):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def newton(shifted, A, B, LB, T, L, X, q, hi, rtol):
+def newton(shifted, A, B, LB, T, L, X, q, hi):
+    rtol = NEWTON_RTOL if shifted else TRIDIAGONAL_RTOL
     """Root of the increasing h in ``(0, hi]`` by Newton's method safeguarded by a bracket,
     started at q in (0, hi]; the result is finite and > 0. h is :func:`h_tridiagonal` on T,
-    or :func:`h_shifted` on (A, B, LB) if ``shifted`` (T, L, X its work space).
+    or :func:`h_shifted` on (A, B, LB) if ``shifted`` (T, L, X its work space); its stopping
+    tolerance rtol is ``NEWTON_RTOL`` or ``TRIDIAGONAL_RTOL`` accordingly.
 
     A Newton step leaving the bracket is replaced by a geometric bisection (or a division by 4
     while the lower end is 0; a failed evaluation counts as h < 0: q too small). A step below
@@ -245,8 +247,8 @@ def root_oriented(A, B, LB, q, M, Y, Z):
         tridiagonalize(M, Y[0], Y[1])
     # h(sqrt(l_max)) >= 0; the factor covers the rounding of T's eigenvalues (normwise).
     hi = np.sqrt(gershgorin_max(M)) * 1.01
-    q = newton(False, A, B, LB, M, Y, Z, min(q, hi), hi, TRIDIAGONAL_RTOL)
-    return newton(True, A, B, LB, M, Y, Z, q, hi, NEWTON_RTOL)
+    q = newton(False, A, B, LB, M, Y, Z, min(q, hi), hi)
+    return newton(True, A, B, LB, M, Y, Z, q, hi)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
