@@ -165,3 +165,18 @@ def test_pivot_recurrence_gives_h_and_its_derivative(n, seed, log_q):
 def test_pivot_recurrence_reports_an_indefinite_shift():
     T = np.diag([1.0, -2.0, 3.0])
     assert np.isnan(K.h_tridiagonal(T, 1.0)[0])
+
+
+@pytest.mark.parametrize("s", [1e-8, 1e-30, 1e-60])
+def test_tiny_first_summand_gives_the_exact_member(s):
+    """C1 = s C2 (p = sqrt(s) << 1, the cancelling orientation; the former solver raised
+    ZeroDivisionError here at s = 1e-60): the volume of the result is that of the member with
+    the exact p."""
+    q, _ = np.linalg.qr(np.random.default_rng(3).standard_normal((3, 3)))
+    C = q @ q.T  # the identity up to rounding
+    C = 0.5 * (C + C.T)
+    out = analytic.minkowski_sum(Ellipsoid(np.zeros(3), s * C), Ellipsoid(np.zeros(3), C))
+    p = np.sqrt(s)
+    exact = (1 + p) * (s * C / p + C)
+    logvol = np.linalg.slogdet(out.ellipsoid.shape)[1]
+    assert logvol == pytest.approx(np.linalg.slogdet(exact)[1], abs=1e-13)
