@@ -17,11 +17,10 @@ _POOL: tuple[int, ThreadPoolExecutor] | None = None  # (owner pid, pool): a fork
 # inherits the pool object but not its threads, so it makes its own.
 
 
-def run_sliced(kernel, n_batch: int, *args, min_slice: int = MIN_SLICE) -> None:
-    """Call ``kernel(*args, start, stop)`` on slices covering ``range(n_batch)``, each of at
-    least ``min_slice`` instances (a kernel costlier per instance may take fewer)."""
+def run_sliced(kernel, n_batch: int, *args) -> None:
+    """Call ``kernel(*args, start, stop)`` on slices covering ``range(n_batch)``."""
     global _POOL
-    workers = min(os.cpu_count() or 1, max(1, n_batch // min_slice))
+    workers = min(os.cpu_count() or 1, max(1, n_batch // MIN_SLICE))
     if workers == 1:
         kernel(*args, 0, n_batch)
         return

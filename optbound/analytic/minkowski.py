@@ -38,8 +38,6 @@ from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 
 CRITERIA = ("volume", "trace", "size_xy_psi")
-# Per-thread slice: a sum costs ~3x a strip update, so a smaller slice amortizes the start-up.
-MIN_SLICE = 2048
 DEFAULT_XY_PSI = ((0, 1), (2,))
 
 
@@ -210,9 +208,7 @@ def minkowski_sum_batch(
     n_batch, n = c1.shape
     out = (np.empty((n_batch, n)), np.empty((n_batch, n, n)), np.zeros(n_batch, np.int8),
            np.empty(n_batch), np.empty(n_batch))  # fmt: skip
-    run_sliced(
-        sum_range, n_batch, c1, C1, c2, C2, mode, p, planar, heading, out, min_slice=MIN_SLICE
-    )
+    run_sliced(sum_range, n_batch, c1, C1, c2, C2, mode, p, planar, heading, out)
     out_c, out_C, code, p_used, margin = out
     bad = np.flatnonzero(code)
     if bad.size:

@@ -7,7 +7,6 @@ import numpy as np
 from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
 from optbound.analytic._threads import MIN_SLICE
-from optbound.analytic.minkowski import MIN_SLICE as MINKOWSKI_SLICE
 
 
 def _instances(count: int):
@@ -28,10 +27,10 @@ def test_sliced_batch_equals_small_batches():
 
 
 def test_sliced_minkowski_batch_equals_small_batches():
-    c, C, _, _ = _instances(2 * MINKOWSKI_SLICE + 3)
+    c, C, _, _ = _instances(2 * MIN_SLICE + 3)
     c2, C2 = c[::-1].copy(), C[::-1].copy()
     whole = analytic.minkowski_sum_batch(c, C, c2, C2)
-    step = MINKOWSKI_SLICE // 2  # each piece runs on one thread
+    step = MIN_SLICE // 2  # each piece runs on one thread
     for start in range(0, len(c), step):
         part = analytic.minkowski_sum_batch(*(x[start : start + step] for x in (c, C, c2, C2)))
         assert np.array_equal(part.shapes, whole.shapes[start : start + step])
