@@ -62,19 +62,25 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
 def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same Newton solver as ours."""
     n = c1.shape[0]
-    L1, L2, A, L, X = work[0], work[1], work[2], work[3], work[4]
+    L1, L2, M, Y, Z = work[0], work[1], work[2], work[3], work[4]
     cholesky(C1, L1)
     cholesky(C2, L2)
-    p = p_volume(C1, C2, L1, L2, A, L, X)
+    p = p_volume(C1, C2, L1, L2, M, Y, Z)
     for i in range(n):
         out_c[i] = c1[i] + c2[i]
         for j in range(n):
             out_C[i, j] = (1.0 + p) * (C1[i, j] / p + C2[i, j])
 
 
+@njit(cache=True, nogil=True, _nrt=False)
+def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, work, start, stop):
+    """The same loop structure as ``optbound.analytic._minkowski_kernel._sum_loop`` (views
+    without reference counting), so that the ratio compares the per-instance work only."""
+    for i in range(start, stop):
+        minkowski_one(c1[i], C1[i], c2[i], C2[i], out_c[i], out_C[i], work)
+
+
 @njit(cache=True, nogil=True)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     n = c1.shape[1]
-    work = np.empty((5, n, n))
-    for i in range(start, stop):
-        minkowski_one(c1[i], C1[i], c2[i], C2[i], out_c[i], out_C[i], work)
+    _minkowski_loop(c1, C1, c2, C2, out_c, out_C, np.empty((5, n, n)), start, stop)

@@ -6,7 +6,8 @@ For any kappa in (0, 1), the ellipsoid with centre ``c1 + c2`` and shape
 - ``"volume"``: the exact minimizer of det. With p = (1 - kappa) / kappa it is the unique root
   of ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
   ``C1 v = l C2 v``), which is increasing in p and bracketed by ``[sqrt(min l), sqrt(max l)]``;
-  solved by safeguarded Newton to full precision. For two summands this member is the
+  solved by safeguarded Newton on a tridiagonal standard form, polished on ``C1 + p C2``
+  (``optbound.analytic._minkowski_kernel``). For two summands this member is the
   minimum-volume ellipsoid among all outer ellipsoids (Durieu, Walter & Polyak 2001).
 - ``"trace"``: ``kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))`` (closed form).
 - ``"size_xy_psi"``: the root of the cubic [HS96, eqs. (15)-(17)] for the size measure
@@ -31,7 +32,7 @@ from optbound.analytic._minkowski_kernel import (
     sum_range,
     sum_single,
 )
-from optbound.analytic._threads import ellipsoid_outputs, run_sliced
+from optbound.analytic._threads import run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -204,9 +205,11 @@ def minkowski_sum_batch(
         if C.shape != (*c1.shape, c1.shape[1]):
             raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
     mode, p, planar, heading = _mode(criterion, kappa, dims, *c1.shape)
-    out = ellipsoid_outputs(c1.shape[0], c1.shape[1], np.int8, float, float)
-    run_sliced(sum_range, c1.shape[0], c1, C1, c2, C2, mode, p, planar, heading, out)
-    out_c, out_C, _, code, p_used, margin = out
+    n_batch, n = c1.shape
+    out = (np.empty((n_batch, n)), np.empty((n_batch, n, n)), np.zeros(n_batch, np.int8),
+           np.empty(n_batch), np.empty(n_batch))  # fmt: skip
+    run_sliced(sum_range, n_batch, c1, C1, c2, C2, mode, p, planar, heading, out)
+    out_c, out_C, code, p_used, margin = out
     bad = np.flatnonzero(code)
     if bad.size:
         _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)

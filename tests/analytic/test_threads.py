@@ -26,6 +26,18 @@ def test_sliced_batch_equals_small_batches():
         assert np.array_equal(part.centers, whole.centers[start : start + step])
 
 
+def test_sliced_minkowski_batch_equals_small_batches():
+    c, C, _, _ = _instances(2 * MIN_SLICE + 3)
+    c2, C2 = c[::-1].copy(), C[::-1].copy()
+    whole = analytic.minkowski_sum_batch(c, C, c2, C2)
+    step = MIN_SLICE // 2  # each piece runs on one thread
+    for start in range(0, len(c), step):
+        part = analytic.minkowski_sum_batch(*(x[start : start + step] for x in (c, C, c2, C2)))
+        assert np.array_equal(part.shapes, whole.shapes[start : start + step])
+        assert np.array_equal(part.centers, whole.centers[start : start + step])
+        assert np.array_equal(part.kappa, whole.kappa[start : start + step])
+
+
 def _child_sum(queue):
     c, C, a, b = _instances(2 * MIN_SLICE)
     queue.put(float(analytic.intersect_strip_batch(c, C, a, b).shapes.sum()))
