@@ -23,7 +23,10 @@ def float_array(name: str, value, ndim: int) -> np.ndarray:
 
 
 def per_instance(name: str, value, n_batch: int, trailing: tuple[int, ...]) -> np.ndarray:
-    """Broadcast a shared value (shape ``trailing``) or a per-instance one to (B, *trailing)."""
+    """Broadcast a shared value (shape ``trailing``) or a per-instance one to (B, *trailing),
+    as a C-contiguous, writable array: always the same array type for the compiled kernels,
+    whatever B (a broadcast of one instance would otherwise be a read-only view, a type of its
+    own that numba compiles the whole kernel again for)."""
     arr = real_array(name, value)
     if arr.shape == trailing:
         arr = np.broadcast_to(arr, (n_batch, *trailing))
@@ -33,4 +36,4 @@ def per_instance(name: str, value, n_batch: int, trailing: tuple[int, ...]) -> n
         )
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite")
-    return arr
+    return np.require(arr, requirements="CW")

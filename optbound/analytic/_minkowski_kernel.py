@@ -365,16 +365,23 @@ def sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, work):
 
 @njit(cache=True)
 def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
-    """One instance (the same ``sum_one`` as the batch), plus the result's Cholesky factor and
-    its validation code (0 by construction, see ``_midrad.inflate``)."""
+    """One instance through the batch loop ``_sum_loop`` (a batch of one: the same compiled
+    code, so single and batched results agree bitwise and the kernel is compiled once), plus
+    the result's Cholesky factor and its validation code (0 by construction, see
+    ``_midrad.inflate``)."""
     n = c1.shape[0]
-    out_c = np.empty(n)
-    out_C = np.empty((n, n))
-    out_L = np.empty((n, n))
+    out = (np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.empty(1), np.empty(1))
     work = np.zeros((6, max(n, 1), n))
-    r = sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, work)
+    one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
+    _sum_loop(
+        np.ascontiguousarray(c1).reshape((1, n)), np.ascontiguousarray(C1).reshape((1, n, n)),
+        np.ascontiguousarray(c2).reshape((1, n)), np.ascontiguousarray(C2).reshape((1, n, n)),
+        mode, np.full(1, p_in), planar, heading, out, work, one - 1, one,
+    )  # fmt: skip
+    out_c, out_C = out[0][0], out[1][0]
+    out_L = np.empty((n, n))
     valid = check_ellipsoid(out_c, out_C, out_L)
-    return out_c, out_C, out_L, valid, r
+    return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0])
 
 
 @njit(cache=True, nogil=True, _nrt=False)

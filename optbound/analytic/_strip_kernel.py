@@ -417,16 +417,26 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c,
 
 @njit(cache=True)
 def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
-    """One instance, without slicing (the same ``fuse_one`` as the batch), plus the result's
-    Cholesky factor and its validation code (0 by construction: ``member`` keeps the result
-    in the domain as ``_midrad.inflate`` does)."""
+    """One instance through the batch loop ``_fuse_loop`` (a batch of one: the same compiled
+    code, so single and batched results agree bitwise and the kernel is compiled once), plus
+    the result's Cholesky factor and its validation code (0 by construction: ``member`` keeps
+    the result in the domain as ``_midrad.inflate`` does)."""
     n = c.shape[0]
-    out_c = np.empty(n)
-    out_C = np.empty((n, n))
-    out_L = np.empty((n, n))
+    out = (
+        np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.zeros(1, np.int8),
+        np.zeros(1), np.zeros(1), np.zeros(1, np.bool_), np.zeros(1),
+    )  # fmt: skip
     work = np.zeros((4, max(n, 4), n))
-    r = fuse_one(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out_c, out_C, work)
+    one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
+    _fuse_loop(
+        np.ascontiguousarray(c).reshape((1, n)), np.ascontiguousarray(C).reshape((1, n, n)),
+        np.ascontiguousarray(a).reshape((1, n)), np.full(1, b), halfspace, clip, mode,
+        np.full(1, lam), idx, steep, midp, out, work, one - 1, one,
+    )  # fmt: skip
+    out_c, out_C = out[0][0], out[1][0]
+    out_L = np.empty((n, n))
     valid = check_ellipsoid(out_c, out_C, out_L)
+    r = (out[2][0], out[3][0], out[4][0], out[5][0], out[6][0], out[7][0])
     return out_c, out_C, out_L, valid, r
 
 

@@ -144,7 +144,7 @@ def _mode(criterion, dims, lam, n_batch, n):
     if criterion == "projection" and dims is None:
         raise ValueError("dims is required for criterion='projection' (the subspace to project on)")
     if lam is not None:
-        lam = np.ascontiguousarray(_batch.per_instance("lam", lam, n_batch, ()))
+        lam = _batch.per_instance("lam", lam, n_batch, ())
         if np.any(lam < 0):
             raise ValueError(
                 f"lam must be >= 0 (every lambda >= 0 gives an outer bound), got {lam}"
@@ -291,8 +291,8 @@ def intersect_strip_batch(
     n_batch, n = c.shape
     if C.shape != (n_batch, n, n):
         raise ValueError(f"shapes must have shape {(n_batch, n, n)}, got {C.shape}")
-    a = np.ascontiguousarray(_batch.per_instance("a", a, n_batch, (n,)))
-    b = np.ascontiguousarray(_batch.per_instance("b", b, n_batch, ()))
+    a = _batch.per_instance("a", a, n_batch, (n,))
+    b = _batch.per_instance("b", b, n_batch, ())
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
