@@ -26,18 +26,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from optbound.optimal._small import max_eig
+from optbound.optimal._small import max_eig, rounding_bound
 from optbound.optimal.errors import CertificationError
 from optbound.sets import Ellipsoid
 
 EPS = np.finfo(float).eps
 _RETRIES = 8
 _BETAS = (1.0, *(1.0 - 10.0**-j for j in range(14, 0, -1)))
-
-
-def rounding_bound(size: int, magnitude: float) -> float:
-    """Error bound ``16 size eps magnitude`` for forming or diagonalising a matrix."""
-    return 16.0 * size * EPS * magnitude
 
 
 def frobenius(matrices: np.ndarray) -> np.ndarray:

@@ -20,8 +20,7 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
-from optbound.optimal._small import min_eig
-from optbound.optimal.certify import frobenius, rounding_bound
+from optbound.optimal._small import weighted_sum_eig
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.solver import solve
 
@@ -43,14 +42,11 @@ def refuse_empty(
 
     ``errors[i]`` bounds the spectral-norm error of ``forms[i]``.
     """
-    tau = np.maximum(tau, 0.0)
-    forms = np.asarray(forms)
-    size = forms.shape[1]
-    S = (tau @ forms.reshape(len(tau), -1)).reshape(size, size)
     # Frobenius norms bound the spectral norms from above: a larger margin, never a smaller.
-    magnitude = float(tau @ frobenius(forms))
-    margin = rounding_bound(size, magnitude) + float(tau @ errors)
-    if min_eig(S) > margin:
+    lowest, margin = weighted_sum_eig(
+        np.maximum(tau, 0.0), np.asarray(forms, dtype=float), np.asarray(errors, dtype=float)
+    )
+    if lowest > margin:
         raise EmptyIntersectionError(
             "the intersection is empty (certified: sum_i tau_i F_i is positive definite)"
         )

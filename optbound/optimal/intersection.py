@@ -49,9 +49,8 @@ from functools import lru_cache
 import cvxpy as cp
 import numpy as np
 
-from optbound.optimal import _cvx
-from optbound.optimal._small import min_eig, min_eigs
-from optbound.optimal.certify import certify_lmi, frobenius, rounding_bound
+from optbound.optimal import _cvx, _small
+from optbound.optimal.certify import certify_lmi
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.lift import Member, check_clip, lift
@@ -182,13 +181,7 @@ def _in_frame(
     ``errors[i]`` bounds the rounding of the congruence, relative to the normalised form (with
     the Frobenius norm of ``|T|^T |F_i| |T|``, an upper bound on its spectral norm).
     """
-    forms = np.stack([q.F for q in quadratics])  # (k, n + 1, n + 1): one batched product each
-    scaled = frame.T @ forms @ frame
-    norms = frobenius(scaled)
-    normalized = 0.5 * (scaled + scaled.transpose(0, 2, 1)) / norms[:, None, None]
-    abs_frame = np.abs(frame)
-    magnitudes = frobenius(abs_frame.T @ np.abs(forms) @ abs_frame)
-    return normalized, norms, rounding_bound(frame.shape[0], magnitudes) / norms
+    return _small.in_frame(np.stack([q.F for q in quadratics]), frame)
 
 
 def _lifted_form(ellipsoid: Ellipsoid, frame: np.ndarray) -> np.ndarray:
@@ -211,10 +204,10 @@ def _require_certificate(forms: np.ndarray) -> None:
     is positive semidefinite and their sum is singular, that is impossible: the intersection
     is unbounded, or bounded only by half-spaces, which the S-procedure cannot use alone.
     """
-    parts = forms[:, :-1, :-1]
-    if np.any(min_eigs(parts) < -_DEFINITE_RTOL):
+    lowest, joint = _small.certificate_eigs(forms)
+    if lowest < -_DEFINITE_RTOL:
         return  # an indefinite member (e.g. a ring's outside): leave it to the solver
-    if min_eig(parts.sum(axis=0)) <= _DEFINITE_RTOL:
+    if joint <= _DEFINITE_RTOL:
         raise ValueError(
             "no ellipsoid can be certified: the quadratic parts of the members are not jointly "
             "positive definite (the intersection is unbounded, or bounded by half-spaces only; "
@@ -328,10 +321,9 @@ def outer_ellipsoid(
         explain_failure(normalized, form_errors, solver, err)
 
     refuse_empty(normalized, form_errors, template.tau.value)
-    M = template.M.value
-    shape_y = np.linalg.inv(M)
-    center_y = -shape_y @ template.bt.value
-    candidate = Ellipsoid._from_floats(center + W @ center_y, W @ shape_y @ W.T)
+    candidate = Ellipsoid._from_floats(
+        *_small.ellipsoid_in_x(template.M.value, template.bt.value, center, W)
+    )
     tau = np.maximum(template.tau.value, 0.0)
     corner = np.zeros((n + 1, n + 1))
     corner[n, n] = 1.0

@@ -1,25 +1,80 @@
-"""``optbound.optimal._small``: the compiled extreme eigenvalues are numpy's ``eigvalsh``
-(to rounding: numba may call another LAPACK build)."""
+"""``optbound.optimal._small``: the compiled kernels compute numpy's formulas (to rounding:
+numba may call another LAPACK build and sums may run in another order)."""
 
 import numpy as np
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from optbound.optimal._small import max_eig, min_eig, min_eigs
+from optbound.optimal import _small
+
+EPS = np.finfo(float).eps
+
+
+def _symmetric(rng, k, m):
+    A = rng.standard_normal((k, m, m))
+    return A + A.transpose(0, 2, 1)
 
 
 @given(st.integers(0, 10_000), st.integers(1, 7))
-def test_extreme_eigenvalues_are_numpys(seed, m):
-    rng = np.random.default_rng(seed)
-    A = rng.standard_normal((3, m + 1, m + 1))
-    A = A + A.transpose(0, 2, 1)
+def test_largest_eigenvalue_is_numpys(seed, m):
+    A = _symmetric(np.random.default_rng(seed), 1, m + 1)[0]
     close = {"rtol": 0, "atol": 1e-13 * np.max(np.abs(A))}
-    np.testing.assert_allclose(max_eig(A[0]), np.linalg.eigvalsh(A[0])[-1], **close)
-    np.testing.assert_allclose(min_eig(A[1]), np.linalg.eigvalsh(A[1])[0], **close)
-    parts = A[:, :-1, :-1]  # a non-contiguous stack, as ``intersection`` passes
-    np.testing.assert_allclose(min_eigs(parts), np.linalg.eigvalsh(parts)[:, 0], **close)
+    np.testing.assert_allclose(_small.max_eig(A), np.linalg.eigvalsh(A)[-1], **close)
 
 
 def test_only_the_lower_triangle_is_read_as_by_numpy():
-    A = np.array([[1.0, 5.0], [0.0, 2.0]])
-    assert max_eig(A) == 2.0 and min_eig(A) == 1.0
+    assert _small.max_eig(np.array([[1.0, 5.0], [0.0, 2.0]])) == 2.0
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5), st.integers(1, 6))
+def test_in_frame_is_the_normalised_congruence_with_its_error_bound(seed, n, k):
+    rng = np.random.default_rng(seed)
+    forms = _symmetric(rng, k, n + 1)
+    frame = np.eye(n + 1)
+    frame[:n, :] = rng.standard_normal((n, n + 1))
+    normalized, norms, errors = _small.in_frame(forms, frame)
+    scaled = frame.T @ forms @ frame
+    expected_norms = np.sqrt(np.einsum("kij,kij->k", scaled, scaled))
+    np.testing.assert_allclose(norms, expected_norms, rtol=1e-13)
+    np.testing.assert_allclose(normalized, scaled / expected_norms[:, None, None], atol=1e-13)
+    assert np.array_equal(normalized, normalized.transpose(0, 2, 1))
+    magnitudes = np.abs(frame).T @ np.abs(forms) @ np.abs(frame)
+    bound = 16 * (n + 1) * EPS * np.sqrt(np.einsum("kij,kij->k", magnitudes, magnitudes))
+    np.testing.assert_allclose(errors, bound / expected_norms, rtol=1e-13)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5), st.integers(1, 6))
+def test_certificate_eigs_are_those_of_the_parts_and_of_their_sum(seed, n, k):
+    forms = _symmetric(np.random.default_rng(seed), k, n + 1)
+    lowest, joint = _small.certificate_eigs(forms)
+    parts = forms[:, :n, :n]
+    close = {"rtol": 0, "atol": 1e-13 * np.max(np.abs(forms)) * k}
+    np.testing.assert_allclose(lowest, np.linalg.eigvalsh(parts)[:, 0].min(), **close)
+    np.testing.assert_allclose(joint, np.linalg.eigvalsh(parts.sum(axis=0))[0], **close)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5), st.integers(1, 6))
+def test_weighted_sum_eig_and_its_margin(seed, m, k):
+    rng = np.random.default_rng(seed)
+    forms = _symmetric(rng, k, m)
+    tau, errors = rng.uniform(0.0, 2.0, k), rng.uniform(0.0, 1e-12, k)
+    lowest, margin = _small.weighted_sum_eig(tau, forms, errors)
+    S = np.einsum("k,kij->ij", tau, forms)
+    np.testing.assert_allclose(lowest, np.linalg.eigvalsh(S)[0], rtol=0, atol=1e-12)
+    frob = np.sqrt(np.einsum("kij,kij->k", forms, forms))
+    expected = 16 * m * EPS * (tau @ frob) + tau @ errors
+    assert margin == pytest.approx(expected, rel=1e-13)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5))
+def test_ellipsoid_in_x_maps_the_frame_answer_back(seed, n):
+    rng = np.random.default_rng(seed)
+    B = rng.standard_normal((n, n))
+    M, bt = B @ B.T + np.eye(n), rng.standard_normal(n)
+    center, W = rng.standard_normal(n), np.tril(rng.standard_normal((n, n))) + 3 * np.eye(n)
+    x0, C = _small.ellipsoid_in_x(M, bt, center, W)
+    shape_y = np.linalg.inv(M)
+    np.testing.assert_allclose(x0, center - W @ shape_y @ bt, rtol=1e-10, atol=1e-10)
+    np.testing.assert_allclose(C, W @ shape_y @ W.T, rtol=1e-10, atol=1e-12)
+    assert np.array_equal(C, C.T)
