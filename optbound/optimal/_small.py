@@ -86,19 +86,68 @@ def certificate_eigs(forms: np.ndarray) -> tuple[float, float]:
 
 
 @njit(cache=True)
-def weighted_sum_eig(tau: np.ndarray, forms: np.ndarray, errors: np.ndarray) -> tuple[float, float]:
-    """The smallest eigenvalue of ``S = sum_i tau_i F_i``, and a bound on its error: the
-    rounding of forming and diagonalising S (``rounding_bound`` of ``sum_i tau_i ||F_i||_F``,
-    Frobenius norms bounding the spectral ones from above) plus ``sum_i tau_i errors_i``."""
-    m = forms.shape[1]
-    S = np.zeros((m, m))
+def weighted_sum(weights: np.ndarray, matrices: np.ndarray) -> tuple[np.ndarray, float]:
+    """``S = sum_i w_i M_i`` and ``sum_i |w_i| ||M_i||_F`` (which bounds ``||S||_2``)."""
+    S = np.zeros(matrices.shape[1:])
     magnitude = 0.0
-    uncertainty = 0.0
-    for idx in range(forms.shape[0]):
-        S += tau[idx] * forms[idx]
-        magnitude += tau[idx] * np.sqrt(np.sum(forms[idx] * forms[idx]))
-        uncertainty += tau[idx] * errors[idx]
-    return np.linalg.eigvalsh(S)[0], rounding_bound(m, magnitude) + uncertainty
+    for idx in range(matrices.shape[0]):
+        S += weights[idx] * matrices[idx]
+        magnitude += abs(weights[idx]) * np.sqrt(np.sum(matrices[idx] * matrices[idx]))
+    return S, magnitude
+
+
+@njit(cache=True)
+def weighted_sum_eig(tau: np.ndarray, forms: np.ndarray, errors: np.ndarray) -> tuple[float, float]:
+    """The smallest eigenvalue of ``S = sum_i tau_i F_i`` (``tau >= 0``), and a bound on its
+    error: the rounding of forming and diagonalising S (``rounding_bound`` of
+    ``sum_i tau_i ||F_i||_F``, Frobenius norms bounding the spectral ones from above) plus
+    ``sum_i tau_i errors_i``."""
+    S, magnitude = weighted_sum(tau, forms)
+    bound = rounding_bound(forms.shape[1], magnitude) + np.sum(tau * errors)
+    return np.linalg.eigvalsh(S)[0], bound
+
+
+@njit(cache=True)
+def lifted_form(chol: np.ndarray, center: np.ndarray, frame: np.ndarray) -> np.ndarray:
+    """``X^T X`` (exactly symmetric) for ``X = L^{-1} [W, c0 - c]``, by forward substitution:
+    the form of the ellipsoid ``(c, L L^T)`` in ``[y; 1]`` for the frame
+    ``T = [[W, c0], [0, 1]]``."""
+    n = chol.shape[0]
+    X = np.empty((n, n + 1))
+    for j in range(n + 1):
+        for i in range(n):
+            value = frame[i, j] - center[i] if j == n else frame[i, j]
+            for p in range(i):
+                value -= chol[i, p] * X[p, j]
+            X[i, j] = value / chol[i, i]
+    P = np.empty((n + 1, n + 1))
+    for i in range(n + 1):
+        for j in range(i + 1):
+            P[i, j] = P[j, i] = np.sum(X[:, i] * X[:, j])
+    return P
+
+
+@njit(cache=True)
+def smallest_inflation(
+    P: np.ndarray, fixed: np.ndarray, S: np.ndarray, delta: float, betas: np.ndarray
+) -> tuple[float, float]:
+    """``min over betas of sqrt(max(1, lambda_max(P, R)))`` with ``R = G0 + beta S - delta I``,
+    and its (first) minimising beta; ``(inf, nan)`` if no ``R`` is positive definite.
+
+    With ``R = V D V^T`` (D > 0), ``lambda_max(P, R)`` is the largest eigenvalue of
+    ``D^{-1/2} V^T P V D^{-1/2}``; betas whose ``R`` is not definite are skipped.
+    """
+    best_alpha, best_beta = np.inf, np.nan
+    shift = delta * np.eye(P.shape[0])
+    for beta in betas:
+        d, V = np.linalg.eigh(fixed + beta * S - shift)
+        if not d[0] > 0:
+            continue
+        scaled = V / np.sqrt(d)
+        alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(scaled.T @ P @ scaled)[-1]))
+        if alpha < best_alpha:
+            best_alpha, best_beta = alpha, beta
+    return best_alpha, best_beta
 
 
 @njit(cache=True)

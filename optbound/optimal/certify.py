@@ -26,18 +26,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from optbound.optimal._small import max_eig, rounding_bound
+from optbound.optimal._small import max_eig, rounding_bound, smallest_inflation, weighted_sum
 from optbound.optimal.errors import CertificationError
 from optbound.sets import Ellipsoid
 
 EPS = np.finfo(float).eps
 _RETRIES = 8
-_BETAS = (1.0, *(1.0 - 10.0**-j for j in range(14, 0, -1)))
-
-
-def frobenius(matrices: np.ndarray) -> np.ndarray:
-    """Frobenius norms of a stack of matrices (k, m, m): upper bounds on the spectral norms."""
-    return np.sqrt(np.einsum("kij,kij->k", matrices, matrices))
+_BETAS = np.array([1.0, *(1.0 - 10.0**-j for j in range(14, 0, -1))])
 
 
 def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
@@ -49,22 +44,13 @@ def _smallest_inflation(
 ) -> tuple[float, float]:
     """Smallest inflation ``alpha = sqrt(lambda_max(P, R))`` over the betas, and its beta.
 
-    ``R = G0 + beta S - delta I`` for every beta at once: with ``R = V D V^T`` (D > 0),
-    ``lambda_max(P, R)`` is the largest eigenvalue of ``D^{-1/2} V^T P V D^{-1/2}``. Betas
-    whose ``R`` is not definite are skipped.
+    ``R = G0 + beta S - delta I`` for every beta (``_small.smallest_inflation``); betas whose
+    ``R`` is not definite are skipped.
     """
-    betas = np.asarray(_BETAS)
-    R = fixed + betas[:, None, None] * S - delta * np.eye(fixed.shape[0])
-    d, V = np.linalg.eigh(R)
-    definite = d[:, 0] > 0
-    if not np.any(definite):
+    alpha, beta = smallest_inflation(P, fixed, S, delta, _BETAS)
+    if not np.isfinite(alpha):
         raise CertificationError("the multipliers certify no inflation of the solver's ellipsoid")
-    d, V = d[definite], V[definite]
-    scaled = V / np.sqrt(d)[:, None, :]
-    W = scaled.transpose(0, 2, 1) @ P @ scaled
-    alphas = np.sqrt(np.maximum(1.0, np.linalg.eigvalsh(W)[:, -1]))
-    best = int(np.argmin(alphas))
-    return float(alphas[best]), float(betas[definite][best])
+    return float(alpha), float(beta)
 
 
 def certify_lmi(
@@ -114,8 +100,8 @@ def certify_lmi(
         inflated ellipsoid still fails the re-check.
     """
     size = fixed.shape[0]
-    S = (weights @ matrices.reshape(len(weights), -1)).reshape(size, size)
-    g_scale = float(np.linalg.norm(fixed) + np.abs(weights) @ frobenius(matrices))
+    S, weighted = weighted_sum(np.asarray(weights, dtype=float), matrices)
+    g_scale = float(np.linalg.norm(fixed)) + weighted
 
     def margin(P: np.ndarray) -> float:
         # The Frobenius norm bounds the spectral norm from above, for one BLAS call, no SVD.

@@ -191,10 +191,7 @@ def _lifted_form(ellipsoid: Ellipsoid, frame: np.ndarray) -> np.ndarray:
     ``B T = [W, c0 - c]``, and the form is ``X^T X`` with ``X = L^{-1} B T`` (``C = L L^T``),
     computed by a triangular solve instead of an explicit inverse.
     """
-    n = ellipsoid.dim
-    BT = np.hstack([frame[:n, :n], (frame[:n, n] - ellipsoid.center)[:, None]])
-    X = np.linalg.solve(ellipsoid.chol, BT)
-    return X.T @ X
+    return _small.lifted_form(ellipsoid.chol, ellipsoid.center, frame)
 
 
 def _require_certificate(forms: np.ndarray) -> None:

@@ -182,7 +182,8 @@ class Ellipsoid(ConvexSet):
         with np.errstate(over="ignore", under="ignore"):
             shape = self._shape * factor * factor
         try:
-            return Ellipsoid(self._center, shape)
+            # Float64 arrays of matching shapes: the checks of ``__init__`` without conversions.
+            return Ellipsoid._from_floats(self._center, shape)
         except ValueError as err:
             raise ValueError(
                 f"factor={factor} takes the ellipsoid out of the domain: {err}"

@@ -78,3 +78,47 @@ def test_ellipsoid_in_x_maps_the_frame_answer_back(seed, n):
     np.testing.assert_allclose(x0, center - W @ shape_y @ bt, rtol=1e-10, atol=1e-10)
     np.testing.assert_allclose(C, W @ shape_y @ W.T, rtol=1e-10, atol=1e-12)
     assert np.array_equal(C, C.T)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5), st.integers(1, 6))
+def test_weighted_sum_and_its_magnitude(seed, m, k):
+    rng = np.random.default_rng(seed)
+    matrices, weights = _symmetric(rng, k, m), rng.uniform(-2.0, 2.0, k)
+    S, magnitude = _small.weighted_sum(weights, matrices)
+    np.testing.assert_allclose(S, np.einsum("k,kij->ij", weights, matrices), atol=1e-13)
+    frob = np.sqrt(np.einsum("kij,kij->k", matrices, matrices))
+    assert magnitude == pytest.approx(np.abs(weights) @ frob, rel=1e-13)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5))
+def test_lifted_form_is_the_ellipsoid_form_in_the_frame(seed, n):
+    rng = np.random.default_rng(seed)
+    chol = np.tril(rng.standard_normal((n, n)), -1) + np.diag(rng.uniform(0.5, 2.0, n))
+    center, frame = rng.standard_normal(n), np.eye(n + 1)
+    frame[:n, :] = rng.standard_normal((n, n + 1))
+    P = _small.lifted_form(chol, center, frame)
+    X = np.linalg.solve(chol, np.hstack([frame[:n, :n], (frame[:n, n] - center)[:, None]]))
+    np.testing.assert_allclose(P, X.T @ X, rtol=1e-10, atol=1e-10 * np.max(np.abs(P)))
+    assert np.array_equal(P, P.T)
+
+
+@given(st.integers(0, 10_000), st.integers(2, 5))
+def test_smallest_inflation_is_the_generalized_eigenvalue_over_the_betas(seed, m):
+    rng = np.random.default_rng(seed)
+    P, fixed, S = (A @ A.T / m for A in rng.standard_normal((3, m, m)))
+    betas, delta = np.array([1.0, 0.9, 0.5, -5.0]), 1e-3
+    alpha, beta = _small.smallest_inflation(P, fixed, S, delta, betas)
+    expected = []
+    for b in betas:
+        R = fixed + b * S - delta * np.eye(m)
+        d, V = np.linalg.eigh(R)
+        if d[0] > 0:
+            scaled = V / np.sqrt(d)
+            expected.append(np.sqrt(max(1.0, np.linalg.eigvalsh(scaled.T @ P @ scaled)[-1])))
+        else:
+            expected.append(np.inf)
+    best = int(np.argmin(expected))
+    if np.isfinite(expected[best]):
+        assert alpha == pytest.approx(expected[best], rel=1e-9) and beta == betas[best]
+    else:
+        assert alpha == np.inf and np.isnan(beta)
