@@ -28,6 +28,7 @@ forms are one quadratic. An unclipped half-space stays affine, ``a^T x - b <= 0`
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Sequence
 
 import numpy as np
@@ -79,7 +80,7 @@ def _clip(
     """
     lo0, hi0 = lo, hi
     for ellipsoid in bounded:
-        elo, ehi = ellipsoid.extent(a)
+        elo, ehi = ellipsoid._extent(a)  # ``a`` is a validated member's normal
         pad = _EXTENT_RTOL * (abs(elo) + abs(ehi) + (ehi - elo))
         lo, hi = max(lo, elo - pad), min(hi, ehi + pad)
         if lo > hi:
@@ -95,12 +96,12 @@ def _clip(
 
 
 def _quadratic(a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
-    if np.isfinite(lo) and np.isfinite(hi):
+    if math.isfinite(lo) and math.isfinite(hi):
         # ``a`` is a validated member's normal: only the order of the (clipped) range is left
         # to check, and ``from_bounds`` refuses a wrong one with its message.
         build = QuadraticSet._from_valid_bounds if lo <= hi else QuadraticSet.from_bounds
         return build(a, lo, hi)
-    if np.isfinite(hi):
+    if math.isfinite(hi):
         return QuadraticSet.from_halfspace(Halfspace(a, hi))
     return QuadraticSet.from_halfspace(Halfspace(-a, -lo))
 

@@ -152,7 +152,10 @@ class Ellipsoid(ConvexSet):
 
     def extent(self, a) -> tuple[float, float]:
         """Range ``[c^T a - sqrt(a^T C a), c^T a + sqrt(a^T C a)]`` of ``a^T x``."""
-        a = v.finite_vector("a", a, self.dim)
+        return self._extent(v.finite_vector("a", a, self.dim))
+
+    def _extent(self, a: np.ndarray) -> tuple[float, float]:
+        """``extent`` of a finite float64 ``a`` of length ``dim`` (unchecked)."""
         mid, half = float(a @ self._center), float(np.sqrt(a @ self._shape @ a))
         return mid - half, mid + half
 

@@ -14,14 +14,57 @@ methods (``dim``, ``contains``, ``support``, ``extent``) without claiming convex
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 from optbound.sets import _validate as v
+from optbound.sets._triangular import lower_inverse
 from optbound.sets.base import ConvexSet
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.strip import Halfspace, Strip
 
 # Eigenvalues of A below this fraction of its largest magnitude count as zero.
 _EIG_RTOL = 1e-12
+
+
+# The kernels below build and test the forms of one SDP call: as numpy, each would be a few
+# tiny calls at 1-3 µs of overhead apiece (``benchmarks/sdp_cache.py``).
+@njit(cache=True)
+def _ellipsoid_form(center: np.ndarray, chol: np.ndarray) -> np.ndarray:
+    """``[[P, -P c], [-c^T P, c^T P c - 1]]`` with ``P = C^{-1} = L^{-T} L^{-1}`` (exactly
+    symmetric), for ``C = L L^T``."""
+    n = center.shape[0]
+    X = lower_inverse(chol)
+    F = np.empty((n + 1, n + 1))
+    for i in range(n):
+        for j in range(i + 1):
+            F[i, j] = F[j, i] = np.sum(X[i:, i] * X[i:, j])  # X is lower triangular
+    offset = -1.0
+    for i in range(n):
+        Pc = np.sum(F[i, :n] * center)
+        F[i, n] = F[n, i] = -Pc
+        offset += center[i] * Pc
+    F[n, n] = offset
+    return F
+
+
+@njit(cache=True)
+def _bounds_form(a: np.ndarray, lo: float, hi: float) -> np.ndarray:
+    """``[[a a^T, -(lo + hi) a / 2], [-(lo + hi) a^T / 2, lo hi]]``."""
+    n = a.shape[0]
+    F = np.empty((n + 1, n + 1))
+    mid = -0.5 * (lo + hi)
+    for i in range(n):
+        for j in range(n):
+            F[i, j] = a[i] * a[j]
+        F[i, n] = F[n, i] = mid * a[i]
+    F[n, n] = lo * hi
+    return F
+
+
+@njit(cache=True)
+def _positive_definite_part(F: np.ndarray, rtol: float) -> bool:
+    """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|``."""
+    return np.linalg.eigvalsh(np.ascontiguousarray(F[:-1, :-1]))[0] > rtol * np.max(np.abs(F))
 
 
 class QuadraticSet:
@@ -57,14 +100,6 @@ class QuadraticSet:
         q._F, q._ellipsoid = F, None
         return q
 
-    @staticmethod
-    def _assemble(A: np.ndarray, b: np.ndarray, c: float) -> np.ndarray:
-        """``[[A, b], [b^T, c]]`` (exactly symmetric when A is)."""
-        n = b.shape[0]
-        F = np.empty((n + 1, n + 1))
-        F[:n, :n], F[:n, n], F[n, :n], F[n, n] = A, b, b, c
-        return F
-
     # ------------------------------------------------------------------ constructors
     @classmethod
     def from_parts(cls, A, b, c: float) -> QuadraticSet:
@@ -76,10 +111,7 @@ class QuadraticSet:
     @classmethod
     def from_ellipsoid(cls, E: Ellipsoid) -> QuadraticSet:
         """``(x - c)^T C^{-1} (x - c) - 1 <= 0``."""
-        P = np.linalg.inv(E.shape)
-        P = 0.5 * (P + P.T)
-        Pc = P @ E.center
-        q = cls._trusted(cls._assemble(P, -Pc, E.center @ Pc - 1.0))
+        q = cls._trusted(_ellipsoid_form(E.center, E.chol))
         q._ellipsoid = E  # the validated original, returned by ``as_ellipsoid``
         return q
 
@@ -102,9 +134,9 @@ class QuadraticSet:
     def _from_valid_bounds(cls, a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
         """``from_bounds`` for a finite non-zero float64 ``a`` and finite ``lo <= hi`` that
         the caller has validated (e.g. a clipped ``Strip``)."""
-        F = cls._assemble(np.outer(a, a), -0.5 * (lo + hi) * a, lo * hi)
+        F = _bounds_form(a, lo, hi)
         # Finite inputs can still overflow (lo * hi): then the checking constructor refuses F.
-        return cls._trusted(F) if np.all(np.isfinite(F)) else cls(F)
+        return cls._trusted(F) if np.isfinite(F).all() else cls(F)
 
     @classmethod
     def from_strip(cls, S: Strip) -> QuadraticSet:
@@ -235,4 +267,4 @@ class QuadraticSet:
     @property
     def is_bounded(self) -> bool:
         """True when A is positive definite (then the set is an ellipsoid, a point or empty)."""
-        return bool(np.linalg.eigvalsh(self.A)[0] > _EIG_RTOL * np.max(np.abs(self._F)))
+        return bool(_positive_definite_part(self._F, _EIG_RTOL))

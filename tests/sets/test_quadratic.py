@@ -115,3 +115,26 @@ def test_trusted_constructors_build_what_the_checking_ones_build():
 def test_bounds_whose_product_overflows_are_refused():
     with pytest.raises(ValueError, match="F must be finite"):
         QuadraticSet.from_bounds([1.0, 0.0], -1e200, 1e200)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5))
+def test_from_ellipsoid_form_is_the_inverse_shape_formula(seed, n):
+    E = _ellipsoid(seed, n)
+    F = QuadraticSet.from_ellipsoid(E).F
+    P = np.linalg.inv(E.shape)
+    expected = np.block([[P, -(P @ E.center)[:, None]], [-(P @ E.center)[None], [[0.0]]]])
+    expected[n, n] = E.center @ P @ E.center - 1.0
+    scale = np.max(np.abs(expected))
+    np.testing.assert_allclose(F, expected, rtol=0, atol=1e-10 * scale)
+    assert np.array_equal(F, F.T)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 5), st.floats(-2.0, 2.0))
+def test_is_bounded_is_the_eigenvalue_test_of_the_quadratic_part(seed, n, shift):
+    rng = np.random.default_rng(seed)
+    F = rng.standard_normal((n + 1, n + 1))
+    F = F + F.T
+    F[:n, :n] += shift * n * np.eye(n)
+    lowest, scale = np.linalg.eigvalsh(F[:n, :n])[0], 1e-12 * np.max(np.abs(F))
+    if abs(lowest - scale) > 1e-9 * np.max(np.abs(F)):  # away from the threshold
+        assert QuadraticSet(F).is_bounded == (lowest > scale)
