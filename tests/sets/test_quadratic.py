@@ -122,7 +122,8 @@ def test_from_ellipsoid_form_is_the_inverse_shape_formula(seed, n):
     E = _ellipsoid(seed, n)
     F = QuadraticSet.from_ellipsoid(E).F
     P = np.linalg.inv(E.shape)
-    expected = np.block([[P, -(P @ E.center)[:, None]], [-(P @ E.center)[None], [[0.0]]]])
+    expected = np.empty((n + 1, n + 1))
+    expected[:n, :n], expected[:n, n], expected[n, :n] = P, -P @ E.center, -P @ E.center
     expected[n, n] = E.center @ P @ E.center - 1.0
     scale = np.max(np.abs(expected))
     np.testing.assert_allclose(F, expected, rtol=0, atol=1e-10 * scale)
