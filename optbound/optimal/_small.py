@@ -14,6 +14,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound.sets._domain import check_ellipsoid
+
 EPS = np.finfo(float).eps
 
 
@@ -153,11 +155,14 @@ def smallest_inflation(
 @njit(cache=True)
 def ellipsoid_in_x(
     M: np.ndarray, bt: np.ndarray, center: np.ndarray, W: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
     """Centre ``c + W y0`` and shape ``W M^{-1} W^T`` (symmetrized) of the ellipsoid
     ``||A y + b|| <= 1`` (``M = A^2``, ``bt = A b``, centre ``y0 = -M^{-1} bt``) mapped back
-    from the frame ``x = c + W y``."""
+    from the frame ``x = c + W y``, with the Cholesky factor and status of
+    ``sets._domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
     shape_y = np.linalg.inv(M)
     x0 = center - W @ (shape_y @ bt)
     C = W @ shape_y @ W.T
-    return x0, 0.5 * (C + C.T)
+    C = 0.5 * (C + C.T)
+    L = np.zeros_like(C)
+    return x0, C, L, check_ellipsoid(x0, C, L)

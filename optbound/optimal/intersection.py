@@ -318,7 +318,7 @@ def outer_ellipsoid(
         explain_failure(normalized, form_errors, solver, err)
 
     refuse_empty(normalized, form_errors, template.tau.value)
-    candidate = Ellipsoid._from_floats(
+    candidate = Ellipsoid._from_kernel(
         *_small.ellipsoid_in_x(template.M.value, template.bt.value, center, W)
     )
     tau = np.maximum(template.tau.value, 0.0)
