@@ -33,6 +33,17 @@ def max_eig(A: np.ndarray) -> float:
 
 
 @njit(cache=True)
+def lmi_check(
+    P: np.ndarray, G: np.ndarray, scale: float, uncertainty: float
+) -> tuple[float, float]:
+    """The largest eigenvalue of ``P - G``, and the margin it must clear (be below minus it):
+    ``rounding_bound`` of ``||P||_F + scale`` (the Frobenius norm bounds the spectral norm from
+    above; ``scale`` bounds ``||G||``) plus ``uncertainty``."""
+    magnitude = np.sqrt(np.sum(P * P)) + scale
+    return max_eig(P - G), rounding_bound(P.shape[0], magnitude) + uncertainty
+
+
+@njit(cache=True)
 def _congruence(T: np.ndarray, F: np.ndarray) -> np.ndarray:
     """``T^T F T`` for small square matrices."""
     m = T.shape[0]

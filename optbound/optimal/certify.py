@@ -26,17 +26,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from optbound.optimal._small import max_eig, rounding_bound, smallest_inflation, weighted_sum
+from optbound.optimal._small import lmi_check, smallest_inflation, weighted_sum
 from optbound.optimal.errors import CertificationError
 from optbound.sets import Ellipsoid
 
 EPS = np.finfo(float).eps
 _RETRIES = 8
 _BETAS = np.array([1.0, *(1.0 - 10.0**-j for j in range(14, 0, -1))])
-
-
-def _worst_eig(P: np.ndarray, G: np.ndarray) -> float:
-    return float(max_eig(P - G))
 
 
 def _smallest_inflation(
@@ -99,23 +95,19 @@ def certify_lmi(
         If no ``beta`` makes the right-hand side positive definite with margin, or the
         inflated ellipsoid still fails the re-check.
     """
-    size = fixed.shape[0]
     S, weighted = weighted_sum(np.asarray(weights, dtype=float), matrices)
     g_scale = float(np.linalg.norm(fixed)) + weighted
 
-    def margin(P: np.ndarray) -> float:
-        # The Frobenius norm bounds the spectral norm from above, for one BLAS call, no SVD.
-        return rounding_bound(size, float(np.linalg.norm(P)) + g_scale) + uncertainty
-
     P = form(ellipsoid)
-    delta = margin(P)
-    if _worst_eig(P, fixed + S) <= -delta:
+    worst, delta = lmi_check(P, fixed + S, g_scale, uncertainty)
+    if worst <= -delta:
         return ellipsoid, 1.0, 1.0
     alpha, beta = _smallest_inflation(P, fixed, S, delta)
     for attempt in range(_RETRIES):
         candidate = ellipsoid.scaled(alpha)
         P = form(candidate)
-        if _worst_eig(P, fixed + beta * S) <= -margin(P):
+        worst, delta = lmi_check(P, fixed + beta * S, g_scale, uncertainty)
+        if worst <= -delta:
             return candidate, alpha, beta
         alpha *= 1.0 + 1e-13 * 4.0**attempt
     raise CertificationError(f"inflation by {alpha} still fails the float64 certificate")

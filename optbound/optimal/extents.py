@@ -34,7 +34,7 @@ import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
-from optbound.optimal.certify import rounding_bound
+from optbound.optimal._small import rounding_bound
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
 from optbound.optimal.solver import solve
 from optbound.sets import Ellipsoid

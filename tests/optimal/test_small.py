@@ -123,3 +123,12 @@ def test_smallest_inflation_is_the_generalized_eigenvalue_over_the_betas(seed, m
         assert alpha == pytest.approx(expected[best], rel=1e-9) and beta == betas[best]
     else:
         assert alpha == np.inf and np.isnan(beta)
+
+
+@given(st.integers(0, 10_000), st.integers(1, 6))
+def test_lmi_check_is_the_largest_eigenvalue_and_its_margin(seed, m):
+    rng = np.random.default_rng(seed)
+    P, G = _symmetric(rng, 2, m)
+    worst, margin = _small.lmi_check(P, G, 2.5, 1e-9)
+    np.testing.assert_allclose(worst, np.linalg.eigvalsh(P - G)[-1], rtol=0, atol=1e-12)
+    assert margin == pytest.approx(16 * m * EPS * (np.linalg.norm(P) + 2.5) + 1e-9, rel=1e-13)
