@@ -44,22 +44,22 @@ def lmi_check(
 
 
 @njit(cache=True)
-def _congruence(T: np.ndarray, F: np.ndarray) -> np.ndarray:
-    """``T^T F T`` for small square matrices."""
-    m = T.shape[0]
-    FT = np.zeros((m, m))
+def _product(A: np.ndarray, B: np.ndarray) -> np.ndarray:
+    """``A B`` for small square matrices, in plain loops (no BLAS call)."""
+    m = A.shape[0]
+    out = np.zeros((m, m))
     for i in range(m):
         for p in range(m):
-            f = F[i, p]
+            a = A[i, p]
             for j in range(m):
-                FT[i, j] += f * T[p, j]
-    out = np.zeros((m, m))
-    for p in range(m):
-        for i in range(m):
-            t = T[p, i]
-            for j in range(m):
-                out[i, j] += t * FT[p, j]
+                out[i, j] += a * B[p, j]
     return out
+
+
+@njit(cache=True)
+def _congruence(T: np.ndarray, F: np.ndarray) -> np.ndarray:
+    """``T^T F T`` for small square matrices."""
+    return _product(T.T, _product(F, T))
 
 
 @njit(cache=True)
