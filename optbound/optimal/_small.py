@@ -6,7 +6,9 @@ tiny numpy call costs 1-3 µs of such overhead, so on small problems the steps a
 (``intersection``, ``emptiness``, ``certify``) are fused here into one kernel each; they were
 a quarter of a cached call on the 3-D ellipsoid ∩ strip (``benchmarks/sdp_cache.py``). The
 kernels compute the same formulas as the numpy they replace; sums may be taken in another
-order, which every error bound below covers (they hold for any order).
+order, which every error bound below covers (they hold for any order). Compiling them (and
+``sets.quadratic``'s form kernels) takes about 5 s in the first SDP call of an install, with an
+empty numba cache; later processes load the cache.
 """
 
 from __future__ import annotations
