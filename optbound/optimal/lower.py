@@ -113,29 +113,6 @@ def _lifted(X: np.ndarray) -> np.ndarray:
     return np.hstack([X, np.ones((X.shape[0], 1))])
 
 
-def _forms(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
-    """``U_m^T F_k V_m`` for every row pair m and form k, shape (m, k)."""
-    return _forms_loop(np.ascontiguousarray(U), np.ascontiguousarray(F), np.ascontiguousarray(V))
-
-
-@njit(cache=True)
-def _forms_loop(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
-    # Plain loops: numpy's einsum / batched matmul cost more in overhead at n + 1 <= 7.
-    m, d = U.shape
-    k = F.shape[0]
-    out = np.empty((m, k))
-    for p in range(m):
-        for i in range(k):
-            total = 0.0
-            for a in range(d):
-                row = 0.0
-                for b in range(d):
-                    row += F[i, a, b] * V[p, b]
-                total += U[p, a] * row
-            out[p, i] = total
-    return out
-
-
 def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Rows of X where every ``q_i`` is negative by more than its float64 rounding bound."""
     lifted = _lifted(X)
@@ -144,24 +121,30 @@ def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def _inside_loop(F: np.ndarray, absF: np.ndarray, L: np.ndarray, rel: float) -> np.ndarray:
-    """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, per row ``x~`` of L (compiled: one
-    pass per point, stopping at the first form that fails)."""
-    m, d = L.shape
-    out = np.ones(m, dtype=np.bool_)
-    for p in range(m):
-        for i in range(F.shape[0]):
-            value, size = 0.0, 0.0
-            for a in range(d):
-                row, row_abs = 0.0, 0.0
-                for b in range(d):
-                    row += F[i, a, b] * L[p, b]
-                    row_abs += absF[i, a, b] * abs(L[p, b])
-                value += L[p, a] * row
-                size += abs(L[p, a]) * row_abs
-            if not value < -rel * size:
-                out[p] = False
-                break
+    """``_inside_one`` per row ``x~`` of L."""
+    out = np.empty(L.shape[0], dtype=np.bool_)
+    for p in range(L.shape[0]):
+        out[p] = _inside_one(F, absF, L[p], rel)
     return out
+
+
+@njit(cache=True)
+def _inside_one(F: np.ndarray, absF: np.ndarray, x: np.ndarray, rel: float) -> bool:
+    """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, at the lifted point ``x~`` (compiled:
+    stopping at the first form that fails)."""
+    d = x.shape[0]
+    for i in range(F.shape[0]):
+        value, size = 0.0, 0.0
+        for a in range(d):
+            row, row_abs = 0.0, 0.0
+            for b in range(d):
+                row += F[i, a, b] * x[b]
+                row_abs += absF[i, a, b] * abs(x[b])
+            value += x[a] * row
+            size += abs(x[a]) * row_abs
+        if not value < -rel * size:
+            return False
+    return True
 
 
 def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
@@ -177,29 +160,37 @@ def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def _first_exit_loop(F: np.ndarray, L: np.ndarray, D1: np.ndarray) -> np.ndarray:
-    m, d = L.shape
-    out = np.full(m, np.inf)
-    for p in range(m):
-        for i in range(F.shape[0]):
-            a, b, g = 0.0, 0.0, 0.0
-            for r in range(d):
-                row_l, row_d = 0.0, 0.0
-                for c in range(d):
-                    row_l += F[i, r, c] * L[p, c]
-                    row_d += F[i, r, c] * D1[p, c]
-                a += D1[p, r] * row_d
-                b += D1[p, r] * row_l
-                g += L[p, r] * row_l
-            disc = b * b - a * g
-            root = np.sqrt(max(disc, 0.0))
-            if a == 0.0:
-                t = -g / (2.0 * b) if b > 0.0 else np.inf
-            elif a > 0.0:
-                t = (root - b) / a
-            else:  # concave q: it rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0
-                t = (b - root) / -a if (b > 0.0 and disc >= 0.0) else np.inf
-            if t >= 0.0 and t < out[p]:
-                out[p] = t
+    out = np.empty(L.shape[0])
+    for p in range(L.shape[0]):
+        out[p] = _exit_one(F, L[p], D1[p])
+    return out
+
+
+@njit(cache=True)
+def _exit_one(F: np.ndarray, x: np.ndarray, d1: np.ndarray) -> float:
+    """First exit ``t*`` from the lifted point ``x~`` along the lifted direction ``(d, 0)``."""
+    out = np.inf
+    n1 = x.shape[0]
+    for i in range(F.shape[0]):
+        a, b, g = 0.0, 0.0, 0.0
+        for r in range(n1):
+            row_l, row_d = 0.0, 0.0
+            for c in range(n1):
+                row_l += F[i, r, c] * x[c]
+                row_d += F[i, r, c] * d1[c]
+            a += d1[r] * row_d
+            b += d1[r] * row_l
+            g += x[r] * row_l
+        disc = b * b - a * g
+        root = np.sqrt(max(disc, 0.0))
+        if a == 0.0:
+            t = -g / (2.0 * b) if b > 0.0 else np.inf
+        elif a > 0.0:
+            t = (root - b) / a
+        else:  # concave q: it rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0
+            t = (b - root) / -a if (b > 0.0 and disc >= 0.0) else np.inf
+        if t >= 0.0 and t < out:
+            out = t
     return out
 
 
@@ -273,43 +264,6 @@ def _cluster_firsts(points: np.ndarray, reference: np.ndarray) -> np.ndarray:
     return np.unique(keys, return_index=True)[1]
 
 
-def _along_faces(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> np.ndarray:
-    """``G`` (rows) with the outward part along the normal of each active constraint removed.
-
-    A constraint is active at a point when its first-order distance ``-q / |grad q|`` is below
-    ``_ACTIVE_RTOL`` times the point's norm scale; a few sweeps of projections approximate the
-    projection onto the faces' intersection (edges, then vertices).
-    """
-    lifted = _lifted(points)
-    normals = 2.0 * (lifted @ F[:, :, :-1])  # (k, m, n): the gradients 2 (A x + b)
-    norm2 = np.sum(normals * normals, axis=2).T
-    scale = 1.0 + np.linalg.norm(points, axis=1, keepdims=True)
-    active = -_forms(lifted, F, lifted) < _ACTIVE_RTOL * scale * np.sqrt(norm2)
-    inv_norm2 = np.where(active & (norm2 > 0), 1.0 / np.where(norm2 > 0, norm2, 1.0), 0.0)
-    G = np.array(G, dtype=float)  # a fresh array, projected in place
-    _project_sweeps(G, np.ascontiguousarray(normals), np.ascontiguousarray(inv_norm2), _FACE_SWEEPS)
-    return G
-
-
-@njit(cache=True)
-def _project_sweeps(G: np.ndarray, normals: np.ndarray, inv_norm2: np.ndarray, sweeps: int) -> None:
-    """In place: ``sweeps`` passes removing, constraint by constraint, the outward part of each
-    row of G along that constraint's normal at the row's point (where it is active)."""
-    k, m, n = normals.shape
-    for _ in range(sweeps):
-        for i in range(k):
-            for p in range(m):
-                if inv_norm2[p, i] == 0.0:
-                    continue
-                outward = 0.0
-                for j in range(n):
-                    outward += G[p, j] * normals[i, p, j]
-                if outward > 0.0:
-                    scale = outward * inv_norm2[p, i]
-                    for j in range(n):
-                        G[p, j] -= scale * normals[i, p, j]
-
-
 def sample_set(
     quadratics: Sequence[QuadraticSet],
     outer: Ellipsoid,
@@ -321,6 +275,17 @@ def sample_set(
     ``outer`` is any ellipsoid containing the set; ``dims`` judges "farther out" by the
     projection onto these coordinates (projection objective). Returns shape (m, n), distinct.
     """
+    return _sample(quadratics, outer, rng, dims)[0]
+
+
+def _sample(
+    quadratics: Sequence[QuadraticSet],
+    outer: Ellipsoid,
+    rng,
+    dims: tuple[int, ...] | None,
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """``sample_set``'s points, and the polish's last rough weights (indices of the points,
+    weights): a warm start for the bound's own (on ``dims``)."""
     gen = v.rng_of(rng)
     n = outer.dim
     F = _stack(quadratics)
@@ -358,11 +323,11 @@ def sample_set(
     return _polish(climb, _distinct(np.vstack([start, points])))
 
 
-def _polish(climb: Callable, pool: np.ndarray) -> np.ndarray:
+def _polish(climb: Callable, pool: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
     """The pool and the points of ``_POLISH_ROUNDS`` more rounds of climbing by the support
     points of the minimum-volume ellipsoid of a working set (refitted every round), in that
     ellipsoid's level: they pin the bound, and on curved boundaries the broad climb leaves
-    them short of the contact."""
+    them short of the contact. Also the last weights of that working set (as in ``_sample``)."""
     cols = climb.cols
     active, u = _enclosing_weights(pool[:, cols], tol=_POLISH_TOL, steps=_SEARCH_WEIGHT_STEPS)
     work = pool[active]  # the rest lies inside its ellipsoid (to the tolerance)
@@ -382,7 +347,9 @@ def _polish(climb: Callable, pool: np.ndarray) -> np.ndarray:
         # Warm-started from the last weights (zero on the new points).
         start = np.concatenate([u, np.zeros(int(rose.sum()))])
         u, _ = khachiyan_weights(work[:, cols], _POLISH_TOL, _SEARCH_WEIGHT_STEPS, start)
-    return np.vstack([pool, work[active.size :]])
+    added = work.shape[0] - active.size
+    indices = np.concatenate([active, pool.shape[0] + np.arange(added)])
+    return np.vstack([pool, work[active.size :]]), (indices, u)
 
 
 def _still_climbing(
@@ -402,57 +369,175 @@ def _still_climbing(
 class _Climb:
     """One round of moves uphill in an ellipsoid's level, for points of the set (in place):
     (a) a walk along the active faces, (b) a ray from x0 past the point shifted uphill (or at
-    random) by its relative step, which doubles on success, else halves."""
+    random) by its relative step, which doubles on success, else halves (``_climb_round``)."""
 
     def __init__(self, F, x0, chol, cols, gen) -> None:
         self.F, self.x0, self.chol, self.cols, self.gen = F, x0, chol, cols, gen
-        self.embed = np.eye(x0.shape[0])[cols]
+        self.absF = np.abs(F)
+        self.chol_inv = np.linalg.inv(chol)
+        self.in_cols = np.zeros(x0.shape[0], dtype=np.bool_)
+        self.in_cols[cols] = True
 
     def __call__(self, points, level, step, mean, inv, uphill: bool) -> None:
-        F, cols = self.F, self.cols
-        gradient = (points[:, cols] - mean) @ inv @ self.embed
-        index, new = _face_walk(F, points, _along_faces(F, points, gradient))
-        _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        shift = gradient @ self.chol if uphill else self.gen.standard_normal(points.shape)
-        index, new = _shifted_rays(F, self.x0, self.chol, points, shift, step)
-        success = _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        step[:] = np.where(success, np.minimum(2.0 * step, 1.0), 0.5 * step)
+        m, n = points.shape
+        shift = np.empty((0, n)) if uphill else self.gen.standard_normal((m, n))
+        # Scattered back to full coordinates: rows and columns outside ``cols`` are zero.
+        full_mean, full_inv = np.zeros(n), np.zeros((n, n))
+        full_mean[self.cols] = mean
+        full_inv[np.ix_(self.cols, self.cols)] = inv
+        _climb_round(
+            self.F,
+            self.absF,
+            self.x0,
+            self.chol,
+            self.chol_inv,
+            self.in_cols,
+            points,
+            level,
+            step,
+            full_mean,
+            full_inv,
+            shift,
+            4.0 * (n + 1) * EPS,
+        )
 
 
-def _face_walk(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each point moved along its row of G to the first constraint met: (indices, new points)."""
-    t_star = _first_exit(F, points, G)
-    moving = np.flatnonzero(np.isfinite(t_star) & (t_star > 0))
-    new = points[moving] + (t_star[moving] * (1.0 - _SHRINK))[:, None] * G[moving]
-    ok = _inside(F, new)
-    return moving[ok], new[ok]
+@njit(cache=True)
+def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean, inv, shift, rel):
+    """One ``_Climb`` round for every row of ``points`` (in place, with ``level`` and ``step``),
+    compiled as one pass: per point, numpy would cost a dozen calls per round.
+
+    (a) The level's gradient, with its outward part along the normal of each active
+    constraint removed (active: first-order distance ``-q / |grad q|`` below ``_ACTIVE_RTOL``
+    times the point's norm scale; ``_FACE_SWEEPS`` sweeps of projections approximate the
+    projection onto the faces' intersection, edges then vertices), walked to the first
+    constraint met. (b) The ray from x0 through the point shifted, in the whitened coordinates
+    ``y = chol^{-1} (x - x0)``, by ``step |y|`` along the unit row of ``shift`` (empty: along
+    the gradient of (a), whitened). A trial replaces the point if it passes the membership
+    margin and lies higher in the level ``(x - mean)^T inv (x - mean)`` over ``in_cols``.
+    """
+    m, n = points.shape
+    k = F.shape[0]
+    lifted, d1 = np.ones(n + 1), np.zeros(n + 1)  # d1[n] stays 0: a direction
+    gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
+    normals, inv_norm2 = np.empty((k, n)), np.empty(k)
+    for p in range(m):
+        _matvec(inv, points[p] - mean, gradient)  # zero outside in_cols (scattered zeros)
+        G[:] = gradient
+        lifted[:n] = points[p]
+        scale = 1.0 + np.sqrt(_dot(points[p], points[p]))
+        for i in range(k):
+            q = 0.0
+            for a in range(n + 1):
+                row = 0.0
+                for b in range(n + 1):
+                    row += F[i, a, b] * lifted[b]
+                q += lifted[a] * row
+                if a < n:
+                    normals[i, a] = 2.0 * row
+            norm2 = _dot(normals[i], normals[i])
+            active = norm2 > 0.0 and -q < _ACTIVE_RTOL * scale * np.sqrt(norm2)
+            inv_norm2[i] = 1.0 / norm2 if active else 0.0
+        for _ in range(_FACE_SWEEPS):
+            for i in range(k):
+                if inv_norm2[i] > 0.0:
+                    outward = _dot(G, normals[i])
+                    if outward > 0.0:
+                        for j in range(n):
+                            G[j] -= outward * inv_norm2[i] * normals[i, j]
+        d1[:n] = G
+        t = _exit_one(F, lifted, d1)
+        if np.isfinite(t) and t > 0.0:
+            _try(
+                F,
+                absF,
+                points[p],
+                t * (1.0 - _SHRINK),
+                G,
+                in_cols,
+                mean,
+                inv,
+                rel,
+                points,
+                level,
+                p,
+            )
+        # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
+        if shift.shape[0] == 0:
+            _matvec(chol.T, gradient, move)
+        else:
+            move[:] = shift[p]
+        _matvec(chol_inv, points[p] - x0, G)  # G is now y
+        size = np.sqrt(_dot(move, move))
+        if size > 0.0:
+            factor = step[p] * np.sqrt(_dot(G, G)) / size
+            for j in range(n):
+                G[j] += factor * move[j]
+        size = np.sqrt(_dot(G, G))
+        success = False
+        if size > 0.0:
+            _matvec(chol, G / size, move)  # move is now the ray's direction
+            lifted[:n] = x0
+            d1[:n] = move
+            t = _exit_one(F, lifted, d1)
+            if np.isfinite(t):
+                success = _try(
+                    F,
+                    absF,
+                    x0,
+                    t * (1.0 - _SHRINK),
+                    move,
+                    in_cols,
+                    mean,
+                    inv,
+                    rel,
+                    points,
+                    level,
+                    p,
+                )
+        step[p] = min(2.0 * step[p], 1.0) if success else 0.5 * step[p]
 
 
-def _shifted_rays(
-    F: np.ndarray,
-    x0: np.ndarray,
-    chol: np.ndarray,
-    points: np.ndarray,
-    shift: np.ndarray,
-    step: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray]:
-    """Exits of the rays from x0 through each point shifted by ``step`` (relative) along its
-    row of ``shift``, in the whitened coordinates ``y = chol^{-1} (x - x0)``."""
-    Y = np.linalg.solve(chol, (points - x0).T).T
-    radius = np.linalg.norm(Y, axis=1, keepdims=True)
-    new, ok = _cast(F, x0, _unit_rows(Y + step[:, None] * radius * _unit_rows(shift)), chol)
-    return ok, new
+@njit(cache=True)
+def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p) -> bool:
+    """``points[p] = base + t direction`` (and its level) if that is in the set and higher."""
+    n = base.shape[0]
+    lifted = np.ones(n + 1)
+    for j in range(n):
+        lifted[j] = base[j] + t * direction[j]
+    if not _inside_one(F, absF, lifted, rel):
+        return False
+    value = 0.0
+    for a in range(n):
+        if in_cols[a]:
+            row = 0.0
+            for b in range(n):
+                if in_cols[b]:
+                    row += inv[a, b] * (lifted[b] - mean[b])
+            value += (lifted[a] - mean[a]) * row
+    if value > level[p]:
+        points[p] = lifted[:n]
+        level[p] = value
+        return True
+    return False
 
 
-def _keep_higher(
-    points: np.ndarray, level: np.ndarray, index: np.ndarray, new: np.ndarray, new_level
-) -> np.ndarray:
-    """Replace ``points[index]`` by ``new`` where its level is higher (in place); which did."""
-    up = new_level > level[index]
-    points[index[up]], level[index[up]] = new[up], new_level[up]
-    success = np.zeros(points.shape[0], dtype=bool)
-    success[index[up]] = True
-    return success
+@njit(cache=True)
+def _dot(a: np.ndarray, b: np.ndarray) -> float:
+    total = 0.0
+    for j in range(a.shape[0]):
+        total += a[j] * b[j]
+    return total
+
+
+@njit(cache=True)
+def _matvec(A: np.ndarray, x: np.ndarray, out: np.ndarray) -> None:
+    """``out = A x`` by plain loops (no BLAS call per point at n <= 6)."""
+    for a in range(A.shape[0]):
+        row = 0.0
+        for b in range(A.shape[1]):
+            row += A[a, b] * x[b]
+        out[a] = row
 
 
 def _enclosing_weights(
@@ -460,24 +545,33 @@ def _enclosing_weights(
     level: np.ndarray | None = None,
     tol: float = _WEIGHT_TOL,
     steps: int = _WEIGHT_STEPS,
+    start: tuple[np.ndarray, np.ndarray] | None = None,
+    away_tol: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Khachiyan's weights, computed on a working set of the points farthest out.
 
     Khachiyan's algorithm crawls on thousands of points near one boundary; the weights of a
     working set (zero elsewhere) are weights of all points, and the set grows by the points
     its ellipsoid leaves out until none is left out by more than the tolerance. ``level``
-    ranks the points for the first working set (default: by their covariance).
+    ranks the points for the first working set (default: by their covariance); ``start``
+    (indices, weights, full-dimensional) is the first working set and its weights instead.
+    Each growth of the set warm-starts from the last weights (zero on the new points).
+    ``away_tol`` as in ``khachiyan_weights``.
     Returns the working set's indices and its weights.
     """
     n = points.shape[1]
-    if level is None:  # the points' own spread (uniform weights) ranks them well enough
-        mean, cov = covariance(points, np.full(points.shape[0], 1.0 / points.shape[0]))
-        level = _level(points, mean, np.linalg.pinv(cov))
-    # The core set keeps the working set full-dimensional: the points farthest out can all lie
-    # near one edge.
-    active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
+    if start is not None:
+        active, u = start
+    else:
+        if level is None:  # the points' own spread (uniform weights) ranks them well enough
+            mean, cov = covariance(points, np.full(points.shape[0], 1.0 / points.shape[0]))
+            level = _level(points, mean, np.linalg.pinv(cov))
+        # The core set keeps the working set full-dimensional: the points farthest out can
+        # all lie near one edge.
+        active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
+        u = None
     for round_ in range(_WORKING_ROUNDS):
-        u, _ = khachiyan_weights(points[active], tol=tol, max_iter=steps)
+        u, _ = khachiyan_weights(points[active], tol, steps, u, away_tol)
         mean, cov = covariance(points[active], u)
         level = _level(points, mean, np.linalg.inv(n * cov))
         outside = np.setdiff1d(np.flatnonzero(level > 1.0 + tol), active)
@@ -485,13 +579,20 @@ def _enclosing_weights(
             break
         worst = outside[np.argsort(level[outside])[::-1][: _WORKING_PER_DIM * n]]
         active = np.concatenate([active, worst])
+        u = np.concatenate([u, np.zeros(worst.size)])
     return active, u
 
 
-def volume_lower_bound(points: np.ndarray) -> float:
-    """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume."""
+def volume_lower_bound(
+    points: np.ndarray, start: tuple[np.ndarray, np.ndarray] | None = None
+) -> float:
+    """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume.
+
+    ``start``: a first working set and its weights, as in ``_enclosing_weights``.
+    """
     n = points.shape[1]
-    active, u = _enclosing_weights(points)
+    # Only the bound matters here, not which points support it (``khachiyan_weights``).
+    active, u = _enclosing_weights(points, start=start, away_tol=np.inf)
     _, cov = covariance(points[active], u)
     sign, logdet = np.linalg.slogdet(n * cov)
     log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
@@ -557,13 +658,15 @@ def sampled_lower_bound(
     rng,
 ) -> float:
     """Lower bound on the minimum ``objective`` over all ellipsoids containing the set."""
-    points = sample_set(quadratics, outer, rng, dims)
+    points, start = _sample(quadratics, outer, rng, dims)
     if objective == "projection":
         points = _distinct(points[:, list(dims)])  # corners above one another coincide
+        start = None  # the polish's weights are on the points before the merge
     points = validated_points(points)
     if objective == "trace":
         # Frank-Wolfe on a working set: the points that matter to the minimum-volume ellipsoid
         # and those nearest the boundary of the (near-optimal) outer one.
         near = np.argsort(outer.level(points))[::-1][: _WORKING_PER_DIM * points.shape[1]]
-        return trace_lower_bound(points[np.union1d(_enclosing_weights(points)[0], near)])
-    return volume_lower_bound(points)
+        ellipsoid_set = _enclosing_weights(points, start=start)[0]
+        return trace_lower_bound(points[np.union1d(ellipsoid_set, near)])
+    return volume_lower_bound(points, start)
