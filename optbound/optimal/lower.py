@@ -160,27 +160,44 @@ def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def _first_exit_loop(F: np.ndarray, L: np.ndarray, D1: np.ndarray) -> np.ndarray:
+    k, n1 = F.shape[0], L.shape[1]
     out = np.empty(L.shape[0])
+    Fx, q = np.empty((k, n1)), np.empty(k)
     for p in range(L.shape[0]):
-        out[p] = _exit_one(F, L[p], D1[p])
+        _apply(F, L[p], Fx, q)
+        out[p] = _exit(F, Fx, q, D1[p, :-1])
     return out
 
 
 @njit(cache=True)
-def _exit_one(F: np.ndarray, x: np.ndarray, d1: np.ndarray) -> float:
-    """First exit ``t*`` from the lifted point ``x~`` along the lifted direction ``(d, 0)``."""
-    out = np.inf
+def _apply(F: np.ndarray, x: np.ndarray, Fx: np.ndarray, q: np.ndarray) -> None:
+    """``Fx[i] = F_i x~`` and ``q[i] = x~^T F_i x~`` at the lifted point ``x~`` (in place)."""
     n1 = x.shape[0]
     for i in range(F.shape[0]):
-        a, b, g = 0.0, 0.0, 0.0
+        total = 0.0
         for r in range(n1):
-            row_l, row_d = 0.0, 0.0
+            row = 0.0
             for c in range(n1):
-                row_l += F[i, r, c] * x[c]
-                row_d += F[i, r, c] * d1[c]
-            a += d1[r] * row_d
-            b += d1[r] * row_l
-            g += x[r] * row_l
+                row += F[i, r, c] * x[c]
+            Fx[i, r] = row
+            total += x[r] * row
+        q[i] = total
+
+
+@njit(cache=True)
+def _exit(F: np.ndarray, Fx: np.ndarray, q: np.ndarray, d: np.ndarray) -> float:
+    """First exit ``t*`` along ``d`` from the point of ``_apply``'s ``Fx``, ``q``: the smallest
+    positive root of ``q_i(x + t d) = a t^2 + 2 b t + g`` crossing upward (may be inf)."""
+    out = np.inf
+    n = d.shape[0]
+    for i in range(F.shape[0]):
+        a, b, g = 0.0, 0.0, q[i]
+        for r in range(n):
+            row = 0.0
+            for c in range(n):
+                row += F[i, r, c] * d[c]
+            a += d[r] * row
+            b += d[r] * Fx[i, r]
         disc = b * b - a * g
         root = np.sqrt(max(disc, 0.0))
         if a == 0.0:
@@ -418,35 +435,30 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
     """
     m, n = points.shape
     k = F.shape[0]
-    lifted, d1 = np.ones(n + 1), np.zeros(n + 1)  # d1[n] stays 0: a direction
+    lifted = np.ones(n + 1)
     gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
-    normals, inv_norm2 = np.empty((k, n)), np.empty(k)
+    Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
+    Fx0, q0 = np.empty((k, n + 1)), np.empty(k)
+    lifted[:n] = x0
+    _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
     for p in range(m):
         _matvec(inv, points[p] - mean, gradient)  # zero outside in_cols (scattered zeros)
         G[:] = gradient
         lifted[:n] = points[p]
+        _apply(F, lifted, Fx, q)  # the normals are 2 Fx[i, :n]
         scale = 1.0 + np.sqrt(_dot(points[p], points[p]))
         for i in range(k):
-            q = 0.0
-            for a in range(n + 1):
-                row = 0.0
-                for b in range(n + 1):
-                    row += F[i, a, b] * lifted[b]
-                q += lifted[a] * row
-                if a < n:
-                    normals[i, a] = 2.0 * row
-            norm2 = _dot(normals[i], normals[i])
-            active = norm2 > 0.0 and -q < _ACTIVE_RTOL * scale * np.sqrt(norm2)
-            inv_norm2[i] = 1.0 / norm2 if active else 0.0
+            norm2 = 4.0 * _dot(Fx[i, :n], Fx[i, :n])
+            active = norm2 > 0.0 and -q[i] < _ACTIVE_RTOL * scale * np.sqrt(norm2)
+            inv_norm2[i] = 4.0 / norm2 if active else 0.0  # 1 / |Fx[i, :n]|^2
         for _ in range(_FACE_SWEEPS):
             for i in range(k):
                 if inv_norm2[i] > 0.0:
-                    outward = _dot(G, normals[i])
+                    outward = _dot(G, Fx[i, :n])
                     if outward > 0.0:
                         for j in range(n):
-                            G[j] -= outward * inv_norm2[i] * normals[i, j]
-        d1[:n] = G
-        t = _exit_one(F, lifted, d1)
+                            G[j] -= outward * inv_norm2[i] * Fx[i, j]
+        t = _exit(F, Fx, q, G)
         if np.isfinite(t) and t > 0.0:
             _try(
                 F,
@@ -477,9 +489,7 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
         success = False
         if size > 0.0:
             _matvec(chol, G / size, move)  # move is now the ray's direction
-            lifted[:n] = x0
-            d1[:n] = move
-            t = _exit_one(F, lifted, d1)
+            t = _exit(F, Fx0, q0, move)
             if np.isfinite(t):
                 success = _try(
                     F,
@@ -500,13 +510,12 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
 
 @njit(cache=True)
 def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p) -> bool:
-    """``points[p] = base + t direction`` (and its level) if that is in the set and higher."""
+    """``points[p] = base + t direction`` (and its level) if that is higher and in the set
+    (the cheaper test first)."""
     n = base.shape[0]
     lifted = np.ones(n + 1)
     for j in range(n):
         lifted[j] = base[j] + t * direction[j]
-    if not _inside_one(F, absF, lifted, rel):
-        return False
     value = 0.0
     for a in range(n):
         if in_cols[a]:
@@ -515,11 +524,11 @@ def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p)
                 if in_cols[b]:
                     row += inv[a, b] * (lifted[b] - mean[b])
             value += (lifted[a] - mean[a]) * row
-    if value > level[p]:
-        points[p] = lifted[:n]
-        level[p] = value
-        return True
-    return False
+    if not value > level[p] or not _inside_one(F, absF, lifted, rel):
+        return False
+    points[p] = lifted[:n]
+    level[p] = value
+    return True
 
 
 @njit(cache=True)
@@ -547,6 +556,7 @@ def _enclosing_weights(
     steps: int = _WEIGHT_STEPS,
     start: tuple[np.ndarray, np.ndarray] | None = None,
     away_tol: float | None = None,
+    exchange: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Khachiyan's weights, computed on a working set of the points farthest out.
 
@@ -556,7 +566,7 @@ def _enclosing_weights(
     ranks the points for the first working set (default: by their covariance); ``start``
     (indices, weights, full-dimensional) is the first working set and its weights instead.
     Each growth of the set warm-starts from the last weights (zero on the new points).
-    ``away_tol`` as in ``khachiyan_weights``.
+    ``away_tol`` and ``exchange`` as in ``khachiyan_weights``.
     Returns the working set's indices and its weights.
     """
     n = points.shape[1]
@@ -571,7 +581,7 @@ def _enclosing_weights(
         active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
         u = None
     for round_ in range(_WORKING_ROUNDS):
-        u, _ = khachiyan_weights(points[active], tol, steps, u, away_tol)
+        u, _ = khachiyan_weights(points[active], tol, steps, u, away_tol, exchange)
         mean, cov = covariance(points[active], u)
         level = _level(points, mean, np.linalg.inv(n * cov))
         outside = np.setdiff1d(np.flatnonzero(level > 1.0 + tol), active)
@@ -591,8 +601,9 @@ def volume_lower_bound(
     ``start``: a first working set and its weights, as in ``_enclosing_weights``.
     """
     n = points.shape[1]
-    # Only the bound matters here, not which points support it (``khachiyan_weights``).
-    active, u = _enclosing_weights(points, start=start, away_tol=np.inf)
+    # Only the bound matters here, not which points support it (``khachiyan_weights``); the
+    # rough fits keep the separate steps, whose looser support the polish climbs from.
+    active, u = _enclosing_weights(points, start=start, away_tol=np.inf, exchange=True)
     _, cov = covariance(points[active], u)
     sign, logdet = np.linalg.slogdet(n * cov)
     log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
@@ -667,6 +678,5 @@ def sampled_lower_bound(
         # Frank-Wolfe on a working set: the points that matter to the minimum-volume ellipsoid
         # and those nearest the boundary of the (near-optimal) outer one.
         near = np.argsort(outer.level(points))[::-1][: _WORKING_PER_DIM * points.shape[1]]
-        ellipsoid_set = _enclosing_weights(points, start=start)[0]
-        return trace_lower_bound(points[np.union1d(ellipsoid_set, near)])
+        return trace_lower_bound(points[np.union1d(_enclosing_weights(points)[0], near)])
     return volume_lower_bound(points, start)
