@@ -275,9 +275,10 @@ def _cluster_firsts(points: np.ndarray, reference: np.ndarray) -> np.ndarray:
     relative to the spread of ``reference``)."""
     spread = float(np.max(np.ptp(reference, axis=0)))
     cells = np.round((points - reference.min(axis=0)) / (_MERGE_RTOL * spread))
-    # One integer key per row (a random linear hash of the cells; a collision only merges
-    # two points, which drops one valid point): np.unique on rows is several times slower.
-    keys = cells @ np.random.default_rng(0).uniform(1.0, 2.0, points.shape[1])
+    # One key per row (a linear hash of the cells with fixed irrational-like weights; a
+    # collision only merges two points, which drops one valid point): np.unique on rows is
+    # several times slower.
+    keys = cells @ (1.0 + np.modf(np.arange(1.0, points.shape[1] + 1.0) * 0.6180339887498949)[0])
     return np.unique(keys, return_index=True)[1]
 
 
@@ -329,7 +330,7 @@ def _sample(
             mean, cov = _rough_fit(fit, _level(fit, mean, inv))  # ranked by the last fit
             inv = np.linalg.inv(cov)
             level = _level(points[:, cols], mean, inv)
-        alive = _still_climbing(points, level, alive, stalled)
+        alive = _still_climbing(points, level, alive, stalled, start)
         if alive.size == 0:
             break
         sub, sub_level, sub_step = points[alive], level[alive], step[alive]
@@ -346,7 +347,9 @@ def _polish(climb: Callable, pool: np.ndarray) -> tuple[np.ndarray, tuple[np.nda
     ellipsoid's level: they pin the bound, and on curved boundaries the broad climb leaves
     them short of the contact. Also the last weights of that working set (as in ``_sample``)."""
     cols = climb.cols
-    active, u = _enclosing_weights(pool[:, cols], tol=_POLISH_TOL, steps=_SEARCH_WEIGHT_STEPS)
+    active, u = _enclosing_weights(
+        pool[:, cols], tol=_POLISH_TOL, steps=_SEARCH_WEIGHT_STEPS, exchange=True
+    )
     work = pool[active]  # the rest lies inside its ellipsoid (to the tolerance)
     step = np.full(work.shape[0], _FIRST_STEP)
     for round_ in range(_POLISH_ROUNDS):
@@ -363,24 +366,32 @@ def _polish(climb: Callable, pool: np.ndarray) -> tuple[np.ndarray, tuple[np.nda
         step = np.concatenate([step, tip_step[rose]])
         # Warm-started from the last weights (zero on the new points).
         start = np.concatenate([u, np.zeros(int(rose.sum()))])
-        u, _ = khachiyan_weights(work[:, cols], _POLISH_TOL, _SEARCH_WEIGHT_STEPS, start)
+        u, _ = khachiyan_weights(
+            work[:, cols], _POLISH_TOL, _SEARCH_WEIGHT_STEPS, start, exchange=True
+        )
     added = work.shape[0] - active.size
     indices = np.concatenate([active, pool.shape[0] + np.arange(added)])
-    return np.vstack([pool, work[active.size :]]), (indices, u)
+    support = u > 0.0  # the rest lies inside (to the tolerance): the bound's check re-adds
+    return np.vstack([pool, work[active.size :]]), (indices[support], u[support])
 
 
 def _still_climbing(
-    points: np.ndarray, level: np.ndarray, alive: np.ndarray, stalled: np.ndarray
+    points: np.ndarray,
+    level: np.ndarray,
+    alive: np.ndarray,
+    stalled: np.ndarray,
+    reference: np.ndarray,
 ) -> np.ndarray:
     """The climbing points worth another round: one of each cluster (rays that climbed to one
-    vertex), and of the points that did not rise for ``_PATIENCE`` rounds only those near the
-    top level (they pin the enclosing ellipsoid; a low one that stalled is at a low vertex)."""
+    vertex; grid relative to the spread of ``reference``), and of the points that did not
+    rise for ``_PATIENCE`` rounds only those near the top level (they pin the enclosing
+    ellipsoid; a low one that stalled is at a low vertex)."""
     top = np.max(level)
     keep = (stalled[alive] < _PATIENCE) | (level[alive] >= _TOP_BAND * top)
     alive = alive[keep]
     if alive.size == 0:
         return alive
-    return alive[np.sort(_cluster_firsts(points[alive], points))]
+    return alive[np.sort(_cluster_firsts(points[alive], reference))]
 
 
 class _Climb:
