@@ -267,14 +267,18 @@ def _unit_rows(Z: np.ndarray) -> np.ndarray:
 def _distinct(points: np.ndarray) -> np.ndarray:
     """One point of each cluster closer than ``_MERGE_RTOL`` (relative to the spread): rays
     that climbed to one vertex nearly coincide, and make Khachiyan's matrix singular."""
-    return points[np.sort(_cluster_firsts(points, points))]
+    return points[np.sort(_cluster_firsts(points, _grid(points)))]
 
 
-def _cluster_firsts(points: np.ndarray, reference: np.ndarray) -> np.ndarray:
-    """Indices of the first row of each ``_MERGE_RTOL`` cluster of ``points`` (grid cells
-    relative to the spread of ``reference``)."""
-    spread = float(np.max(np.ptp(reference, axis=0)))
-    cells = np.round((points - reference.min(axis=0)) / (_MERGE_RTOL * spread))
+def _grid(reference: np.ndarray) -> tuple[np.ndarray, float]:
+    """Origin and cell size of the ``_MERGE_RTOL`` grid relative to the spread of the rows."""
+    low = reference.min(axis=0)
+    return low, _MERGE_RTOL * float(np.max(reference.max(axis=0) - low))
+
+
+def _cluster_firsts(points: np.ndarray, grid: tuple[np.ndarray, float]) -> np.ndarray:
+    """Indices of the first row of each cluster of ``points``: one cell of ``grid``."""
+    cells = np.round((points - grid[0]) / grid[1])
     # One key per row (a linear hash of the cells with fixed irrational-like weights; a
     # collision only merges two points, which drops one valid point): np.unique on rows is
     # several times slower.
@@ -323,6 +327,7 @@ def _sample(
     step = np.full(points.shape[0], _FIRST_STEP)
     stalled = np.zeros(points.shape[0], dtype=int)
     alive = np.arange(points.shape[0])
+    grid = _grid(start)  # the first exits' spread: the climb changes it little
     for round_ in range(_SEARCH_ROUNDS):
         if round_ % _REFIT_EVERY == 0:
             # With the first exits, so that it never collapses onto the few vertices reached.
@@ -330,7 +335,7 @@ def _sample(
             mean, cov = _rough_fit(fit, _level(fit, mean, inv))  # ranked by the last fit
             inv = np.linalg.inv(cov)
             level = _level(points[:, cols], mean, inv)
-        alive = _still_climbing(points, level, alive, stalled, start)
+        alive = _still_climbing(points, level, alive, stalled, grid)
         if alive.size == 0:
             break
         sub, sub_level, sub_step = points[alive], level[alive], step[alive]
@@ -380,18 +385,18 @@ def _still_climbing(
     level: np.ndarray,
     alive: np.ndarray,
     stalled: np.ndarray,
-    reference: np.ndarray,
+    grid: tuple[np.ndarray, float],
 ) -> np.ndarray:
     """The climbing points worth another round: one of each cluster (rays that climbed to one
-    vertex; grid relative to the spread of ``reference``), and of the points that did not
-    rise for ``_PATIENCE`` rounds only those near the top level (they pin the enclosing
-    ellipsoid; a low one that stalled is at a low vertex)."""
+    vertex; one cell of ``grid``), and of the points that did not rise for ``_PATIENCE``
+    rounds only those near the top level (they pin the enclosing ellipsoid; a low one that
+    stalled is at a low vertex)."""
     top = np.max(level)
     keep = (stalled[alive] < _PATIENCE) | (level[alive] >= _TOP_BAND * top)
     alive = alive[keep]
     if alive.size == 0:
         return alive
-    return alive[np.sort(_cluster_firsts(points[alive], reference))]
+    return alive[np.sort(_cluster_firsts(points[alive], grid))]
 
 
 class _Climb:
