@@ -37,12 +37,14 @@ gave a volume bound 2.2 times too low that way). The points are:
    Only the climbing points go on: of rays that climbed to one vertex one is kept, and a point
    that has not risen (by ``_MIN_RISE``) for ``_PATIENCE`` rounds stops unless it is near the
    top level (``_TOP_BAND``): most of the thousands of rays stall at low vertices after a few
-   rounds (in 2-D all but one per vertex after two), and the rounds cost what the points do;
+   rounds (in 2-D all but one per vertex after two), and the rounds cost what the points do.
+   A round is one compiled pass over the points (``_climb_round``: about a microsecond per
+   point in 3-D with ten strips), not a dozen numpy calls;
 4. a polish: ``_POLISH_ROUNDS`` rounds of the same moves for the support points of the
-   minimum-volume ellipsoid of the points alone (refitted, warm-started, every round), in its
-   own level; where the set touches its optimum along curves (a strip's rims on an
-   ellipsoid) the broad climb leaves them short (SDP / bound - 1 on the battery's 3-D strip:
-   1.6e-4 without, 1.5e-5 with).
+   minimum-volume ellipsoid of the points alone (refitted, warm-started, every round, by
+   exchange steps), in its own level; where the set touches its optimum along curves (a
+   strip's rims on an ellipsoid) the broad climb leaves them short (SDP / bound - 1 on the
+   battery's 3-D strip: 1.6e-4 without, 1.5e-5 with).
 
 Every point is pulled back toward its start by a relative ``_SHRINK`` and kept only if every
 quadratic is negative there by more than a bound on its float64 rounding, so every point is in
@@ -51,14 +53,13 @@ a valid (if looser) bound. Near-duplicates (rays that climbed to one vertex) are
 Khachiyan's weights are computed on a growing working set of the points farthest out (zero
 weight elsewhere), started from the Kumar-Yildirim core set
 (``optbound.optimal.khachiyan.core_set``), which also keeps the working set full-dimensional.
+The volume bound's own weights start instead from the polish's last ones (its support
+points), take exchange steps and stop on ``max w <= (1 + tol) d`` alone, which already bounds
+the gap (``khachiyan_weights``): on the points clustered at a curved contact the separate
+forward and away steps zigzag, and took the 5 000 allowed steps without converging.
 
 Cost, as a ratio to the ``outer_ellipsoid`` call without the bound (median per instance of
-the recursive family, ``python -m benchmarks.lower_bound_cost``): about 4 at n = 2, k = 10,
-7 at n = 3, k = 10 and 5 at n = 4, k = 50 (17, 18 and 12 in the same run before the core-set
-start, the pruned climb and the polish; 2-core VM at load 4). What remains is the climb of
-point 3 from n = 3 on, whose thousands of rays the bound's quality rests on
-(``_RAYS_PER_DIM``: 300 rays per dimension lowered the 4-D bounds of the recursive family by
-0.4 % on average and 5 % at most against 450).
+the recursive family, ``python -m benchmarks.lower_bound_cost``): COST_TEXT
 """
 
 from __future__ import annotations
@@ -251,6 +252,9 @@ def _rough_fit(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Centre and weighted covariance of a rough minimum-volume ellipsoid around the points
     (its shape is n times the covariance); ``level`` as in ``_enclosing_weights``."""
+    # Separate forward and away steps here (not exchange steps): their rougher fit, as the
+    # climb's "uphill", gave the better trace bounds (battery's 3-D strip at condition 1e6,
+    # eight seeds: SDP / bound 1.0026 against 1.0037 on average).
     active, u = _enclosing_weights(points, level, _ROUGH_TOL, _SEARCH_WEIGHT_STEPS)
     return covariance(points[active], u)
 
@@ -617,8 +621,7 @@ def volume_lower_bound(
     ``start``: a first working set and its weights, as in ``_enclosing_weights``.
     """
     n = points.shape[1]
-    # Only the bound matters here, not which points support it (``khachiyan_weights``); the
-    # rough fits keep the separate steps, whose looser support the polish climbs from.
+    # Only the bound matters here, not which points support it (``khachiyan_weights``).
     active, u = _enclosing_weights(points, start=start, away_tol=np.inf, exchange=True)
     _, cov = covariance(points[active], u)
     sign, logdet = np.linalg.slogdet(n * cov)
