@@ -455,14 +455,14 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
     """
     m, n = points.shape
     k = F.shape[0]
-    lifted = np.ones(n + 1)
+    lifted, trial = np.ones(n + 1), np.ones(n + 1)
     gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
     Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
-    Fx0, q0 = np.empty((k, n + 1)), np.empty(k)
+    Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
     lifted[:n] = x0
     _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
     for p in range(m):
-        _matvec(inv, points[p] - mean, gradient)  # zero outside in_cols (scattered zeros)
+        _matvec(inv, points[p], mean, gradient)  # zero outside in_cols (scattered zeros)
         G[:] = gradient
         lifted[:n] = points[p]
         _apply(F, lifted, Fx, q)  # the normals are 2 Fx[i, :n]
@@ -493,13 +493,14 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
                 points,
                 level,
                 p,
+                trial,
             )
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
-            _matvec(chol.T, gradient, move)
+            _matvec(chol.T, gradient, zero, move)
         else:
             move[:] = shift[p]
-        _matvec(chol_inv, points[p] - x0, G)  # G is now y
+        _matvec(chol_inv, points[p], x0, G)  # G is now y
         size = np.sqrt(_dot(move, move))
         if size > 0.0:
             factor = step[p] * np.sqrt(_dot(G, G)) / size
@@ -508,7 +509,8 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
         size = np.sqrt(_dot(G, G))
         success = False
         if size > 0.0:
-            _matvec(chol, G / size, move)  # move is now the ray's direction
+            G /= size
+            _matvec(chol, G, zero, move)  # move is now the ray's direction
             t = _exit(F, Fx0, q0, move)
             if np.isfinite(t):
                 success = _try(
@@ -524,16 +526,16 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
                     points,
                     level,
                     p,
+                    trial,
                 )
         step[p] = min(2.0 * step[p], 1.0) if success else 0.5 * step[p]
 
 
 @njit(cache=True)
-def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p) -> bool:
+def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p, lifted) -> bool:
     """``points[p] = base + t direction`` (and its level) if that is higher and in the set
-    (the cheaper test first)."""
+    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones."""
     n = base.shape[0]
-    lifted = np.ones(n + 1)
     for j in range(n):
         lifted[j] = base[j] + t * direction[j]
     value = 0.0
@@ -560,12 +562,12 @@ def _dot(a: np.ndarray, b: np.ndarray) -> float:
 
 
 @njit(cache=True)
-def _matvec(A: np.ndarray, x: np.ndarray, out: np.ndarray) -> None:
-    """``out = A x`` by plain loops (no BLAS call per point at n <= 6)."""
+def _matvec(A: np.ndarray, x: np.ndarray, origin: np.ndarray, out: np.ndarray) -> None:
+    """``out = A (x - origin)`` by plain loops (no BLAS call or temporary per point)."""
     for a in range(A.shape[0]):
         row = 0.0
         for b in range(A.shape[1]):
-            row += A[a, b] * x[b]
+            row += A[a, b] * (x[b] - origin[b])
         out[a] = row
 
 
