@@ -459,6 +459,7 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
     gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
     Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
     Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
+    geometry, metric = (F, absF, rel), (in_cols, mean, inv)
     lifted[:n] = x0
     _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
     for p in range(m):
@@ -480,21 +481,7 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
                             G[j] -= outward * inv_norm2[i] * Fx[i, j]
         t = _exit(F, Fx, q, G)
         if np.isfinite(t) and t > 0.0:
-            _try(
-                F,
-                absF,
-                points[p],
-                t * (1.0 - _SHRINK),
-                G,
-                in_cols,
-                mean,
-                inv,
-                rel,
-                points,
-                level,
-                p,
-                trial,
-            )
+            _try(geometry, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
             _matvec(chol.T, gradient, zero, move)
@@ -513,28 +500,18 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
             _matvec(chol, G, zero, move)  # move is now the ray's direction
             t = _exit(F, Fx0, q0, move)
             if np.isfinite(t):
-                success = _try(
-                    F,
-                    absF,
-                    x0,
-                    t * (1.0 - _SHRINK),
-                    move,
-                    in_cols,
-                    mean,
-                    inv,
-                    rel,
-                    points,
-                    level,
-                    p,
-                    trial,
-                )
+                shrunk = t * (1.0 - _SHRINK)
+                success = _try(geometry, metric, x0, shrunk, move, points, level, p, trial)
         step[p] = min(2.0 * step[p], 1.0) if success else 0.5 * step[p]
 
 
 @njit(cache=True)
-def _try(F, absF, base, t, direction, in_cols, mean, inv, rel, points, level, p, lifted) -> bool:
+def _try(geometry, metric, base, t, direction, points, level, p, lifted) -> bool:
     """``points[p] = base + t direction`` (and its level) if that is higher and in the set
-    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones."""
+    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones. ``geometry`` is
+    ``(F, |F|, rel)`` of the membership test, ``metric`` ``(in_cols, mean, inv)`` of the level."""
+    F, absF, rel = geometry
+    in_cols, mean, inv = metric
     n = base.shape[0]
     for j in range(n):
         lifted[j] = base[j] + t * direction[j]
