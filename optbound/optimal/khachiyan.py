@@ -57,18 +57,20 @@ def khachiyan_weights(
     answer for a subset of the points padded with zeros; default: the core set's.
     ``away_tol``: tolerance of the away condition ``min_{u_i > 0} w_i >= (1 - away_tol) d``
     (default ``tol``). ``inf`` stops on ``max w <= (1 + tol) d`` alone: that already puts the
-    weights' volume bound within a factor ``(1 + tol)^{d/2}`` of the minimum (the scaled
-    ellipsoid contains the points), and the away condition, which identifies the support
-    points, can take thousands of steps more on clustered points.
+    weights' volume bound within a factor ``(1 + tol d / n)^{n/2}`` of the minimum (every
+    point's level in the weights' ellipsoid, shape ``n Sigma``, is at most
+    ``1 + tol d / n``), and the away condition, which identifies the support points, can take
+    thousands of steps more on clustered points.
     ``exchange``: take exchange steps instead (module docstring).
 
     Returns the weights and whether the tolerance was reached within ``max_iter`` steps (any
     weights still give the lower bound of ``optbound.optimal.lower``).
 
     A step ``X <- (1 - s) X + s q_j q_j^T`` updates ``X^{-1}`` and all ``w_i`` in O(m d) by the
-    Sherman-Morrison formula; they are recomputed from scratch every ``_REFRESH`` steps to
-    keep rounding from accumulating. The loop is compiled (numba): one step costs about a
-    microsecond per hundred points instead of tens of microseconds of numpy call overhead.
+    Sherman-Morrison formula (an exchange step: two such updates); they are recomputed from
+    scratch every ``_REFRESH`` steps to keep rounding from accumulating. The loop is compiled
+    (numba): one step costs about a microsecond per hundred points instead of tens of
+    microseconds of numpy call overhead.
     """
     P = np.asarray(points, dtype=float)
     m = P.shape[0]
