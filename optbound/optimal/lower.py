@@ -124,31 +124,53 @@ def _lifted(X: np.ndarray) -> np.ndarray:
 def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Rows of X where every ``q_i`` is negative by more than its float64 rounding bound."""
     lifted = _lifted(X)
-    return _inside_loop(np.ascontiguousarray(F), np.abs(F), lifted, 4.0 * lifted.shape[1] * EPS)
+    return _inside_loop(_membership(F, 4.0 * lifted.shape[1] * EPS), lifted)
+
+
+def _membership(F: np.ndarray, rel: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """What ``_inside_one`` needs: the forms, their entrywise absolute values and the sums of
+    those, and the relative rounding bound."""
+    absF = np.abs(F)
+    return np.ascontiguousarray(F), absF, absF.sum(axis=(1, 2)), rel
 
 
 @njit(cache=True)
-def _inside_loop(F: np.ndarray, absF: np.ndarray, L: np.ndarray, rel: float) -> np.ndarray:
+def _inside_loop(membership, L: np.ndarray) -> np.ndarray:
     """``_inside_one`` per row ``x~`` of L."""
     out = np.empty(L.shape[0], dtype=np.bool_)
     for p in range(L.shape[0]):
-        out[p] = _inside_one(F, absF, L[p], rel)
+        out[p] = _inside_one(membership, L[p])
     return out
 
 
 @njit(cache=True)
-def _inside_one(F: np.ndarray, absF: np.ndarray, x: np.ndarray, rel: float) -> bool:
+def _inside_one(membership, x: np.ndarray) -> bool:
     """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, at the lifted point ``x~`` (compiled:
-    stopping at the first form that fails)."""
+    stopping at the first form that fails).
+
+    ``|x~|^T |F_i| |x~| <= max|x~|^2 sum|F_i|``: where ``q_i`` is below twice that bound (the
+    factor 2 covers the rounding of both sides) the test holds without the products by
+    ``|F_i|``, which are the costlier half.
+    """
+    F, absF, abs_sum, rel = membership
     d = x.shape[0]
+    top = 0.0
+    for a in range(d):
+        top = max(top, abs(x[a]))
     for i in range(F.shape[0]):
-        value, size = 0.0, 0.0
+        value = 0.0
         for a in range(d):
-            row, row_abs = 0.0, 0.0
+            row = 0.0
             for b in range(d):
                 row += F[i, a, b] * x[b]
-                row_abs += absF[i, a, b] * abs(x[b])
             value += x[a] * row
+        if value < -2.0 * rel * abs_sum[i] * top * top:
+            continue
+        size = 0.0
+        for a in range(d):
+            row_abs = 0.0
+            for b in range(d):
+                row_abs += absF[i, a, b] * abs(x[b])
             size += abs(x[a]) * row_abs
         if not value < -rel * size:
             return False
@@ -417,7 +439,7 @@ class _Climb:
 
     def __init__(self, F, x0, chol, cols, gen) -> None:
         self.F, self.x0, self.chol, self.cols, self.gen = F, x0, chol, cols, gen
-        self.absF = np.abs(F)
+        self.membership = _membership(F, 4.0 * (x0.shape[0] + 1) * EPS)
         self.chol_inv = np.linalg.inv(chol)
         self.in_cols = np.zeros(x0.shape[0], dtype=np.bool_)
         self.in_cols[cols] = True
@@ -430,8 +452,7 @@ class _Climb:
         full_mean[self.cols] = mean
         full_inv[np.ix_(self.cols, self.cols)] = inv
         _climb_round(
-            self.F,
-            self.absF,
+            self.membership,
             self.x0,
             self.chol,
             self.chol_inv,
@@ -442,12 +463,11 @@ class _Climb:
             full_mean,
             full_inv,
             shift,
-            4.0 * (n + 1) * EPS,
         )
 
 
 @njit(cache=True)
-def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean, inv, shift, rel):
+def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, mean, inv, shift):
     """One ``_Climb`` round for every row of ``points`` (in place, with ``level`` and ``step``),
     compiled as one pass: per point, numpy would cost a dozen calls per round.
 
@@ -460,13 +480,14 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
     the gradient of (a), whitened). A trial replaces the point if it passes the membership
     margin and lies higher in the level ``(x - mean)^T inv (x - mean)`` over ``in_cols``.
     """
+    F = membership[0]  # membership: ``_membership``'s, for ``_inside_one``
     m, n = points.shape
     k = F.shape[0]
     lifted, trial = np.ones(n + 1), np.ones(n + 1)
     gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
     Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
     Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
-    geometry, metric = (F, absF, rel), (in_cols, mean, inv)
+    metric = (in_cols, mean, inv)
     lifted[:n] = x0
     _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
     for p in range(m):
@@ -488,7 +509,7 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
                             G[j] -= outward * inv_norm2[i] * Fx[i, j]
         t = _exit(F, Fx, q, G)
         if np.isfinite(t) and t > 0.0:
-            _try(geometry, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
+            _try(membership, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
             _matvec(chol.T, gradient, zero, move)
@@ -508,16 +529,15 @@ def _climb_round(F, absF, x0, chol, chol_inv, in_cols, points, level, step, mean
             t = _exit(F, Fx0, q0, move)
             if np.isfinite(t):
                 shrunk = t * (1.0 - _SHRINK)
-                success = _try(geometry, metric, x0, shrunk, move, points, level, p, trial)
+                success = _try(membership, metric, x0, shrunk, move, points, level, p, trial)
         step[p] = min(2.0 * step[p], 1.0) if success else 0.5 * step[p]
 
 
 @njit(cache=True)
-def _try(geometry, metric, base, t, direction, points, level, p, lifted) -> bool:
+def _try(membership, metric, base, t, direction, points, level, p, lifted) -> bool:
     """``points[p] = base + t direction`` (and its level) if that is higher and in the set
-    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones. ``geometry`` is
-    ``(F, |F|, rel)`` of the membership test, ``metric`` ``(in_cols, mean, inv)`` of the level."""
-    F, absF, rel = geometry
+    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones. ``membership`` is
+    ``_membership``'s, ``metric`` ``(in_cols, mean, inv)`` of the level."""
     in_cols, mean, inv = metric
     n = base.shape[0]
     for j in range(n):
@@ -530,7 +550,7 @@ def _try(geometry, metric, base, t, direction, points, level, p, lifted) -> bool
                 if in_cols[b]:
                     row += inv[a, b] * (lifted[b] - mean[b])
             value += (lifted[a] - mean[a]) * row
-    if not value > level[p] or not _inside_one(F, absF, lifted, rel):
+    if not value > level[p] or not _inside_one(membership, lifted):
         return False
     points[p] = lifted[:n]
     level[p] = value
