@@ -79,7 +79,7 @@ from numba import njit
 
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
-from optbound.optimal.khachiyan import core_set, covariance, khachiyan_weights
+from optbound.optimal.khachiyan import _quad, core_set, covariance, khachiyan_weights
 from optbound.sets import Ellipsoid, QuadraticSet
 from optbound.sets import _validate as v
 
@@ -153,26 +153,13 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     ``|F_i|``, which are the costlier half.
     """
     F, absF, abs_sum, rel = membership
-    d = x.shape[0]
-    top = 0.0
-    for a in range(d):
-        top = max(top, abs(x[a]))
+    x_abs = np.abs(x)
+    top = np.max(x_abs)
     for i in range(F.shape[0]):
-        value = 0.0
-        for a in range(d):
-            row = 0.0
-            for b in range(d):
-                row += F[i, a, b] * x[b]
-            value += x[a] * row
+        value = _quad(F[i], x)
         if value < -2.0 * rel * abs_sum[i] * top * top:
             continue
-        size = 0.0
-        for a in range(d):
-            row_abs = 0.0
-            for b in range(d):
-                row_abs += absF[i, a, b] * abs(x[b])
-            size += abs(x[a]) * row_abs
-        if not value < -rel * size:
+        if not value < -rel * _quad(absF[i], x_abs):
             return False
     return True
 
