@@ -11,6 +11,14 @@ can hold, so the iteration count grew with the number of points. Lift the points
   ``s = (w_j - d) / (d (w_j - 1)) > 0``;
 - away step from the supporting point of smallest ``w_j``, the same formula (now ``s < 0``),
   limited by ``s >= -u_j / (1 - u_j)`` so the weight stays non-negative.
+- or (``exchange=True``) both at once: the vertex-exchange step of Böhning (1986), weight
+  ``delta`` moved from the supporting point ``i`` of smallest ``w_i`` to the point ``j`` of
+  largest ``w_j``, with the exact line search of ``det X``:
+  ``det X' / det X = 1 + delta (w_j - w_i) - delta^2 (w_i w_j - w_ij^2)`` with
+  ``w_ij = q_i^T X^{-1} q_j``, so ``delta = min(u_i, (w_j - w_i) / (2 (w_i w_j - w_ij^2)))``.
+  Where the points cluster near the contact (the polished points of
+  ``optbound.optimal.lower``) the separate steps zigzag, moving weight back and forth
+  between neighbours by tiny steps: 20 000 steps instead of 1 700 on a 3-D example.
 
 Stop when ``max w <= (1 + tol) d`` and ``min_{u_i > 0} w_i >= (1 - tol) d``. The ellipsoid
 ``{x : (x - c)^T H (x - c) <= 1}`` with ``c = P u`` and ``H^{-1} = n (P diag(u) P^T - c c^T)``
@@ -40,19 +48,29 @@ def khachiyan_weights(
     tol: float = 1e-7,
     max_iter: int = 100_000,
     start: np.ndarray | None = None,
+    away_tol: float | None = None,
+    exchange: bool = False,
 ) -> tuple[np.ndarray, bool]:
     """The weights ``u`` (simplex, ``(m,)``) of Khachiyan's algorithm with away steps.
 
     ``start``: initial weights (in the simplex, their ellipsoid full-dimensional), e.g. the
     answer for a subset of the points padded with zeros; default: the core set's.
+    ``away_tol``: tolerance of the away condition ``min_{u_i > 0} w_i >= (1 - away_tol) d``
+    (default ``tol``). ``inf`` stops on ``max w <= (1 + tol) d`` alone: that already puts the
+    weights' volume bound within a factor ``(1 + tol d / n)^{n/2}`` of the minimum (every
+    point's level in the weights' ellipsoid, shape ``n Sigma``, is at most
+    ``1 + tol d / n``), and the away condition, which identifies the support points, can take
+    thousands of steps more on clustered points.
+    ``exchange``: take exchange steps instead (module docstring).
 
     Returns the weights and whether the tolerance was reached within ``max_iter`` steps (any
     weights still give the lower bound of ``optbound.optimal.lower``).
 
     A step ``X <- (1 - s) X + s q_j q_j^T`` updates ``X^{-1}`` and all ``w_i`` in O(m d) by the
-    Sherman-Morrison formula; they are recomputed from scratch every ``_REFRESH`` steps to
-    keep rounding from accumulating. The loop is compiled (numba): one step costs about a
-    microsecond per hundred points instead of tens of microseconds of numpy call overhead.
+    Sherman-Morrison formula (an exchange step: two such updates); they are recomputed from
+    scratch every ``_REFRESH`` steps to keep rounding from accumulating. The loop is compiled
+    (numba): one step costs about a microsecond per hundred points instead of tens of
+    microseconds of numpy call overhead.
     """
     P = np.asarray(points, dtype=float)
     m = P.shape[0]
@@ -63,7 +81,8 @@ def khachiyan_weights(
         u[core] = 1.0 / core.size
     else:
         u = np.array(start, dtype=float)
-    converged = _iterate(Q, u, float(tol), int(max_iter), _REFRESH)
+    away = float(tol if away_tol is None else away_tol)
+    converged = _iterate(Q, u, float(tol), away, bool(exchange), int(max_iter), _REFRESH)
     return u, bool(converged)
 
 
@@ -113,8 +132,17 @@ def _quad(A: np.ndarray, q: np.ndarray) -> float:
 
 
 @njit(cache=True)
-def _iterate(Q: np.ndarray, u: np.ndarray, tol: float, max_iter: int, refresh: int) -> bool:
-    """Forward and away steps on ``u`` (in place) until the tolerance holds; whether it did."""
+def _iterate(
+    Q: np.ndarray,
+    u: np.ndarray,
+    tol: float,
+    away_tol: float,
+    exchange: bool,
+    max_iter: int,
+    refresh: int,
+) -> bool:
+    """Forward and away steps, or exchange steps, on ``u`` (in place) until the tolerance
+    holds; whether it did."""
     m, d = Q.shape
     X_inv = np.empty((d, d))
     w = np.empty(m)
@@ -127,24 +155,58 @@ def _iterate(Q: np.ndarray, u: np.ndarray, tol: float, max_iter: int, refresh: i
                 up = i
             if u[i] > 0.0 and (down < 0 or w[i] < w[down]):
                 down = i
-        if w[up] <= (1.0 + tol) * d and w[down] >= (1.0 - tol) * d:
+        if w[up] <= (1.0 + tol) * d and w[down] >= (1.0 - away_tol) * d:
             return True
-        j = up if w[up] - d >= d - w[down] else down
-        step = (w[j] - d) / (d * (w[j] - 1.0))
-        if j == down:
-            step = max(step, -u[j] / (1.0 - u[j]))
+        if not exchange:
+            X_inv = _todd_yildirim_step(Q, u, X_inv, w, up, down)
+            continue
+        # Not converged, so w[up] >= d > w[down] or w[up] > d >= w[down] (sum u_i w_i = d):
+        # the exchange raises det X for small delta.
+        z_up = X_inv @ Q[up]
+        cross = 0.0
+        for a in range(d):
+            cross += Q[down, a] * z_up[a]
+        curvature = w[up] * w[down] - cross * cross  # >= 0 (Cauchy-Schwarz)
+        delta = u[down]
+        if curvature > 0.0:
+            delta = min(delta, (w[up] - w[down]) / (2.0 * curvature))
+        u[up] += delta
+        u[down] = max(u[down] - delta, 0.0)
+        # Sherman-Morrison twice: + delta q_up q_up^T, then - delta q_down q_down^T.
+        den_up = 1.0 + delta * w[up]
+        X_inv = X_inv - delta * np.outer(z_up, z_up) / den_up
+        z_down = X_inv @ Q[down]
+        den_down = 1.0 - delta * _quad(X_inv, Q[down])
+        X_inv = X_inv + delta * np.outer(z_down, z_down) / den_down
         for i in range(m):
-            u[i] = max(u[i] * (1.0 - step) + (step if i == j else 0.0), 0.0)  # 0: full away step
-        # Sherman-Morrison for X' = (1 - s) X + s q_j q_j^T.
-        z = X_inv @ Q[j]
-        denom = (1.0 - step) + step * w[j]
-        X_inv = (X_inv - step * np.outer(z, z) / denom) / (1.0 - step)
-        for i in range(m):
-            qz = 0.0
+            a_up, a_down = 0.0, 0.0
             for a in range(d):
-                qz += Q[i, a] * z[a]
-            w[i] = (w[i] - step * qz * qz / denom) / (1.0 - step)
+                a_up += Q[i, a] * z_up[a]
+                a_down += Q[i, a] * z_down[a]
+            w[i] += delta * (a_down * a_down / den_down - a_up * a_up / den_up)
     return False
+
+
+@njit(cache=True)
+def _todd_yildirim_step(Q, u, X_inv, w, up: int, down: int) -> np.ndarray:
+    """A forward step to ``up`` or an away step from ``down``, whichever violates more (in
+    place on u and w); the new ``X^{-1}``."""
+    m, d = Q.shape
+    j = up if w[up] - d >= d - w[down] else down
+    step = (w[j] - d) / (d * (w[j] - 1.0))
+    if j == down:
+        step = max(step, -u[j] / (1.0 - u[j]))
+    for i in range(m):
+        u[i] = max(u[i] * (1.0 - step) + (step if i == j else 0.0), 0.0)  # 0: full away step
+    # Sherman-Morrison for X' = (1 - s) X + s q_j q_j^T.
+    z = X_inv @ Q[j]
+    denom = (1.0 - step) + step * w[j]
+    for i in range(m):
+        qz = 0.0
+        for a in range(d):
+            qz += Q[i, a] * z[a]
+        w[i] = (w[i] - step * qz * qz / denom) / (1.0 - step)
+    return (X_inv - step * np.outer(z, z) / denom) / (1.0 - step)
 
 
 def khachiyan_mvee(points: np.ndarray, tol: float = 1e-7, max_iter: int = 100_000) -> Ellipsoid:

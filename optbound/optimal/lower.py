@@ -37,12 +37,14 @@ gave a volume bound 2.2 times too low that way). The points are:
    Only the climbing points go on: of rays that climbed to one vertex one is kept, and a point
    that has not risen (by ``_MIN_RISE``) for ``_PATIENCE`` rounds stops unless it is near the
    top level (``_TOP_BAND``): most of the thousands of rays stall at low vertices after a few
-   rounds (in 2-D all but one per vertex after two), and the rounds cost what the points do;
+   rounds (in 2-D all but one per vertex after two), and the rounds cost what the points do.
+   A round is one compiled pass over the points (``_climb_round``: about a microsecond per
+   point in 3-D with ten strips), not a dozen numpy calls;
 4. a polish: ``_POLISH_ROUNDS`` rounds of the same moves for the support points of the
-   minimum-volume ellipsoid of the points alone (refitted, warm-started, every round), in its
-   own level; where the set touches its optimum along curves (a strip's rims on an
-   ellipsoid) the broad climb leaves them short (SDP / bound - 1 on the battery's 3-D strip:
-   1.6e-4 without, 1.5e-5 with).
+   minimum-volume ellipsoid of the points alone (refitted, warm-started, every round, by
+   exchange steps), in its own level; where the set touches its optimum along curves (a
+   strip's rims on an ellipsoid) the broad climb leaves them short (SDP / bound - 1 on the
+   battery's 3-D strip: 1.6e-4 without, 1.5e-5 with).
 
 Every point is pulled back toward its start by a relative ``_SHRINK`` and kept only if every
 quadratic is negative there by more than a bound on its float64 rounding, so every point is in
@@ -51,14 +53,21 @@ a valid (if looser) bound. Near-duplicates (rays that climbed to one vertex) are
 Khachiyan's weights are computed on a growing working set of the points farthest out (zero
 weight elsewhere), started from the Kumar-Yildirim core set
 (``optbound.optimal.khachiyan.core_set``), which also keeps the working set full-dimensional.
+The volume bound's own weights start instead from the polish's last ones (its support
+points), take exchange steps and stop on ``max w <= (1 + tol) d`` alone, which already bounds
+the gap (``khachiyan_weights``): on the points clustered at a curved contact the separate
+forward and away steps zigzag, and took the 5 000 allowed steps without converging.
 
 Cost, as a ratio to the ``outer_ellipsoid`` call without the bound (median per instance of
-the recursive family, ``python -m benchmarks.lower_bound_cost``): about 4 at n = 2, k = 10,
-7 at n = 3, k = 10 and 5 at n = 4, k = 50 (17, 18 and 12 in the same run before the core-set
-start, the pruned climb and the polish; 2-core VM at load 4). What remains is the climb of
-point 3 from n = 3 on, whose thousands of rays the bound's quality rests on
-(``_RAYS_PER_DIM``: 300 rays per dimension lowered the 4-D bounds of the recursive family by
-0.4 % on average and 5 % at most against 450).
+the recursive family, ``python -m benchmarks.lower_bound_cost``): about 2 at n = 2, k = 10,
+4-5 at n = 3, k = 10 and 3 at n = 4, k = 50 (3.2-3.5, 6.6-7.9 and 5.0-5.2 in the same runs
+for the code before the compiled climbing round, the exchange steps and the warm-started
+final weights; 2-core VM at load 1.0-1.3). In absolute terms: 8 ms, 22-25 ms and 0.14-0.15 s
+against 12 ms, 35-41 ms and 0.23-0.25 s. What remains is mostly the climb of point 3,
+about a microsecond per point and round over some 12 000 point-rounds in 3-D with ten
+strips: its thousands of rays are what the bound's quality rests on (``_RAYS_PER_DIM``: 300
+rays per dimension lowered the 4-D bounds of the recursive family by 0.4 % on average and 5 %
+at most against 450).
 """
 
 from __future__ import annotations
@@ -71,7 +80,7 @@ from numba import njit
 
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
-from optbound.optimal.khachiyan import core_set, covariance, khachiyan_weights
+from optbound.optimal.khachiyan import _quad, core_set, covariance, khachiyan_weights
 from optbound.sets import Ellipsoid, QuadraticSet
 from optbound.sets import _validate as v
 
@@ -113,55 +122,47 @@ def _lifted(X: np.ndarray) -> np.ndarray:
     return np.hstack([X, np.ones((X.shape[0], 1))])
 
 
-def _forms(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
-    """``U_m^T F_k V_m`` for every row pair m and form k, shape (m, k)."""
-    return _forms_loop(np.ascontiguousarray(U), np.ascontiguousarray(F), np.ascontiguousarray(V))
-
-
-@njit(cache=True)
-def _forms_loop(U: np.ndarray, F: np.ndarray, V: np.ndarray) -> np.ndarray:
-    # Plain loops: numpy's einsum / batched matmul cost more in overhead at n + 1 <= 7.
-    m, d = U.shape
-    k = F.shape[0]
-    out = np.empty((m, k))
-    for p in range(m):
-        for i in range(k):
-            total = 0.0
-            for a in range(d):
-                row = 0.0
-                for b in range(d):
-                    row += F[i, a, b] * V[p, b]
-                total += U[p, a] * row
-            out[p, i] = total
-    return out
-
-
 def _inside(F: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Rows of X where every ``q_i`` is negative by more than its float64 rounding bound."""
     lifted = _lifted(X)
-    return _inside_loop(np.ascontiguousarray(F), np.abs(F), lifted, 4.0 * lifted.shape[1] * EPS)
+    return _inside_loop(_membership(F, 4.0 * lifted.shape[1] * EPS), lifted)
+
+
+def _membership(F: np.ndarray, rel: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """What ``_inside_one`` needs: the forms, their entrywise absolute values and the sums of
+    those, and the relative rounding bound."""
+    absF = np.abs(F)
+    return np.ascontiguousarray(F), absF, absF.sum(axis=(1, 2)), rel
 
 
 @njit(cache=True)
-def _inside_loop(F: np.ndarray, absF: np.ndarray, L: np.ndarray, rel: float) -> np.ndarray:
-    """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, per row ``x~`` of L (compiled: one
-    pass per point, stopping at the first form that fails)."""
-    m, d = L.shape
-    out = np.ones(m, dtype=np.bool_)
-    for p in range(m):
-        for i in range(F.shape[0]):
-            value, size = 0.0, 0.0
-            for a in range(d):
-                row, row_abs = 0.0, 0.0
-                for b in range(d):
-                    row += F[i, a, b] * L[p, b]
-                    row_abs += absF[i, a, b] * abs(L[p, b])
-                value += L[p, a] * row
-                size += abs(L[p, a]) * row_abs
-            if not value < -rel * size:
-                out[p] = False
-                break
+def _inside_loop(membership, L: np.ndarray) -> np.ndarray:
+    """``_inside_one`` per row ``x~`` of L."""
+    out = np.empty(L.shape[0], dtype=np.bool_)
+    for p in range(L.shape[0]):
+        out[p] = _inside_one(membership, L[p])
     return out
+
+
+@njit(cache=True)
+def _inside_one(membership, x: np.ndarray) -> bool:
+    """``q_i(x) < -rel |x~|^T |F_i| |x~|`` for every form, at the lifted point ``x~`` (compiled:
+    stopping at the first form that fails).
+
+    ``|x~|^T |F_i| |x~| <= max|x~|^2 sum|F_i|``: where ``q_i`` is below twice that bound (the
+    factor 2 covers the rounding of both sides) the test holds without the products by
+    ``|F_i|``, which are the costlier half.
+    """
+    F, absF, abs_sum, rel = membership
+    x_abs = np.abs(x)
+    top = np.max(x_abs)
+    for i in range(F.shape[0]):
+        value = _quad(F[i], x)
+        if value < -2.0 * rel * abs_sum[i] * top * top:
+            continue
+        if not value < -rel * _quad(absF[i], x_abs):
+            return False
+    return True
 
 
 def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
@@ -177,29 +178,54 @@ def _first_exit(F: np.ndarray, X0: np.ndarray, D: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def _first_exit_loop(F: np.ndarray, L: np.ndarray, D1: np.ndarray) -> np.ndarray:
-    m, d = L.shape
-    out = np.full(m, np.inf)
-    for p in range(m):
-        for i in range(F.shape[0]):
-            a, b, g = 0.0, 0.0, 0.0
-            for r in range(d):
-                row_l, row_d = 0.0, 0.0
-                for c in range(d):
-                    row_l += F[i, r, c] * L[p, c]
-                    row_d += F[i, r, c] * D1[p, c]
-                a += D1[p, r] * row_d
-                b += D1[p, r] * row_l
-                g += L[p, r] * row_l
-            disc = b * b - a * g
-            root = np.sqrt(max(disc, 0.0))
-            if a == 0.0:
-                t = -g / (2.0 * b) if b > 0.0 else np.inf
-            elif a > 0.0:
-                t = (root - b) / a
-            else:  # concave q: it rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0
-                t = (b - root) / -a if (b > 0.0 and disc >= 0.0) else np.inf
-            if t >= 0.0 and t < out[p]:
-                out[p] = t
+    k, n1 = F.shape[0], L.shape[1]
+    out = np.empty(L.shape[0])
+    Fx, q = np.empty((k, n1)), np.empty(k)
+    for p in range(L.shape[0]):
+        _apply(F, L[p], Fx, q)
+        out[p] = _exit(F, Fx, q, D1[p, :-1])
+    return out
+
+
+@njit(cache=True)
+def _apply(F: np.ndarray, x: np.ndarray, Fx: np.ndarray, q: np.ndarray) -> None:
+    """``Fx[i] = F_i x~`` and ``q[i] = x~^T F_i x~`` at the lifted point ``x~`` (in place)."""
+    n1 = x.shape[0]
+    for i in range(F.shape[0]):
+        total = 0.0
+        for r in range(n1):
+            row = 0.0
+            for c in range(n1):
+                row += F[i, r, c] * x[c]
+            Fx[i, r] = row
+            total += x[r] * row
+        q[i] = total
+
+
+@njit(cache=True)
+def _exit(F: np.ndarray, Fx: np.ndarray, q: np.ndarray, d: np.ndarray) -> float:
+    """First exit ``t*`` along ``d`` from the point of ``_apply``'s ``Fx``, ``q``: the smallest
+    positive root of ``q_i(x + t d) = a t^2 + 2 b t + g`` crossing upward (may be inf)."""
+    out = np.inf
+    n = d.shape[0]
+    for i in range(F.shape[0]):
+        a, b, g = 0.0, 0.0, q[i]
+        for r in range(n):
+            row = 0.0
+            for c in range(n):
+                row += F[i, r, c] * d[c]
+            a += d[r] * row
+            b += d[r] * Fx[i, r]
+        disc = b * b - a * g
+        root = np.sqrt(max(disc, 0.0))
+        if a == 0.0:
+            t = -g / (2.0 * b) if b > 0.0 else np.inf
+        elif a > 0.0:
+            t = (root - b) / a
+        else:  # concave q: it rises from g <= 0 only if b > 0, and crosses 0 if disc >= 0
+            t = (b - root) / -a if (b > 0.0 and disc >= 0.0) else np.inf
+        if t >= 0.0 and t < out:
+            out = t
     return out
 
 
@@ -243,6 +269,9 @@ def _rough_fit(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Centre and weighted covariance of a rough minimum-volume ellipsoid around the points
     (its shape is n times the covariance); ``level`` as in ``_enclosing_weights``."""
+    # Separate forward and away steps here (not exchange steps): their rougher fit, as the
+    # climb's "uphill", gave the better trace bounds (battery's 3-D strip at condition 1e6,
+    # eight seeds: SDP / bound 1.0026 against 1.0037 on average).
     active, u = _enclosing_weights(points, level, _ROUGH_TOL, _SEARCH_WEIGHT_STEPS)
     return covariance(points[active], u)
 
@@ -259,55 +288,23 @@ def _unit_rows(Z: np.ndarray) -> np.ndarray:
 def _distinct(points: np.ndarray) -> np.ndarray:
     """One point of each cluster closer than ``_MERGE_RTOL`` (relative to the spread): rays
     that climbed to one vertex nearly coincide, and make Khachiyan's matrix singular."""
-    return points[np.sort(_cluster_firsts(points, points))]
+    return points[np.sort(_cluster_firsts(points, _grid(points)))]
 
 
-def _cluster_firsts(points: np.ndarray, reference: np.ndarray) -> np.ndarray:
-    """Indices of the first row of each ``_MERGE_RTOL`` cluster of ``points`` (grid cells
-    relative to the spread of ``reference``)."""
-    spread = float(np.max(np.ptp(reference, axis=0)))
-    cells = np.round((points - reference.min(axis=0)) / (_MERGE_RTOL * spread))
-    # One integer key per row (a random linear hash of the cells; a collision only merges
-    # two points, which drops one valid point): np.unique on rows is several times slower.
-    keys = cells @ np.random.default_rng(0).uniform(1.0, 2.0, points.shape[1])
+def _grid(reference: np.ndarray) -> tuple[np.ndarray, float]:
+    """Origin and cell size of the ``_MERGE_RTOL`` grid relative to the spread of the rows."""
+    low = reference.min(axis=0)
+    return low, _MERGE_RTOL * float(np.max(reference.max(axis=0) - low))
+
+
+def _cluster_firsts(points: np.ndarray, grid: tuple[np.ndarray, float]) -> np.ndarray:
+    """Indices of the first row of each cluster of ``points``: one cell of ``grid``."""
+    cells = np.round((points - grid[0]) / grid[1])
+    # One key per row (a linear hash of the cells with fixed irrational-like weights; a
+    # collision only merges two points, which drops one valid point): np.unique on rows is
+    # several times slower.
+    keys = cells @ (1.0 + np.modf(np.arange(1.0, points.shape[1] + 1.0) * 0.6180339887498949)[0])
     return np.unique(keys, return_index=True)[1]
-
-
-def _along_faces(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> np.ndarray:
-    """``G`` (rows) with the outward part along the normal of each active constraint removed.
-
-    A constraint is active at a point when its first-order distance ``-q / |grad q|`` is below
-    ``_ACTIVE_RTOL`` times the point's norm scale; a few sweeps of projections approximate the
-    projection onto the faces' intersection (edges, then vertices).
-    """
-    lifted = _lifted(points)
-    normals = 2.0 * (lifted @ F[:, :, :-1])  # (k, m, n): the gradients 2 (A x + b)
-    norm2 = np.sum(normals * normals, axis=2).T
-    scale = 1.0 + np.linalg.norm(points, axis=1, keepdims=True)
-    active = -_forms(lifted, F, lifted) < _ACTIVE_RTOL * scale * np.sqrt(norm2)
-    inv_norm2 = np.where(active & (norm2 > 0), 1.0 / np.where(norm2 > 0, norm2, 1.0), 0.0)
-    G = np.array(G, dtype=float)  # a fresh array, projected in place
-    _project_sweeps(G, np.ascontiguousarray(normals), np.ascontiguousarray(inv_norm2), _FACE_SWEEPS)
-    return G
-
-
-@njit(cache=True)
-def _project_sweeps(G: np.ndarray, normals: np.ndarray, inv_norm2: np.ndarray, sweeps: int) -> None:
-    """In place: ``sweeps`` passes removing, constraint by constraint, the outward part of each
-    row of G along that constraint's normal at the row's point (where it is active)."""
-    k, m, n = normals.shape
-    for _ in range(sweeps):
-        for i in range(k):
-            for p in range(m):
-                if inv_norm2[p, i] == 0.0:
-                    continue
-                outward = 0.0
-                for j in range(n):
-                    outward += G[p, j] * normals[i, p, j]
-                if outward > 0.0:
-                    scale = outward * inv_norm2[p, i]
-                    for j in range(n):
-                        G[p, j] -= scale * normals[i, p, j]
 
 
 def sample_set(
@@ -321,6 +318,17 @@ def sample_set(
     ``outer`` is any ellipsoid containing the set; ``dims`` judges "farther out" by the
     projection onto these coordinates (projection objective). Returns shape (m, n), distinct.
     """
+    return _sample(quadratics, outer, rng, dims)[0]
+
+
+def _sample(
+    quadratics: Sequence[QuadraticSet],
+    outer: Ellipsoid,
+    rng,
+    dims: tuple[int, ...] | None,
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """``sample_set``'s points, and the polish's last rough weights (indices of the points,
+    weights): a warm start for the bound's own (on ``dims``)."""
     gen = v.rng_of(rng)
     n = outer.dim
     F = _stack(quadratics)
@@ -340,6 +348,7 @@ def sample_set(
     step = np.full(points.shape[0], _FIRST_STEP)
     stalled = np.zeros(points.shape[0], dtype=int)
     alive = np.arange(points.shape[0])
+    grid = _grid(start)  # the first exits' spread: the climb changes it little
     for round_ in range(_SEARCH_ROUNDS):
         if round_ % _REFIT_EVERY == 0:
             # With the first exits, so that it never collapses onto the few vertices reached.
@@ -347,7 +356,7 @@ def sample_set(
             mean, cov = _rough_fit(fit, _level(fit, mean, inv))  # ranked by the last fit
             inv = np.linalg.inv(cov)
             level = _level(points[:, cols], mean, inv)
-        alive = _still_climbing(points, level, alive, stalled)
+        alive = _still_climbing(points, level, alive, stalled, grid)
         if alive.size == 0:
             break
         sub, sub_level, sub_step = points[alive], level[alive], step[alive]
@@ -358,13 +367,15 @@ def sample_set(
     return _polish(climb, _distinct(np.vstack([start, points])))
 
 
-def _polish(climb: Callable, pool: np.ndarray) -> np.ndarray:
+def _polish(climb: Callable, pool: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
     """The pool and the points of ``_POLISH_ROUNDS`` more rounds of climbing by the support
     points of the minimum-volume ellipsoid of a working set (refitted every round), in that
     ellipsoid's level: they pin the bound, and on curved boundaries the broad climb leaves
-    them short of the contact."""
+    them short of the contact. Also the last weights of that working set (as in ``_sample``)."""
     cols = climb.cols
-    active, u = _enclosing_weights(pool[:, cols], tol=_POLISH_TOL, steps=_SEARCH_WEIGHT_STEPS)
+    active, u = _enclosing_weights(
+        pool[:, cols], tol=_POLISH_TOL, steps=_SEARCH_WEIGHT_STEPS, exchange=True
+    )
     work = pool[active]  # the rest lies inside its ellipsoid (to the tolerance)
     step = np.full(work.shape[0], _FIRST_STEP)
     for round_ in range(_POLISH_ROUNDS):
@@ -381,78 +392,175 @@ def _polish(climb: Callable, pool: np.ndarray) -> np.ndarray:
         step = np.concatenate([step, tip_step[rose]])
         # Warm-started from the last weights (zero on the new points).
         start = np.concatenate([u, np.zeros(int(rose.sum()))])
-        u, _ = khachiyan_weights(work[:, cols], _POLISH_TOL, _SEARCH_WEIGHT_STEPS, start)
-    return np.vstack([pool, work[active.size :]])
+        u, _ = khachiyan_weights(
+            work[:, cols], _POLISH_TOL, _SEARCH_WEIGHT_STEPS, start, exchange=True
+        )
+    added = work.shape[0] - active.size
+    indices = np.concatenate([active, pool.shape[0] + np.arange(added)])
+    support = u > 0.0  # the rest lies inside (to the tolerance): the bound's check re-adds
+    return np.vstack([pool, work[active.size :]]), (indices[support], u[support])
 
 
 def _still_climbing(
-    points: np.ndarray, level: np.ndarray, alive: np.ndarray, stalled: np.ndarray
+    points: np.ndarray,
+    level: np.ndarray,
+    alive: np.ndarray,
+    stalled: np.ndarray,
+    grid: tuple[np.ndarray, float],
 ) -> np.ndarray:
     """The climbing points worth another round: one of each cluster (rays that climbed to one
-    vertex), and of the points that did not rise for ``_PATIENCE`` rounds only those near the
-    top level (they pin the enclosing ellipsoid; a low one that stalled is at a low vertex)."""
+    vertex; one cell of ``grid``), and of the points that did not rise for ``_PATIENCE``
+    rounds only those near the top level (they pin the enclosing ellipsoid; a low one that
+    stalled is at a low vertex)."""
     top = np.max(level)
     keep = (stalled[alive] < _PATIENCE) | (level[alive] >= _TOP_BAND * top)
     alive = alive[keep]
     if alive.size == 0:
         return alive
-    return alive[np.sort(_cluster_firsts(points[alive], points))]
+    return alive[np.sort(_cluster_firsts(points[alive], grid))]
 
 
 class _Climb:
     """One round of moves uphill in an ellipsoid's level, for points of the set (in place):
     (a) a walk along the active faces, (b) a ray from x0 past the point shifted uphill (or at
-    random) by its relative step, which doubles on success, else halves."""
+    random) by its relative step, which doubles on success, else halves (``_climb_round``)."""
 
     def __init__(self, F, x0, chol, cols, gen) -> None:
         self.F, self.x0, self.chol, self.cols, self.gen = F, x0, chol, cols, gen
-        self.embed = np.eye(x0.shape[0])[cols]
+        self.membership = _membership(F, 4.0 * (x0.shape[0] + 1) * EPS)
+        self.chol_inv = np.linalg.inv(chol)
+        self.in_cols = np.zeros(x0.shape[0], dtype=np.bool_)
+        self.in_cols[cols] = True
 
     def __call__(self, points, level, step, mean, inv, uphill: bool) -> None:
-        F, cols = self.F, self.cols
-        gradient = (points[:, cols] - mean) @ inv @ self.embed
-        index, new = _face_walk(F, points, _along_faces(F, points, gradient))
-        _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        shift = gradient @ self.chol if uphill else self.gen.standard_normal(points.shape)
-        index, new = _shifted_rays(F, self.x0, self.chol, points, shift, step)
-        success = _keep_higher(points, level, index, new, _level(new[:, cols], mean, inv))
-        step[:] = np.where(success, np.minimum(2.0 * step, 1.0), 0.5 * step)
+        m, n = points.shape
+        shift = np.empty((0, n)) if uphill else self.gen.standard_normal((m, n))
+        # Scattered back to full coordinates: rows and columns outside ``cols`` are zero.
+        full_mean, full_inv = np.zeros(n), np.zeros((n, n))
+        full_mean[self.cols] = mean
+        full_inv[np.ix_(self.cols, self.cols)] = inv
+        _climb_round(
+            self.membership,
+            self.x0,
+            self.chol,
+            self.chol_inv,
+            self.in_cols,
+            points,
+            level,
+            step,
+            full_mean,
+            full_inv,
+            shift,
+        )
 
 
-def _face_walk(F: np.ndarray, points: np.ndarray, G: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each point moved along its row of G to the first constraint met: (indices, new points)."""
-    t_star = _first_exit(F, points, G)
-    moving = np.flatnonzero(np.isfinite(t_star) & (t_star > 0))
-    new = points[moving] + (t_star[moving] * (1.0 - _SHRINK))[:, None] * G[moving]
-    ok = _inside(F, new)
-    return moving[ok], new[ok]
+@njit(cache=True)
+def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, mean, inv, shift):
+    """One ``_Climb`` round for every row of ``points`` (in place, with ``level`` and ``step``),
+    compiled as one pass: per point, numpy would cost a dozen calls per round.
+
+    (a) The level's gradient, with its outward part along the normal of each active
+    constraint removed (active: first-order distance ``-q / |grad q|`` below ``_ACTIVE_RTOL``
+    times the point's norm scale; ``_FACE_SWEEPS`` sweeps of projections approximate the
+    projection onto the faces' intersection, edges then vertices), walked to the first
+    constraint met. (b) The ray from x0 through the point shifted, in the whitened coordinates
+    ``y = chol^{-1} (x - x0)``, by ``step |y|`` along the unit row of ``shift`` (empty: along
+    the gradient of (a), whitened). A trial replaces the point if it passes the membership
+    margin and lies higher in the level ``(x - mean)^T inv (x - mean)`` over ``in_cols``.
+    """
+    F = membership[0]  # membership: ``_membership``'s, for ``_inside_one``
+    m, n = points.shape
+    k = F.shape[0]
+    lifted, trial = np.ones(n + 1), np.ones(n + 1)
+    gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
+    Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
+    Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
+    metric = (in_cols, mean, inv)
+    lifted[:n] = x0
+    _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
+    for p in range(m):
+        _matvec(inv, points[p], mean, gradient)  # zero outside in_cols (scattered zeros)
+        G[:] = gradient
+        lifted[:n] = points[p]
+        _apply(F, lifted, Fx, q)  # the normals are 2 Fx[i, :n]
+        scale = 1.0 + np.sqrt(_dot(points[p], points[p]))
+        for i in range(k):
+            norm2 = 4.0 * _dot(Fx[i, :n], Fx[i, :n])
+            active = norm2 > 0.0 and -q[i] < _ACTIVE_RTOL * scale * np.sqrt(norm2)
+            inv_norm2[i] = 4.0 / norm2 if active else 0.0  # 1 / |Fx[i, :n]|^2
+        for _ in range(_FACE_SWEEPS):
+            for i in range(k):
+                if inv_norm2[i] > 0.0:
+                    outward = _dot(G, Fx[i, :n])
+                    if outward > 0.0:
+                        for j in range(n):
+                            G[j] -= outward * inv_norm2[i] * Fx[i, j]
+        t = _exit(F, Fx, q, G)
+        if np.isfinite(t) and t > 0.0:
+            _try(membership, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
+        # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
+        if shift.shape[0] == 0:
+            _matvec(chol.T, gradient, zero, move)
+        else:
+            move[:] = shift[p]
+        _matvec(chol_inv, points[p], x0, G)  # G is now y
+        size = np.sqrt(_dot(move, move))
+        if size > 0.0:
+            factor = step[p] * np.sqrt(_dot(G, G)) / size
+            for j in range(n):
+                G[j] += factor * move[j]
+        size = np.sqrt(_dot(G, G))
+        success = False
+        if size > 0.0:
+            G /= size
+            _matvec(chol, G, zero, move)  # move is now the ray's direction
+            t = _exit(F, Fx0, q0, move)
+            if np.isfinite(t):
+                shrunk = t * (1.0 - _SHRINK)
+                success = _try(membership, metric, x0, shrunk, move, points, level, p, trial)
+        step[p] = min(2.0 * step[p], 1.0) if success else 0.5 * step[p]
 
 
-def _shifted_rays(
-    F: np.ndarray,
-    x0: np.ndarray,
-    chol: np.ndarray,
-    points: np.ndarray,
-    shift: np.ndarray,
-    step: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray]:
-    """Exits of the rays from x0 through each point shifted by ``step`` (relative) along its
-    row of ``shift``, in the whitened coordinates ``y = chol^{-1} (x - x0)``."""
-    Y = np.linalg.solve(chol, (points - x0).T).T
-    radius = np.linalg.norm(Y, axis=1, keepdims=True)
-    new, ok = _cast(F, x0, _unit_rows(Y + step[:, None] * radius * _unit_rows(shift)), chol)
-    return ok, new
+@njit(cache=True)
+def _try(membership, metric, base, t, direction, points, level, p, lifted) -> bool:
+    """``points[p] = base + t direction`` (and its level) if that is higher and in the set
+    (the cheaper test first); ``lifted`` is a buffer of n + 1 ones. ``membership`` is
+    ``_membership``'s, ``metric`` ``(in_cols, mean, inv)`` of the level."""
+    in_cols, mean, inv = metric
+    n = base.shape[0]
+    for j in range(n):
+        lifted[j] = base[j] + t * direction[j]
+    value = 0.0
+    for a in range(n):
+        if in_cols[a]:
+            row = 0.0
+            for b in range(n):
+                if in_cols[b]:
+                    row += inv[a, b] * (lifted[b] - mean[b])
+            value += (lifted[a] - mean[a]) * row
+    if not value > level[p] or not _inside_one(membership, lifted):
+        return False
+    points[p] = lifted[:n]
+    level[p] = value
+    return True
 
 
-def _keep_higher(
-    points: np.ndarray, level: np.ndarray, index: np.ndarray, new: np.ndarray, new_level
-) -> np.ndarray:
-    """Replace ``points[index]`` by ``new`` where its level is higher (in place); which did."""
-    up = new_level > level[index]
-    points[index[up]], level[index[up]] = new[up], new_level[up]
-    success = np.zeros(points.shape[0], dtype=bool)
-    success[index[up]] = True
-    return success
+@njit(cache=True)
+def _dot(a: np.ndarray, b: np.ndarray) -> float:
+    total = 0.0
+    for j in range(a.shape[0]):
+        total += a[j] * b[j]
+    return total
+
+
+@njit(cache=True)
+def _matvec(A: np.ndarray, x: np.ndarray, origin: np.ndarray, out: np.ndarray) -> None:
+    """``out = A (x - origin)`` by plain loops (no BLAS call or temporary per point)."""
+    for a in range(A.shape[0]):
+        row = 0.0
+        for b in range(A.shape[1]):
+            row += A[a, b] * (x[b] - origin[b])
+        out[a] = row
 
 
 def _enclosing_weights(
@@ -460,24 +568,34 @@ def _enclosing_weights(
     level: np.ndarray | None = None,
     tol: float = _WEIGHT_TOL,
     steps: int = _WEIGHT_STEPS,
+    start: tuple[np.ndarray, np.ndarray] | None = None,
+    away_tol: float | None = None,
+    exchange: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Khachiyan's weights, computed on a working set of the points farthest out.
 
     Khachiyan's algorithm crawls on thousands of points near one boundary; the weights of a
     working set (zero elsewhere) are weights of all points, and the set grows by the points
     its ellipsoid leaves out until none is left out by more than the tolerance. ``level``
-    ranks the points for the first working set (default: by their covariance).
+    ranks the points for the first working set (default: by their covariance); ``start``
+    (indices, weights, full-dimensional) is the first working set and its weights instead.
+    Each growth of the set warm-starts from the last weights (zero on the new points).
+    ``away_tol`` and ``exchange`` as in ``khachiyan_weights``.
     Returns the working set's indices and its weights.
     """
     n = points.shape[1]
-    if level is None:  # the points' own spread (uniform weights) ranks them well enough
-        mean, cov = covariance(points, np.full(points.shape[0], 1.0 / points.shape[0]))
-        level = _level(points, mean, np.linalg.pinv(cov))
-    # The core set keeps the working set full-dimensional: the points farthest out can all lie
-    # near one edge.
-    active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
+    if start is not None:
+        active, u = start
+    else:
+        if level is None:  # the points' own spread (uniform weights) ranks them well enough
+            mean, cov = covariance(points, np.full(points.shape[0], 1.0 / points.shape[0]))
+            level = _level(points, mean, np.linalg.pinv(cov))
+        # The core set keeps the working set full-dimensional: the points farthest out can
+        # all lie near one edge.
+        active = np.union1d(core_set(points), np.argsort(level)[::-1][: _WORKING_PER_DIM * n])
+        u = None
     for round_ in range(_WORKING_ROUNDS):
-        u, _ = khachiyan_weights(points[active], tol=tol, max_iter=steps)
+        u, _ = khachiyan_weights(points[active], tol, steps, u, away_tol, exchange)
         mean, cov = covariance(points[active], u)
         level = _level(points, mean, np.linalg.inv(n * cov))
         outside = np.setdiff1d(np.flatnonzero(level > 1.0 + tol), active)
@@ -485,13 +603,20 @@ def _enclosing_weights(
             break
         worst = outside[np.argsort(level[outside])[::-1][: _WORKING_PER_DIM * n]]
         active = np.concatenate([active, worst])
+        u = np.concatenate([u, np.zeros(worst.size)])
     return active, u
 
 
-def volume_lower_bound(points: np.ndarray) -> float:
-    """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume."""
+def volume_lower_bound(
+    points: np.ndarray, start: tuple[np.ndarray, np.ndarray] | None = None
+) -> float:
+    """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume.
+
+    ``start``: a first working set and its weights, as in ``_enclosing_weights``.
+    """
     n = points.shape[1]
-    active, u = _enclosing_weights(points)
+    # Only the bound matters here, not which points support it (``khachiyan_weights``).
+    active, u = _enclosing_weights(points, start=start, away_tol=np.inf, exchange=True)
     _, cov = covariance(points[active], u)
     sign, logdet = np.linalg.slogdet(n * cov)
     log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
@@ -557,13 +682,14 @@ def sampled_lower_bound(
     rng,
 ) -> float:
     """Lower bound on the minimum ``objective`` over all ellipsoids containing the set."""
-    points = sample_set(quadratics, outer, rng, dims)
+    points, start = _sample(quadratics, outer, rng, dims)
     if objective == "projection":
         points = _distinct(points[:, list(dims)])  # corners above one another coincide
+        start = None  # the polish's weights are on the points before the merge
     points = validated_points(points)
     if objective == "trace":
         # Frank-Wolfe on a working set: the points that matter to the minimum-volume ellipsoid
         # and those nearest the boundary of the (near-optimal) outer one.
         near = np.argsort(outer.level(points))[::-1][: _WORKING_PER_DIM * points.shape[1]]
         return trace_lower_bound(points[np.union1d(_enclosing_weights(points)[0], near)])
-    return volume_lower_bound(points)
+    return volume_lower_bound(points, start)

@@ -131,3 +131,14 @@ def test_lower_bound_survives_a_working_set_on_one_edge():
     E0, _, strips = recursive_tightness.instance({"seed": 3020, "dim": 3, "width": 1.0, "ks": [50]})
     r = outer_ellipsoid([E0, *strips], lower_bound=True, rng=3020)
     assert 0.0 < r.lower_bound <= r.objective
+
+
+def test_volume_bound_from_a_warm_start_matches_the_cold_one():
+    # The start's working set (a few points and their weights) grows by the points its
+    # ellipsoid leaves out, so the bound is that of all points, to the tolerance.
+    X = np.random.default_rng(7).standard_normal((400, 3))
+    core = np.array([0, 1, 2, 3])
+    start = (core, np.full(4, 0.25))
+    cold, warm = volume_lower_bound(X), volume_lower_bound(X, start)
+    assert warm == pytest.approx(cold, rel=1e-5)
+    assert warm <= khachiyan_mvee(X, tol=1e-9, max_iter=1_000_000).volume()
