@@ -37,11 +37,10 @@ def run_sliced(kernel, n_batch: int, *args) -> None:
 
 
 def ellipsoid_outputs(n_batch: int, n: int, *scalars) -> tuple:
-    """Output arrays of a batched kernel: centres (B, n), shapes and Cholesky factors
-    (B, n, n), then one zero-filled (B,) array per dtype in ``scalars``."""
+    """Output arrays of a batched kernel: centres (B, n) and shapes (B, n, n), then one
+    zero-filled (B,) array per dtype in ``scalars``."""
     return (
         np.empty((n_batch, n)),
-        np.empty((n_batch, n, n)),
         np.empty((n_batch, n, n)),
         *(np.zeros(n_batch, dtype) for dtype in scalars),
     )

@@ -32,7 +32,7 @@ from optbound.analytic._minkowski_kernel import (
     sum_range,
     sum_single,
 )
-from optbound.analytic._threads import run_sliced
+from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -206,8 +206,7 @@ def minkowski_sum_batch(
             raise ValueError(f"{name} must have shape {(*c1.shape, c1.shape[1])}, got {C.shape}")
     mode, p, planar, heading = _mode(criterion, kappa, dims, *c1.shape)
     n_batch, n = c1.shape
-    out = (np.empty((n_batch, n)), np.empty((n_batch, n, n)), np.zeros(n_batch, np.int8),
-           np.empty(n_batch), np.empty(n_batch))  # fmt: skip
+    out = ellipsoid_outputs(n_batch, n, np.int8, float, float)
     run_sliced(sum_range, n_batch, c1, C1, c2, C2, mode, p, planar, heading, out)
     out_c, out_C, code, p_used, margin = out
     bad = np.flatnonzero(code)

@@ -296,7 +296,6 @@ def intersect_strip_batch(
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
-    out = out[:2] + out[3:]  # no Cholesky factors: the batch returns bare arrays
     run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out)
     out_c, out_C, code, case, cons, lam_used, empty, margin = out
     bad = np.flatnonzero(code)
