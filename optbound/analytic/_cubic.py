@@ -27,13 +27,13 @@ IMAG_RTOL = 1e-6
 POLISH_STEPS = 8
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _horner(c0, c1, c2, c3, x):
     """p(x) and p'(x) of c0 x^3 + c1 x^2 + c2 x + c3."""
     return ((c0 * x + c1) * x + c2) * x + c3, (3.0 * c0 * x + 2.0 * c1) * x + c2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _quadratic(a, b, c):
     """(k, x1, x2): the k real roots of a x^2 + b x + c (a != 0)."""
     disc = b * b - 4.0 * a * c
@@ -48,7 +48,7 @@ def _quadratic(a, b, c):
     return 0, 0.0, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _cubic(a, b, c):
     """(k, x1, x2, x3): the k real roots of x^3 + a x^2 + b x + c
     (Numerical Recipes, eqs. (5.6.10)-(5.6.18))."""
@@ -73,7 +73,7 @@ def _cubic(a, b, c):
     return 1, x1, 0.0, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _polish(c0, c1, c2, c3, x):
     """Newton on the full polynomial, each step kept only while it reduces |p|."""
     value, slope = _horner(c0, c1, c2, c3, x)
@@ -88,7 +88,7 @@ def _polish(c0, c1, c2, c3, x):
     return x
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def real_roots(p0, p1, p2, p3):
     """The real roots of ``p0 x^3 + p1 x^2 + p2 x + p3`` as ``(k, x1, x2, x3)``: the first k
     entries are roots (k = 0 if every coefficient is negligible or one is not finite)."""

@@ -42,21 +42,21 @@ def gamma(k: int) -> float:
     return k * U / (1.0 - k * U)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def mr_add(x, rx, y, ry):
     """x + y with radius (both operands carry radii)."""
     z = x + y
     return z, rx + ry + U * abs(z)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def mr_mul(x, rx, y, ry):
     """x * y with radius."""
     z = x * y
     return z, abs(x) * ry + abs(y) * rx + rx * ry + U * abs(z)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def mr_div(x, rx, y, ry):
     """x / y with radius; requires |y| > ry (the caller guarantees it)."""
     z = x / y
@@ -74,14 +74,14 @@ def _fma(typingctx, x, y, z):
     return sig, codegen
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _two_prod(a, b):
     """a * b = p + e exactly (no overflow/underflow): e is the fused multiply-add's residual."""
     p = a * b
     return p, _fma(a, b, -p)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _two_sum(a, b):
     """a + b = s + e exactly (Knuth)."""
     s = a + b
@@ -90,7 +90,7 @@ def _two_sum(a, b):
     return s, e
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def offset(b, a, c):
     """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
     certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
@@ -112,26 +112,26 @@ def offset(b, a, c):
     return res, 2.0 * U * abs(res) + 2.0 * g * g * mag + TINY
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def down(x):
     """A float <= x for a value x computed with one or two roundings (relative 4U)."""
     return x - 4.0 * U * abs(x) - TINY
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def up(x):
     """A float >= x for a value x computed with one or two roundings (relative 4U)."""
     return x + 4.0 * U * abs(x) + TINY
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def output_floor(trace, cmax):
     """The eigenvalue floor of a result with shape trace ``trace`` and centre ``|c|_inf =
     cmax``: keeping lambda_min above twice it keeps the result inside the domain (``inflate``)."""
     return max(trace / COND_OUT, (cmax / RATIO_OUT) ** 2, 4.0 / (MAG * MAG))
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def segment_scale(dd, lref):
     """``scale = 1 + rho`` of Schweppe's bound for a centre error of squared norm ``dd`` on a
     shape with lambda_min ~ ``lref`` (rho = |d| / sqrt(lref) balances the two terms). The
@@ -141,14 +141,14 @@ def segment_scale(dd, lref):
     return 1.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def segment_term(dd, rho):
     """``(1 + 1/rho) |d|^2`` of Schweppe's bound (0 without centre error); rounded down by at
     most a factor (1 - U)^3, covered by ``RADIUS_SAFETY``."""
     return (1.0 + 1.0 / rho) * dd if dd > 0.0 else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lambda_min_estimate(L) -> float:
     """``1 / ||L^{-1}||_F^2 = 1 / tr(A^{-1})`` for A = L L^T: within a factor n of lambda_min(A).
 
@@ -169,7 +169,7 @@ def lambda_min_estimate(L) -> float:
     return 1.0 / total
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def trace_inverse(L, r) -> float:
     """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``,
     which has no scratch vector, needs n (n + 1) / 2): row i of X = L^{-1} is
@@ -192,7 +192,7 @@ def trace_inverse(L, r) -> float:
     return total
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def inflate(S, D, c, d, T, L) -> float:
     """Outward shape T (written, symmetric) containing the exact member; see the module doc.
 

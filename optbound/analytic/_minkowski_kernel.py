@@ -275,7 +275,7 @@ def p_volume(C1, C2, L1, L2, M, Y, Z):
     return 1.0 / root_oriented(C2, C1, L1, 1.0 / p0, M, Y, Z)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _trace(C, idx):
     t = 0.0
     for i in idx:
@@ -283,13 +283,13 @@ def _trace(C, idx):
     return t
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _xy_psi_size(k, t1, t2, h1, h2):
     """tr(proj_xy C) tr(proj_psi C) of the member kappa [HS96, eq. (15)]."""
     return (t1 / (1.0 - k) + t2 / k) * (h1 / (1.0 - k) + h2 / k)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def p_xy_psi(C1, C2, planar, heading):
     """p of the root of the cubic [HS96, eqs. (16)-(17)] in (0, 1) minimizing
     tr(proj_xy C) tr(proj_psi C); the trace-optimal kappa is an always-valid extra candidate
@@ -321,7 +321,7 @@ def p_xy_psi(C1, C2, planar, heading):
     return (1.0 - best) / best
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, work):
     """One certified sum; ``planar``, ``heading`` are the coordinates of ``P_XY_PSI`` (unused
     otherwise). ``work`` is (6, max(n, 1), n) scratch. Returns (code, p, margin). Inlined into
@@ -363,7 +363,7 @@ def sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, work):
     return 0, p, margin
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     """One instance through the batch loop ``_sum_loop`` (a batch of one: the same compiled
     code, so single and batched results agree bitwise and the kernel is compiled once), plus
@@ -384,7 +384,7 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0])
 
 
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, stop):
     """The batch loop, compiled without numba's reference counting (``_nrt=False``, as
     ``_strip_kernel._fuse_loop``): every per-instance view otherwise increments and decrements
@@ -398,7 +398,7 @@ def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, sto
         code[i], p[i], margin[i] = r
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """``sum_one`` on instances ``start..stop`` (p_in broadcast to (B,) by the caller).
     ``out`` = (centres, shapes, code, p, margin); no Cholesky factors (the batch returns none).

@@ -53,7 +53,7 @@ LAM_MAX = 1e8
 LAMG_MAX = 1e16
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _strip_ok(a, b) -> int:
     n = a.shape[0]
     # No scaling is needed: |a| in [1 / MAG, MAG] puts |a|^2 in [1e-120, 1e120], far from
@@ -68,7 +68,7 @@ def _strip_ok(a, b) -> int:
     return 0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     """Steps 1-3. Writes C's Cholesky factor into L and ``w = C a`` as ``wh + wl`` with error
     bounds ``we``. Returns (code, case, consistency, mid, half, G, G_lo, r_G): the fused strip
@@ -159,7 +159,7 @@ def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     return 0, case, consistency, mid, half, G, G_lo, rG_dd
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _shape_factor(gam, mid, half, G, G_lo, rG):
     """K = 1 + gam half^2 / (1 - gam G) - gam mid^2 for the exact G (within rG of G + G_lo) as
     a double-double ``Kh + Kl`` within ``rK`` of the exact K, and ``1 - gam G`` (float).
@@ -211,7 +211,7 @@ def _shape_factor(gam, mid, half, G, G_lo, rG):
     return Kh, Kl, rK, oh + ol
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf):
     """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), inflated and
     written into out_c, out_C; ``L`` is the Cholesky factor of C (its strict upper part is
@@ -349,7 +349,7 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
     return rho + mu / lref
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _copy_input(c, C, out_c, out_C):
     n = c.shape[0]
     for i in range(n):
@@ -358,7 +358,7 @@ def _copy_input(c, C, out_c, out_C):
             out_C[i, j] = C[i, j] if j <= i else C[j, i]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
     """Step 4 for the cubic criteria (trace, projection); the projection uses ``work`` as
     scratch (planes 3 and 1, row (0, 3)). Only the volume criterion's lambda is inlined into
@@ -368,7 +368,7 @@ def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
     return lam_projection(C, w, half, Gn, e, idx, work[3], work[1], work[0, 3])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c, out_C, work):
     """One full update (steps 1-6); ``idx`` are the coordinates of the projection criteria
     (unused otherwise). ``work`` is (4, max(n, 4), n) scratch. Inlined into its two callers:
@@ -415,7 +415,7 @@ def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c,
     return 0, case, cons, lam, False, margin
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
     """One instance through the batch loop ``_fuse_loop`` (a batch of one: the same compiled
     code, so single and batched results agree bitwise and the kernel is compiled once), plus
@@ -440,7 +440,7 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
     return out_c, out_C, out_L, valid, r
 
 
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, work, start, stop):
     """The batch loop, compiled without numba's reference counting (``_nrt=False``): every
     per-instance view (``c[i]``, ``work[0, 0]``, ...) otherwise increments and decrements the
@@ -455,7 +455,7 @@ def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, wo
         code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, start, stop):
     """``fuse_one`` on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
     caller). ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin)."""

@@ -20,7 +20,7 @@ from optbound.analytic._cubic import real_roots
 from optbound.sets._domain import cholesky
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def lam_volume(Gn, e, n):
     """Most positive root of [HS96, eq. (26)] with N = n (0 if none): it exists iff
     G > n (1 - eps^2); the roots then have opposite signs (stable quadratic formula)."""
@@ -33,7 +33,7 @@ def lam_volume(Gn, e, n):
     return 2 * qc / (-qb - sq) if qb >= 0 else (-qb + sq) / (2 * qa)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _shape_factor(lam, Gn, e):
     """K of [HS96, eq. (24)] for the normalized strip."""
     return 1.0 + lam - lam * e * e / (1.0 + lam * Gn)
@@ -42,7 +42,7 @@ def _shape_factor(lam, Gn, e):
 _TRACE, _PROJECTION = range(2)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _size(lam, Gn, e, kind, p, q):
     """Size measure of the member ``lam`` (+inf if K <= 0): for ``_TRACE`` tr(K C0) =
     K (tr C - lambda |C a'|^2 / u) with p = tr C, q = |C a'|^2 [HS96, eq. (24)]; for
@@ -56,7 +56,7 @@ def _size(lam, Gn, e, kind, p, q):
     return q * np.log(K) + np.log1p(lam * (Gn - p)) - np.log1p(lam * Gn)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _best_root(roots, Gn, e, kind, p, q):
     """The positive root (or 0) of ``roots = (k, x1, x2, x3)`` with the smallest size."""
     k, x1, x2, x3 = roots
@@ -69,7 +69,7 @@ def _best_root(roots, Gn, e, kind, p, q):
     return best
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lam_trace(C, w, half, Gn, e):
     """The root of the cubic d/dlambda tr(K C0) = 0 (derived from [HS96, eq. (24)]) that
     minimizes the trace; ``w`` = C a (unnormalized, ``w / half`` = C a')."""
@@ -91,7 +91,7 @@ def lam_trace(C, w, half, Gn, e):
     return _best_root(roots, Gn, e, _TRACE, T, W)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
     """The root of the cubic [HS96, eq. (27)] that minimizes the volume of the projection onto
     the coordinates ``idx``, with H of [HS96, eq. (28)]; ``P``, ``LP`` (>= (m, m)) and ``y``

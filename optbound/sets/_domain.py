@@ -49,7 +49,7 @@ MESSAGES = {
 }
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cholesky(A, L) -> float:
     """Float Cholesky of the lower triangle of A into L (upper part zeroed); returns the
     smallest pivot, or 0.0 as soon as a pivot is not positive."""
@@ -74,7 +74,7 @@ def cholesky(A, L) -> float:
     return min_pivot
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def check_ellipsoid(c, C, L) -> int:
     """Validate centre ``c`` (n,) and shape ``C`` (n, n); write its Cholesky factor into ``L``.
 
