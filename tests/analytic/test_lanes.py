@@ -1,0 +1,72 @@
+"""The lane-parallel building blocks agree with their scalar counterparts, bitwise."""
+
+import numpy as np
+import pytest
+from numba import njit
+
+from optbound.analytic._lanes import (
+    W,
+    check_ellipsoids,
+    load_matrices,
+    load_vectors,
+    store_matrices,
+    store_vectors,
+)
+from optbound.sets._domain import check_ellipsoid
+
+
+@njit(error_model="numpy")
+def _check_batch(c, C, code, L_out, c_out, C_out):
+    """check_ellipsoids block by block; the centres and shapes are also stored back."""
+    n_batch, n = c.shape
+    cs, Cs, Ls = np.empty((n, W)), np.empty((n, n, W)), np.empty((n, n, W))
+    codes, scratch = np.empty(W, np.int64), np.empty((3, W))
+    for base in range(0, n_batch, W):
+        m = min(W, n_batch - base)
+        load_vectors(c, base, m, cs)
+        load_matrices(C, base, m, Cs)
+        check_ellipsoids(cs, Cs, Ls, m, codes, scratch)
+        store_matrices(Ls, base, m, L_out)
+        store_vectors(cs, base, m, c_out)
+        store_matrices(Cs, base, m, C_out)
+        code[base : base + m] = codes[:m]
+
+
+def _inputs(n: int, count: int, seed: int):
+    """Random shapes with every kind of defect mixed in (each a known error code)."""
+    rng = np.random.default_rng(seed)
+    A = rng.standard_normal((count, n, n))
+    C = A @ A.transpose(0, 2, 1)
+    C[::7] *= -1.0  # not positive definite
+    C[::11, 0, 0] = np.nan  # not finite
+    C[::13, 1, 0] += 1e-3  # asymmetric
+    C[::17] *= 1e-130  # semi-axes too small
+    C[::29, n - 1, n - 1] = 1e-13  # ill-conditioned or not PD
+    c = rng.standard_normal((count, n))
+    c[::19] *= 1e70  # centre too far
+    c[::23, 1] = np.inf
+    return c, C
+
+
+@pytest.mark.parametrize("n", [2, 3, 5])
+@pytest.mark.parametrize("count", [1, W - 1, 3 * W + 5])
+def test_check_ellipsoids_matches_the_scalar_check(n, count):
+    c, C = _inputs(n, count, seed=n * 1000 + count)
+    code = np.empty(count, np.int64)
+    L, c_back, C_back = np.empty((count, n, n)), np.empty((count, n)), np.empty((count, n, n))
+    _check_batch(c, C, code, L, c_back, C_back)
+    assert np.array_equal(c_back, c, equal_nan=True)
+    assert np.array_equal(C_back, C, equal_nan=True)
+    for i in range(count):
+        L_ref = np.empty((n, n))
+        assert code[i] == check_ellipsoid(c[i], C[i], L_ref), i
+        if code[i] == 0:
+            assert np.array_equal(L[i], L_ref), i  # same operations, same bits
+
+
+def test_every_code_occurs():
+    """The mixed inputs above exercise every error code (else the test above proves less)."""
+    c, C = _inputs(3, 5000, seed=1)
+    code = np.empty(5000, np.int64)
+    _check_batch(c, C, code, np.empty((5000, 3, 3)), np.empty((5000, 3)), np.empty((5000, 3, 3)))
+    assert set(np.unique(code)) == set(range(7))
