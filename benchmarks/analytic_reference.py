@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._minkowski_kernel import p_volume
+from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
+from optbound.analytic._minkowski_kernel import p_volume_lanes
 from optbound.analytic._strip_lambda import lam_volume
-from optbound.sets._domain import cholesky
 
 
 @njit(cache=True, nogil=True)
@@ -58,29 +58,35 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, nogil=True)
-def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
-    """Volume-optimal Schweppe member [HS96, eq. (14)] with the same Newton solver as ours."""
-    n = c1.shape[0]
-    L1, L2, M, Y, Z = work[0], work[1], work[2], work[3], work[4]
-    cholesky(C1, L1)
-    cholesky(C2, L2)
-    p = p_volume(C1, C2, L1, L2, M, Y, Z)
-    for i in range(n):
-        out_c[i] = c1[i] + c2[i]
-        for j in range(n):
-            out_C[i, j] = (1.0 + p) * (C1[i, j] / p + C2[i, j])
-
-
 @njit(cache=True, nogil=True, _nrt=False)
-def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, work, start, stop):
-    """The same loop structure as ``optbound.analytic._minkowski_kernel._sum_loop`` (views
-    without reference counting), so that the ratio compares the per-instance work only."""
-    for i in range(start, stop):
-        minkowski_one(c1[i], C1[i], c2[i], C2[i], out_c[i], out_C[i], work)
+def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, mats, vecs, rows, start, stop):
+    """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
+    same blocks of W lanes (``optbound.analytic._minkowski_kernel._sum_loop``), so that the
+    ratio compares the per-instance work only: Cholesky factors, p, the float member."""
+    n = c1.shape[1]
+    C1s, C2s, L1, L2, S = mats[0], mats[1], mats[2], mats[3], mats[4]
+    p, act = rows[0], rows[1]
+    for base in range(start, stop, W):
+        m = min(W, stop - base)
+        load_matrices(C1, base, m, C1s)
+        load_matrices(C2, base, m, C2s)
+        cholesky_lanes(C1s, L1, m, rows[2])
+        cholesky_lanes(C2s, L2, m, rows[2])
+        for k in range(m):
+            act[k] = 1.0
+        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs, rows[3:])
+        for i in range(n):
+            for j in range(n):
+                for k in range(m):
+                    S[i, j, k] = (1.0 + p[k]) * (C1s[i, j, k] / p[k] + C2s[i, j, k])
+        store_matrices(S, base, m, out_C)
+        for k in range(m):
+            for i in range(n):
+                out_c[base + k, i] = c1[base + k, i] + c2[base + k, i]
 
 
 @njit(cache=True, nogil=True)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     n = c1.shape[1]
-    _minkowski_loop(c1, C1, c2, C2, out_c, out_C, np.empty((5, n, n)), start, stop)
+    mats, vecs, rows = np.empty((12, n, n, W)), np.empty((3, n, W)), np.empty((20, W))
+    _minkowski_loop(c1, C1, c2, C2, out_c, out_C, mats, vecs, rows, start, stop)

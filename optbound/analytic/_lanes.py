@@ -17,6 +17,14 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound.analytic._midrad import (
+    RADIUS_SAFETY,
+    TINY,
+    U,
+    output_floor,
+    segment_scale,
+    segment_term,
+)
 from optbound.sets._domain import (
     ASYMMETRIC,
     CENTER_RANGE,
@@ -152,3 +160,89 @@ def check_ellipsoids(c, C, L, m, code, scratch):
             r = NOT_PD
         if code[k] == OK:
             code[k] = r
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def trace_inverse_lanes(L, m, total):
+    """``tr(A^{-1}) = ||L^{-1}||_F^2`` per lane (A = L L^T, L from :func:`cholesky_lanes`), as
+    ``_midrad.lambda_min_estimate`` (whose reciprocal it is): column j of X = L^{-1} by
+    forward substitution, its strict lower part stored transposed in L's strict upper
+    triangle. ``total`` (W,) receives the sums."""
+    n = L.shape[0]
+    for k in range(m):
+        total[k] = 0.0
+    for j in range(n):
+        for k in range(m):
+            xjj = 1.0 / L[j, j, k]
+            total[k] += xjj * xjj
+            L[j, j, k] = xjj  # L_jj is not read again; X_jj serves the rows below
+        for i in range(j + 1, n):
+            for k in range(m):
+                L[j, i, k] = L[i, j, k] * L[j, j, k]
+            for q in range(j + 1, i):
+                for k in range(m):
+                    L[j, i, k] += L[i, q, k] * L[j, q, k]
+            for k in range(m):
+                L[j, i, k] = -L[j, i, k] / L[i, i, k]
+                total[k] += L[j, i, k] * L[j, i, k]
+
+
+@njit(cache=True, error_model="numpy")
+def inflate_lanes(S, D, c, d, T, L, m, margin, rows):
+    """``_midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
+    writes T (T may be S; L is work space) and each lane's margin (or -1.0 if T is too large
+    for the domain) into ``margin`` (W,). ``rows`` is (8, W) scratch. The same quantities as
+    ``_midrad.inflate`` (see there for the mathematics), computed lane by lane."""
+    n = S.shape[0]
+    trace, cmax, pivot, total = rows[0], rows[1], rows[2], rows[3]
+    dd, DF, SF, mu = rows[4], rows[5], rows[6], rows[7]
+    for k in range(m):
+        trace[k] = 0.0
+        cmax[k] = 0.0
+        dd[k] = 0.0
+        DF[k] = 0.0
+        SF[k] = 0.0
+    for i in range(n):
+        for k in range(m):
+            trace[k] += S[i, i, k]
+            cmax[k] = max(cmax[k], abs(c[i, k]))
+            dd[k] += d[i, k] * d[i, k]
+    for i in range(n):
+        for j in range(i + 1):
+            w = 2.0 if i > j else 1.0
+            for k in range(m):
+                DF[k] += w * D[i, j, k] * D[i, j, k]
+                SF[k] += w * S[i, j, k] * S[i, j, k]
+    cholesky_lanes(S, L, m, pivot)
+    trace_inverse_lanes(L, m, total)
+    sqn = np.sqrt(n)
+    for k in range(m):
+        floor = output_floor(trace[k], cmax[k])
+        # lambda_min(S) estimated; 0 if S is (numerically) singular or beyond the estimate's
+        # accuracy (~ cond U): full widening.
+        lmin = 1.0 / total[k] if pivot[k] > 0.0 else 0.0
+        if not trace[k] <= 1e14 * lmin:
+            lmin = 0.0
+        lref = max(lmin, floor)
+        scale = segment_scale(dd[k], lref)
+        rho = scale - 1.0
+        df = np.sqrt(DF[k]) * (1.0 + 4.0 * U)
+        sf = np.sqrt(SF[k]) * (1.0 + 4.0 * U)
+        centre = segment_term(dd[k], rho)
+        # Rounding of forming T: |F_ij| <= 2 U |T_ij|, and ||T||_F <= scale ||S||_F + sqrt(n) mu.
+        need = scale * df + centre + 2.0 * U * scale * sf
+        m_u = need * RADIUS_SAFETY / (1.0 - 2.0 * U * sqn * RADIUS_SAFETY) + TINY
+        m_u = max(m_u, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
+        mu[k] = m_u
+        total[k] = scale  # free again: keeps the scale for the loop below
+        margin[k] = rho + m_u / lref if cmax[k] <= MAG else -1.0
+    for i in range(n):
+        for j in range(i + 1):
+            for k in range(m):
+                t = total[k] * S[i, j, k]
+                if i == j:
+                    t += mu[k]
+                    if not t <= MAX_DIAG:
+                        margin[k] = -1.0
+                T[i, j, k] = t
+                T[j, i, k] = t

@@ -38,8 +38,18 @@ import numpy as np
 from numba import njit
 
 from optbound.analytic._cubic import real_roots
-from optbound.analytic._midrad import U, inflate, mr_add, mr_div, mr_mul
-from optbound.sets._domain import check_ellipsoid, cholesky
+from optbound.analytic._lanes import (
+    W,
+    check_ellipsoids,
+    cholesky_lanes,
+    inflate_lanes,
+    load_matrices,
+    load_vectors,
+    store_matrices,
+    store_vectors,
+)
+from optbound.analytic._midrad import U, mr_add, mr_div, mr_mul
+from optbound.sets._domain import check_ellipsoid
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -48,74 +58,100 @@ NEWTON_MAX_STEPS = 100
 # Newton ends after a step below rtol q (its error is then ~ step^2): the tridiagonal stage may
 # stop earlier, since the polishing step that follows squares its error again.
 NEWTON_RTOL, TRIDIAGONAL_RTOL = 1e-9, 1e-6
+# Block work space: matrices (n, n, W), vectors (n, W) and rows (W,) per slice.
+N_MATS, N_VECS, N_ROWS = 12, 7, 24
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def reduce_pencil(A, LB, M, Y, r):
-    """``M = LB^{-1} A LB^{-T}`` (A symmetric, its lower triangle used; LB lower triangular):
-    the standard form of the pencil (A, LB LB^T), same eigenvalues. Y (n, n) and r (n,) are
-    work space (r: LB's reciprocal diagonal, n divisions instead of 2 n^2)."""
+def reduce_pencil_lanes(A, LB, M, Y, r, m):
+    """``M = LB^{-1} A LB^{-T}`` per lane (A symmetric, its lower triangle used; LB lower
+    triangular): the standard form of the pencil (A, LB LB^T), same eigenvalues. Y (n, n, W)
+    and r (n, W) are work space (r: LB's reciprocal diagonal, n divisions instead of 2 n^2)."""
     n = A.shape[0]
     for i in range(n):
-        r[i] = 1.0 / LB[i, i]
+        for k in range(m):
+            r[i, k] = 1.0 / LB[i, i, k]
     for j in range(n):  # Y[:, j] = LB^{-1} A[:, j]
         for i in range(n):
-            s = A[i, j] if j <= i else A[j, i]
-            for k in range(i):
-                s -= LB[i, k] * Y[k, j]
-            Y[i, j] = s * r[i]
+            if j <= i:
+                for k in range(m):
+                    Y[i, j, k] = A[i, j, k]
+            else:
+                for k in range(m):
+                    Y[i, j, k] = A[j, i, k]
+            for q in range(i):
+                for k in range(m):
+                    Y[i, j, k] -= LB[i, q, k] * Y[q, j, k]
+            for k in range(m):
+                Y[i, j, k] *= r[i, k]
     for j in range(n):  # M[:, j] = LB^{-1} Y[j, :] (M = Y LB^{-T} is symmetric)
         for i in range(n):
-            s = Y[j, i]
-            for k in range(i):
-                s -= LB[i, k] * M[k, j]
-            M[i, j] = s * r[i]
+            for k in range(m):
+                M[i, j, k] = Y[j, i, k]
+            for q in range(i):
+                for k in range(m):
+                    M[i, j, k] -= LB[i, q, k] * M[q, j, k]
+            for k in range(m):
+                M[i, j, k] *= r[i, k]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def tridiagonalize(M, v, w):
-    """Householder reduction of the symmetric M (lower triangle) to tridiagonal form T in
-    place: T's diagonal on M's, its sub-diagonal on M's (orthogonal similarity, same
-    eigenvalues; n - 2 reflections, one in 3-D). v, w are (n,) work space. Each reflector is
-    built from the column scaled by its largest entry, so no square overflows."""
+def tridiagonalize_lanes(M, m, v, w, rows):
+    """Householder reduction of the symmetric M (n, n, W; lower triangle) to tridiagonal form
+    T in place, per lane: T's diagonal on M's, its sub-diagonal on M's (orthogonal similarity,
+    same eigenvalues; n - 2 reflections, one in 3-D). v, w (n, W) and rows (4, W) are work
+    space. Each reflector is built from the column scaled by its largest entry, so no square
+    overflows; a lane whose column is already reduced (all zero) is left unchanged."""
     n = M.shape[0]
-    for k in range(n - 2):
-        s = 0.0
-        for i in range(k + 1, n):
-            s = max(s, abs(M[i, k]))
-        if s == 0.0:  # column already reduced
-            continue
-        sig = 0.0
-        rs = 1.0 / s
-        for i in range(k + 1, n):
-            v[i] = M[i, k] * rs
-            sig += v[i] * v[i]
-        sig = np.sqrt(sig)
-        u0 = v[k + 1]
-        alpha = -sig if u0 >= 0.0 else sig  # -sign(u0) ||u||: no cancellation in v
-        v[k + 1] = u0 - alpha
-        beta = 1.0 / (sig * (sig + abs(u0)))  # 2 / (v^T v)
-        M[k + 1, k] = alpha * s
-        vw = 0.0
-        for i in range(k + 1, n):  # w = beta B v on the trailing block B (symmetric)
-            t = 0.0
-            for j in range(k + 1, n):
-                t += (M[i, j] if j <= i else M[j, i]) * v[j]
-            w[i] = beta * t
-            vw += v[i] * w[i]
-        half = 0.5 * beta * vw
-        for i in range(k + 1, n):
-            w[i] -= half * v[i]
-        for i in range(k + 1, n):  # B -= v w^T + w v^T (lower triangle)
-            for j in range(k + 1, i + 1):
-                M[i, j] -= v[i] * w[j] + w[i] * v[j]
+    s, sig, beta, vw = rows[0], rows[1], rows[2], rows[3]
+    for c in range(n - 2):
+        for k in range(m):
+            s[k] = 0.0
+            sig[k] = 0.0
+            vw[k] = 0.0
+        for i in range(c + 1, n):
+            for k in range(m):
+                s[k] = max(s[k], abs(M[i, c, k]))
+        for i in range(c + 1, n):
+            for k in range(m):
+                v[i, k] = M[i, c, k] * (1.0 / s[k] if s[k] > 0.0 else 0.0)
+                sig[k] += v[i, k] * v[i, k]
+        for k in range(m):
+            sg = np.sqrt(sig[k])
+            u0 = v[c + 1, k]
+            alpha = -sg if u0 >= 0.0 else sg  # -sign(u0) ||u||: no cancellation in v
+            v[c + 1, k] = u0 - alpha
+            # 2 / (v^T v); 0 (no reflection) for a reduced column
+            beta[k] = 1.0 / (sg * (sg + abs(u0))) if s[k] > 0.0 else 0.0
+            M[c + 1, c, k] = alpha * s[k] if s[k] > 0.0 else M[c + 1, c, k]
+        for i in range(c + 1, n):  # w = beta B v on the trailing block B (symmetric)
+            for k in range(m):
+                w[i, k] = 0.0
+            for j in range(c + 1, n):
+                if j <= i:
+                    for k in range(m):
+                        w[i, k] += M[i, j, k] * v[j, k]
+                else:
+                    for k in range(m):
+                        w[i, k] += M[j, i, k] * v[j, k]
+            for k in range(m):
+                w[i, k] *= beta[k]
+                vw[k] += v[i, k] * w[i, k]
+        for i in range(c + 1, n):
+            for k in range(m):
+                w[i, k] -= 0.5 * beta[k] * vw[k] * v[i, k]
+        for i in range(c + 1, n):  # B -= v w^T + w v^T (lower triangle)
+            for j in range(c + 1, i + 1):
+                for k in range(m):
+                    M[i, j, k] -= v[i, k] * w[j, k] + w[i, k] * v[j, k]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def h_tridiagonal(T, q):
-    """``h(q) = q (q + 1) tr((T + q I)^{-1}) - n`` and h'(q) for the tridiagonal T (diagonal
-    and sub-diagonal of the array T), in O(n), or (nan, nan) if T + q I is not numerically
-    positive definite (q below the rounding level of T's small eigenvalues).
+def h_tridiagonal_lanes(T, q, m, h, dh, rows):
+    """``h(q) = q (q + 1) tr((T + q I)^{-1}) - n`` and h'(q) per lane into h, dh (W,), for the
+    tridiagonal T (diagonal and sub-diagonal of T (n, n, W)), in O(n), or nan where T + q I is
+    not numerically positive definite (q below the rounding level of T's small eigenvalues).
+    ``rows`` is (6, W) work space.
 
     The LDL^T pivots ``d_i = t_ii + q - e_i^2 / d_{i-1}`` give ``tr((T + qI)^{-1}) =
     d/dq log det(T + qI) = sum_i d_i' / d_i`` and its derivative ``sum_i (d_i'' / d_i -
@@ -124,155 +160,181 @@ def h_tridiagonal(T, q):
     ``gam_i = u (gam_{i-1} - 2 g_{i-1}^2) / d_i`` with ``u = e_i^2 / d_{i-1} < t_ii + q``.
     All terms of both sums have one sign (d_i is concave in q), so they do not cancel."""
     n = T.shape[0]
-    r = 1.0
-    g = 0.0
-    gam = 0.0
-    f = 0.0
-    df = 0.0
-    for i in range(n):  # one division per pivot: r = 1 / d_{i-1} serves u, g and gam
-        d = T[i, i] + q
-        num_g = 1.0
-        num_gam = 0.0
-        if i > 0:
-            e = T[i, i - 1]
-            u = (e * r) * e  # e / d_{i-1} first: e^2 alone may overflow
-            d -= u
-            num_g += u * g
-            num_gam = u * (gam - 2.0 * g * g)
-        if not d > 0.0:
-            return np.nan, np.nan
-        r = 1.0 / d
-        g = num_g * r
-        gam = num_gam * r
-        f += g
-        df += gam - g * g
-    qq = q * (q + 1.0)
-    return qq * f - n, (2.0 * q + 1.0) * f + qq * df
+    r, g, gam, f, df, ok = rows[0], rows[1], rows[2], rows[3], rows[4], rows[5]
+    for k in range(m):  # one division per pivot: r = 1 / d_{i-1} serves u, g and gam
+        d = T[0, 0, k] + q[k]
+        ok[k] = 1.0 if d > 0.0 else 0.0
+        r[k] = 1.0 / d
+        g[k] = r[k]
+        gam[k] = 0.0
+        f[k] = g[k]
+        df[k] = -g[k] * g[k]
+    for i in range(1, n):
+        for k in range(m):
+            e = T[i, i - 1, k]
+            u = (e * r[k]) * e  # e / d_{i-1} first: e^2 alone may overflow
+            d = (T[i, i, k] + q[k]) - u
+            ok[k] = ok[k] if d > 0.0 else 0.0
+            r[k] = 1.0 / d
+            num_gam = u * (gam[k] - 2.0 * g[k] * g[k])
+            g[k] = (1.0 + u * g[k]) * r[k]
+            gam[k] = num_gam * r[k]
+            f[k] += g[k]
+            df[k] += gam[k] - g[k] * g[k]
+    for k in range(m):
+        qq = q[k] * (q[k] + 1.0)
+        h[k] = qq * f[k] - n if ok[k] > 0.0 else np.nan
+        dh[k] = (2.0 * q[k] + 1.0) * f[k] + qq * df[k] if ok[k] > 0.0 else np.nan
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def h_shifted(A, B, LB, q, S, L, W):
-    """h(q) and h'(q) (module docstring) from the Cholesky factor L of ``S = A + q B``:
-    with ``W = L^{-1} LB`` (LB the Cholesky factor of B), ``tr(S^{-1} B) = ||W||_F^2`` and
-    ``tr((S^{-1} B)^2) = ||W W^T||_F^2``, so ``h = q (q + 1) ||W||_F^2 - n`` and ``h' =
-    (2q + 1) ||W||_F^2 - q (q + 1) ||W W^T||_F^2``. O(n^3), but as accurate as the pencil
-    allows (cond(S) <= max(cond A, cond B)); (nan, nan) if the factorization fails. S, L, W
-    are (n, n) work space; S's strict upper triangle keeps L's reciprocal diagonal."""
+def h_shifted_lanes(A, B, LB, q, m, h, dh, S, L, X, rows):
+    """h(q) and h'(q) per lane (module docstring) from the Cholesky factor L of ``S = A + q
+    B``: with ``X = L^{-1} LB`` (LB the Cholesky factor of B), ``tr(S^{-1} B) = ||X||_F^2`` and
+    ``tr((S^{-1} B)^2) = ||X X^T||_F^2``, so ``h = q (q + 1) ||X||_F^2 - n`` and ``h' =
+    (2q + 1) ||X||_F^2 - q (q + 1) ||X X^T||_F^2``. O(n^3), but as accurate as the pencil
+    allows (cond(S) <= max(cond A, cond B)); nan where the factorization fails. S, L, X
+    (n, n, W) and rows (4, W) are work space."""
     n = A.shape[0]
+    pivot, t1, t2, g = rows[0], rows[1], rows[2], rows[3]
     for i in range(n):
         for j in range(i + 1):
-            S[i, j] = A[i, j] + q * B[i, j]
-    if not cholesky(S, L) > 0.0:
-        return np.nan, np.nan
-    t1 = 0.0
-    for j in range(n):  # W[:, j] = L^{-1} LB[:, j], lower triangular
+            for k in range(m):
+                S[i, j, k] = A[i, j, k] + q[k] * B[i, j, k]
+    cholesky_lanes(S, L, m, pivot)
+    for k in range(m):
+        t1[k] = 0.0
+        t2[k] = 0.0
+    for j in range(n):  # X[:, j] = L^{-1} LB[:, j], lower triangular
         for i in range(j, n):
-            s = LB[i, j]
-            for k in range(j, i):
-                s -= L[i, k] * W[k, j]
-            W[i, j] = s / L[i, i]
-            t1 += W[i, j] * W[i, j]
-    t2 = 0.0
-    for i in range(n):  # G = W W^T (lower triangle), t2 = ||G||_F^2
+            for k in range(m):
+                X[i, j, k] = LB[i, j, k]
+            for c in range(j, i):
+                for k in range(m):
+                    X[i, j, k] -= L[i, c, k] * X[c, j, k]
+            for k in range(m):
+                X[i, j, k] /= L[i, i, k]
+                t1[k] += X[i, j, k] * X[i, j, k]
+    for i in range(n):  # G = X X^T (lower triangle), t2 = ||G||_F^2
         for j in range(i + 1):
-            g = 0.0
-            for k in range(j + 1):
-                g += W[i, k] * W[j, k]
-            t2 += g * g if i == j else 2.0 * g * g
-    qq = q * (q + 1.0)
-    return qq * t1 - n, (2.0 * q + 1.0) * t1 - qq * t2
+            w = 1.0 if i == j else 2.0
+            for k in range(m):
+                g[k] = 0.0
+            for c in range(j + 1):
+                for k in range(m):
+                    g[k] += X[i, c, k] * X[j, c, k]
+            for k in range(m):
+                t2[k] += w * g[k] * g[k]
+    for k in range(m):
+        qq = q[k] * (q[k] + 1.0)
+        h[k] = qq * t1[k] - n if pivot[k] > 0.0 else np.nan
+        dh[k] = (2.0 * q[k] + 1.0) * t1[k] - qq * t2[k] if pivot[k] > 0.0 else np.nan
 
 
-# newton and p_volume are compiled once and called (inlining them into every caller tripled the
-# fresh-compile time, 12 s -> 42 s); _nrt=False keeps their views free of atomic reference
-# counting. The small helpers are inlined into them.
+# newton_lanes and p_volume_lanes are compiled once and called, not inlined (compile time);
+# _nrt=False keeps their views free of atomic reference counting. The lane helpers are
+# inlined into them.
 @njit(cache=True, error_model="numpy", _nrt=False)
-def newton(shifted, A, B, LB, T, L, X, q, hi):
-    """Root of the increasing h in ``(0, hi]`` by Newton's method safeguarded by a bracket,
-    started at q in (0, hi]; the result is finite and > 0. h is :func:`h_tridiagonal` on T,
-    or :func:`h_shifted` on (A, B, LB) if ``shifted`` (T, L, X its work space); its stopping
-    tolerance rtol is ``NEWTON_RTOL`` or ``TRIDIAGONAL_RTOL`` accordingly.
+def newton_lanes(shifted, A, B, LB, T, L, X, m, q, hi0, active, rows):
+    """Root of the increasing h in ``(0, hi0]`` per lane by Newton's method safeguarded by a
+    bracket, started at q in (0, hi0] (q (W,) is updated in place to the root, finite and
+    > 0), on the lanes with ``active`` > 0. h is :func:`h_tridiagonal_lanes` on T, or
+    :func:`h_shifted_lanes` on (A, B, LB) if ``shifted`` (T, L, X its work space); the
+    stopping tolerance rtol is ``NEWTON_RTOL`` or ``TRIDIAGONAL_RTOL`` accordingly. ``rows``
+    is (11, W) work space.
 
-    A Newton step leaving the bracket is replaced by a geometric bisection (or a division by 4
-    while the lower end is 0; a failed evaluation counts as h < 0: q too small). A step below
+    The lanes iterate in lockstep while any of them runs; a lane that has stopped is no longer
+    updated (selects, no branch), so its result does not depend on the other lanes. A Newton
+    step leaving the bracket is replaced by a geometric bisection (or a division by 4 while
+    the lower end is 0; a failed evaluation counts as h < 0: q too small). A step below
     ``rtol q`` is taken and ends the iteration: Newton's error after it is of the order of the
     step squared."""
     rtol = NEWTON_RTOL if shifted else TRIDIAGONAL_RTOL
-    lo = 0.0
+    lo, hi, h, dh, run = rows[0], rows[1], rows[2], rows[3], rows[4]
+    running = 0
+    for k in range(m):
+        lo[k] = 0.0
+        hi[k] = hi0[k]
+        run[k] = active[k]
+        running += 1 if active[k] > 0.0 else 0
     for _ in range(NEWTON_MAX_STEPS):
+        if running == 0:
+            break
         if shifted:
-            h, dh = h_shifted(A, B, LB, q, T, L, X)
+            h_shifted_lanes(A, B, LB, q, m, h, dh, T, L, X, rows[5:])
         else:
-            h, dh = h_tridiagonal(T, q)
-        if h == 0.0:
-            break
-        if h > 0.0:
-            hi = q
-        else:
-            lo = q
-        step = q - h / dh if dh > 0.0 else np.nan
-        if lo < step < hi:
-            if abs(step - q) <= rtol * q:
-                return step
-        elif lo > 0.0:
-            step = np.sqrt(lo * hi)
-        else:
-            step = 0.25 * q
-        if not hi - lo > 4.0 * U * hi:  # bracket at rounding level
-            break
-        q = step
-    return q
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def gershgorin_max(T) -> float:
-    """Gershgorin's upper bound on the largest eigenvalue of the tridiagonal T."""
-    n = T.shape[0]
-    big = 0.0
-    for i in range(n):
-        r = T[i, i]
-        if i > 0:
-            r += abs(T[i, i - 1])
-        if i + 1 < n:
-            r += abs(T[i + 1, i])
-        big = max(big, r)
-    return big
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def root_oriented(A, B, LB, q, M, Y, Z):
-    """Root of h for the pencil (A, B), LB the Cholesky factor of B, from the start q > 0:
-    stage 1 on the tridiagonal form (O(n) per step), stage 2 polishing with
-    :func:`h_shifted` (usually one evaluation, which confirms the root), since the standard
-    form loses accuracy when both shapes are ill-conditioned. M, Y, Z are work space."""
-    reduce_pencil(A, LB, M, Y, Z[0])
-    if A.shape[0] > 2:
-        tridiagonalize(M, Y[0], Y[1])
-    # h(sqrt(l_max)) >= 0; the factor covers the rounding of T's eigenvalues (normwise).
-    hi = np.sqrt(gershgorin_max(M)) * 1.01
-    q = newton(False, A, B, LB, M, Y, Z, min(q, hi), hi)
-    return newton(True, A, B, LB, M, Y, Z, q, hi)
+            h_tridiagonal_lanes(T, q, m, h, dh, rows[5:])
+        running = 0
+        for k in range(m):
+            qk, hk = q[k], h[k]
+            up = hk > 0.0
+            lok = lo[k] if up else qk
+            hik = qk if up else hi[k]
+            step = qk - hk / dh[k] if dh[k] > 0.0 else np.nan
+            inside = lok < step < hik
+            converged = inside and abs(step - qk) <= rtol * qk
+            if not inside:
+                step = np.sqrt(lok * hik) if lok > 0.0 else 0.25 * qk
+            collapsed = not hik - lok > 4.0 * U * hik  # bracket at rounding level
+            take = converged or not (hk == 0.0 or collapsed)
+            stop = hk == 0.0 or converged or collapsed
+            live = run[k] > 0.0
+            q[k] = step if live and take else qk
+            lo[k] = lok if live else lo[k]
+            hi[k] = hik if live else hi[k]
+            run[k] = 0.0 if stop else run[k]
+            running += 1 if run[k] > 0.0 else 0
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def p_volume(C1, C2, L1, L2, M, Y, Z):
-    """The volume-optimal p (module docstring): L1, L2 are the Cholesky factors of C1, C2;
-    M, Y, Z are (n, n) work space.
+def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
+    """The volume-optimal p (module docstring) of the lanes with ``active`` > 0, into p (W,):
+    C1, C2 (n, n, W) the shapes, L1, L2 their Cholesky factors; mats (7, n, n, W), vecs
+    (3, n, W) and rows (16, W) are work space.
 
-    Oriented so that the solved root is not small: if ``p0 = sqrt(tr C1 / tr C2)`` (in
-    ``[sqrt(l_min), sqrt(l_max)]``, the root for equal eigenvalues) is below 1, the pencil is
-    swapped to (C2, C1), whose root is 1 / p (for p << 1, h = p (p + 1) tr(...) - n would lose
-    the digits of p to cancellation; a root p << 1 has every l_i <~ n p^2, so p0 <~ sqrt(n) p
-    is small too)."""
-    t1 = 0.0
-    t2 = 0.0
-    for i in range(C1.shape[0]):
-        t1 += C1[i, i]
-        t2 += C2[i, i]
-    p0 = np.sqrt(t1 / t2)
-    if p0 >= 1.0:
-        return root_oriented(C1, C2, L2, p0, M, Y, Z)
-    return 1.0 / root_oriented(C2, C1, L1, 1.0 / p0, M, Y, Z)
+    Each lane solves the oriented pencil, so that its root is not small: if ``p0 =
+    sqrt(tr C1 / tr C2)`` (in ``[sqrt(l_min), sqrt(l_max)]``, the root for equal eigenvalues)
+    is below 1, the pencil is swapped to (C2, C1), whose root is 1 / p (for p << 1, h = p (p +
+    1) tr(...) - n would lose the digits of p to cancellation; a root p << 1 has every l_i <~
+    n p^2, so p0 <~ sqrt(n) p is small too). Stage 1 on the tridiagonal form (O(n) per step),
+    stage 2 polishing with :func:`h_shifted_lanes` (usually one evaluation, which confirms the
+    root), since the standard form loses accuracy when both shapes are ill-conditioned."""
+    n = C1.shape[0]
+    A, B, LB, M, Y, L, X = mats[0], mats[1], mats[2], mats[3], mats[4], mats[5], mats[6]
+    swap, q, hi = rows[0], rows[1], rows[2]
+    for k in range(m):
+        t1 = 0.0
+        t2 = 0.0
+        for i in range(n):  # the only loop over n inside a lane loop: a short reduction
+            t1 += C1[i, i, k]
+            t2 += C2[i, i, k]
+        p0 = np.sqrt(t1 / t2)
+        swap[k] = 0.0 if p0 >= 1.0 else 1.0
+        q[k] = p0 if p0 >= 1.0 else 1.0 / p0
+    for i in range(n):
+        for j in range(i + 1):
+            for k in range(m):
+                a, b = C1[i, j, k], C2[i, j, k]
+                A[i, j, k] = b if swap[k] > 0.0 else a
+                B[i, j, k] = a if swap[k] > 0.0 else b
+                LB[i, j, k] = L1[i, j, k] if swap[k] > 0.0 else L2[i, j, k]
+    reduce_pencil_lanes(A, LB, M, Y, vecs[0], m)
+    tridiagonalize_lanes(M, m, vecs[1], vecs[2], rows[3:])
+    for k in range(m):  # h(sqrt(l_max)) >= 0: Gershgorin's bound on T's largest eigenvalue,
+        big = 0.0  # times a factor for the rounding of T's eigenvalues (normwise)
+        for i in range(n):
+            e = M[i, i, k]
+            if i > 0:
+                e += abs(M[i, i - 1, k])
+            if i + 1 < n:
+                e += abs(M[i + 1, i, k])
+            big = max(big, e)
+        hi[k] = np.sqrt(big) * 1.01
+        q[k] = min(q[k], hi[k])
+    newton_lanes(False, A, B, LB, M, L, X, m, q, hi, active, rows[3:])
+    newton_lanes(True, A, B, LB, Y, L, X, m, q, hi, active, rows[3:])
+    for k in range(m):
+        p[k] = 1.0 / q[k] if swap[k] > 0.0 else q[k]
 
 
 @njit(cache=True, error_model="numpy")
@@ -321,46 +383,93 @@ def p_xy_psi(C1, C2, planar, heading):
     return (1.0 - best) / best
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def sum_one(c1, C1, c2, C2, mode, p_in, planar, heading, out_c, out_C, work):
-    """One certified sum; ``planar``, ``heading`` are the coordinates of ``P_XY_PSI`` (unused
-    otherwise). ``work`` is (6, max(n, 1), n) scratch. Returns (code, p, margin). Inlined into
-    its two callers (as ``_strip_kernel.fuse_one``)."""
-    n = c1.shape[0]
-    L1, L2, A, X, D = work[0, :n], work[1, :n], work[2, :n], work[3, :n], work[4, :n]
-    dc = work[5, 0]
-    code = check_ellipsoid(c1, C1, L1)
-    if code != 0:
-        return code, 0.0, 0.0
-    code = check_ellipsoid(c2, C2, L2)
-    if code != 0:
-        return code + 10, 0.0, 0.0
-    if mode == P_GIVEN:
-        p = p_in
-        if not (np.isfinite(p) and p > 0.0):
-            return BAD_KAPPA, 0.0, 0.0
+@njit(cache=True, error_model="numpy", _nrt=False)
+def _validate_block(c, C, L, m, code, scratch):
+    """``check_ellipsoids`` compiled once (called for both summands)."""
+    check_ellipsoids(c, C, L, m, code, scratch)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False)
+def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
+    """The certified sums of instances ``base .. base + m`` (m <= W) as one block of lanes.
+    ``wk`` = (mats, vecs, rows, codes) is the block work space."""
+    out_c, out_C, code, p_out, margin_out = out
+    mats, vecs, rows, codes = wk
+    c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
+    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
+    p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
+    load_vectors(c1, base, m, c1s)
+    load_matrices(C1, base, m, C1s)
+    load_vectors(c2, base, m, c2s)
+    load_matrices(C2, base, m, C2s)
+    _validate_block(c1s, C1s, L1, m, codes[0], rows[5:])
+    _validate_block(c2s, C2s, L2, m, codes[1], rows[5:])
+    for k in range(m):
+        c = codes[0, k]
+        codes[0, k] = c if c != 0 else (codes[1, k] + 10 if codes[1, k] != 0 else 0)
+        act[k] = 1.0 if codes[0, k] == 0 else 0.0
+    n = c1s.shape[0]
+    if mode == P_VOLUME:
+        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:], vecs[4:], rows[5:])
+    elif mode == P_GIVEN:
+        for k in range(m):
+            p[k] = p_in[base + k]
     elif mode == P_TRACE:
-        t1 = 0.0
-        t2 = 0.0
-        for i in range(n):
-            t1 += C1[i, i]
-            t2 += C2[i, i]
-        p = np.sqrt(t1 / t2)  # kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))
-    elif mode == P_XY_PSI:
-        p = p_xy_psi(C1, C2, planar, heading)
+        for k in range(m):  # kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))
+            t1 = 0.0
+            t2 = 0.0
+            for i in range(n):
+                t1 += C1s[i, i, k]
+                t2 += C2s[i, i, k]
+            p[k] = np.sqrt(t1 / t2)
     else:
-        p = p_volume(C1, C2, L1, L2, A, X, D)
-    onep, ronep = mr_add(1.0, 0.0, p, 0.0)
+        for k in range(m):
+            p[k] = p_xy_psi(C1[base + k], C2[base + k], planar, heading) if act[k] > 0.0 else 1.0
+    for k in range(m):
+        if mode == P_GIVEN and codes[0, k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
+            codes[0, k] = BAD_KAPPA
+        onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
+    S, D = mats[4], mats[5]
     for i in range(n):
-        out_c[i], dc[i] = mr_add(c1[i], 0.0, c2[i], 0.0)
+        for k in range(m):
+            oc[i, k], dc[i, k] = mr_add(c1s[i, k], 0.0, c2s[i, k], 0.0)
         for j in range(i + 1):
-            q, rq = mr_div(C1[i, j], 0.0, p, 0.0)
-            s, rs = mr_add(q, rq, C2[i, j], 0.0)
-            out_C[i, j], D[i, j] = mr_mul(onep, ronep, s, rs)
-    margin = inflate(out_C, D, out_c, dc, out_C, A)  # A: free work space by now
-    if margin < 0.0:
-        return OUT_OF_DOMAIN, p, 0.0
-    return 0, p, margin
+            for k in range(m):
+                q, rq = mr_div(C1s[i, j, k], 0.0, p[k], 0.0)
+                s, rs = mr_add(q, rq, C2s[i, j, k], 0.0)
+                S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
+    T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
+    inflate_lanes(S, D, oc, dc, T, mats[6], m, margin, rows[5:])
+    store_vectors(oc, base, m, out_c)
+    store_matrices(T, base, m, out_C)
+    for k in range(m):
+        r = codes[0, k]
+        if r == 0 and margin[k] < 0.0:
+            r = OUT_OF_DOMAIN
+        code[base + k] = r
+        p_out[base + k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
+        margin_out[base + k] = margin[k] if r == 0 else 0.0
+
+
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
+    """The batch loop over blocks of W lanes, compiled without numba's reference counting
+    (``_nrt=False``): every view otherwise increments and decrements its parent's counter
+    atomically, a cache line both threads fight over. Nothing here allocates."""
+    for base in range(start, stop, W):
+        m = min(W, stop - base)
+        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
+
+
+@njit(cache=True, error_model="numpy")
+def block_work(n):
+    """Work space of one slice: (mats, vecs, rows, codes)."""
+    return (
+        np.empty((N_MATS, n, n, W)),
+        np.empty((N_VECS, n, W)),
+        np.empty((N_ROWS, W)),
+        np.empty((2, W), np.int64),
+    )
 
 
 @njit(cache=True, error_model="numpy")
@@ -371,12 +480,11 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     ``_midrad.inflate``)."""
     n = c1.shape[0]
     out = (np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.empty(1), np.empty(1))
-    work = np.zeros((6, max(n, 1), n))
     one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
     _sum_loop(
         np.ascontiguousarray(c1).reshape((1, n)), np.ascontiguousarray(C1).reshape((1, n, n)),
         np.ascontiguousarray(c2).reshape((1, n)), np.ascontiguousarray(C2).reshape((1, n, n)),
-        mode, np.full(1, p_in), planar, heading, out, work, one - 1, one,
+        mode, np.full(1, p_in), planar, heading, out, block_work(n), one - 1, one,
     )  # fmt: skip
     out_c, out_C = out[0][0], out[1][0]
     out_L = np.empty((n, n))
@@ -384,25 +492,11 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0])
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, stop):
-    """The batch loop, compiled without numba's reference counting (``_nrt=False``, as
-    ``_strip_kernel._fuse_loop``): every per-instance view otherwise increments and decrements
-    its parent's counter atomically, a cache line both threads fight over. Nothing here
-    allocates; the views live no longer than the call."""
-    out_c, out_C, code, p, margin = out
-    for i in range(start, stop):
-        r = sum_one(
-            c1[i], C1[i], c2[i], C2[i], mode, p_in[i], planar, heading, out_c[i], out_C[i], work
-        )
-        code[i], p[i], margin[i] = r
-
-
 @njit(cache=True, error_model="numpy", nogil=True)
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
-    """``sum_one`` on instances ``start..stop`` (p_in broadcast to (B,) by the caller).
+    """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller).
     ``out`` = (centres, shapes, code, p, margin); no Cholesky factors (the batch returns none).
     """
-    n = c1.shape[1]
-    work = np.zeros((6, max(n, 1), n))
-    _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, work, start, stop)
+    _sum_loop(
+        c1, C1, c2, C2, mode, p_in, planar, heading, out, block_work(c1.shape[1]), start, stop
+    )
