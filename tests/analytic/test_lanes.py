@@ -7,11 +7,13 @@ from numba import njit
 from optbound.analytic._lanes import (
     W,
     check_ellipsoids,
+    inflate_lanes,
     load_matrices,
     load_vectors,
     store_matrices,
     store_vectors,
 )
+from optbound.analytic._midrad import inflate
 from optbound.sets._domain import check_ellipsoid
 
 
@@ -70,3 +72,54 @@ def test_every_code_occurs():
     code = np.empty(5000, np.int64)
     _check_batch(c, C, code, np.empty((5000, 3, 3)), np.empty((5000, 3)), np.empty((5000, 3, 3)))
     assert set(np.unique(code)) == set(range(7))
+
+
+def _inflate_cases(n: int, count: int, seed: int):
+    """Computed shapes S with radii D, centres c with radii d: benign, ill-conditioned,
+    singular (full widening), far centres, and too large for the domain (margin -1)."""
+    rng = np.random.default_rng(seed)
+    q = np.linalg.qr(rng.standard_normal((count, n, n)))[0]
+    axes = 10.0 ** rng.uniform(-8.0, 8.0, (count, n))
+    S = (q * axes[:, None, :]) @ q.transpose(0, 2, 1)
+    S[::7, :, 0] = S[::7, 0, :] = 0.0  # singular
+    S[::11] *= 1e115  # beyond MAX_DIAG once inflated
+    c = rng.standard_normal((count, n)) * 10.0 ** rng.uniform(-3.0, 12.0, (count, 1))
+    c[::13, 0] = 1e61  # beyond MAG
+    D = np.abs(S) * 10.0 ** rng.uniform(-16.0, -10.0, (count, 1, 1))
+    d = np.abs(c) * 1e-16
+    d[::3] = 0.0  # no centre error
+    return S, D, c, d
+
+
+@njit(error_model="numpy")
+def _inflate_batch(S, D, c, d, T_out, margin_out):
+    n_batch, n = c.shape
+    mats = np.empty((4, n, n, W))
+    Ss, Ds, Ts, Ls = mats[0], mats[1], mats[2], mats[3]
+    cs, ds, margin, rows = np.empty((n, W)), np.empty((n, W)), np.empty(W), np.empty((8, W))
+    for base in range(0, n_batch, W):
+        m = min(W, n_batch - base)
+        load_matrices(S, base, m, Ss)
+        load_matrices(D, base, m, Ds)
+        load_vectors(c, base, m, cs)
+        load_vectors(d, base, m, ds)
+        inflate_lanes(Ss, Ds, cs, ds, Ts, Ls, m, margin, rows)
+        store_matrices(Ts, base, m, T_out)
+        margin_out[base : base + m] = margin[:m]
+
+
+@pytest.mark.parametrize("n", [1, 3, 4])
+@pytest.mark.parametrize("count", [1, 3 * W + 5])
+def test_inflate_lanes_matches_the_scalar_inflate(n, count):
+    """Same shapes and margins as ``_midrad.inflate`` (bitwise; -1.0 where the scalar version
+    refuses), in full blocks and in the remainder."""
+    S, D, c, d = _inflate_cases(n, count, seed=n * 100 + count)
+    T, margin = np.empty((count, n, n)), np.empty(count)
+    _inflate_batch(S, D, c, d, T, margin)
+    assert {-1.0} < set(margin.tolist()) or count == 1
+    for i in range(count):
+        T_ref = np.empty((n, n))
+        m_ref = inflate(S[i].copy(), D[i], c[i], d[i], T_ref, np.empty((n, n)))
+        assert margin[i] == m_ref, i
+        if m_ref >= 0.0:
+            assert np.array_equal(T[i], T_ref), i

@@ -17,7 +17,7 @@ from scipy.optimize import brentq
 
 from optbound import Ellipsoid, analytic
 from optbound.analytic import _minkowski_kernel as K
-from optbound.sets._domain import cholesky
+from optbound.analytic._lanes import W, cholesky_lanes
 
 
 def _spd(rng, n: int, cond: float, scale: float) -> np.ndarray:
@@ -27,11 +27,31 @@ def _spd(rng, n: int, cond: float, scale: float) -> np.ndarray:
     return 0.5 * (C + C.T)
 
 
+def _lanes(stack: np.ndarray) -> np.ndarray:
+    """(m, n, n) -> one block (n, n, W), lanes-last; the unused lanes hold NaN."""
+    out = np.full((*stack.shape[1:], W), np.nan)
+    out[..., : stack.shape[0]] = np.moveaxis(stack, 0, -1)
+    return out
+
+
+def _p_block(C1s, C2s, active=None) -> np.ndarray:
+    """p of ``K.p_volume_lanes`` for one block of m = len(C1s) lanes."""
+    m, n = C1s.shape[:2]
+    A, B = _lanes(C1s), _lanes(C2s)
+    L1, L2, pivot1, pivot2 = np.empty((n, n, W)), np.empty((n, n, W)), np.empty(W), np.empty(W)
+    cholesky_lanes(A, L1, m, pivot1)
+    cholesky_lanes(B, L2, m, pivot2)
+    act = np.ones(W) if active is None else np.asarray(active, float)
+    assert np.all((pivot1[:m] > 0) & (pivot2[:m] > 0) | (act[:m] == 0))
+    p = np.full(W, np.nan)
+    K.p_volume_lanes(
+        A, B, L1, L2, m, act, p, np.empty((7, n, n, W)), np.empty((3, n, W)), np.empty((16, W))
+    )
+    return p[:m]
+
+
 def _p_volume(C1, C2) -> float:
-    n = C1.shape[0]
-    L1, L2 = np.zeros((n, n)), np.zeros((n, n))
-    assert cholesky(C1, L1) > 0 and cholesky(C2, L2) > 0
-    return K.p_volume(C1, C2, L1, L2, *np.zeros((3, n, n)))
+    return float(_p_block(C1[None], C2[None])[0])
 
 
 def _p_scipy(C1, C2) -> float:
@@ -136,15 +156,32 @@ def test_domain_corners_give_finite_positive_p_without_warnings(a1, a2, cond):
     assert p == pytest.approx(_p_exact(C1, C2), rel=1e-4)
 
 
+def _tridiagonal(Ms: np.ndarray) -> np.ndarray:
+    """``K.tridiagonalize_lanes`` on a block of m = len(Ms) lanes, as full (m, n, n) matrices."""
+    m, n = Ms.shape[:2]
+    T = _lanes(Ms)
+    K.tridiagonalize_lanes(T, m, np.empty((n, W)), np.empty((n, W)), np.empty((4, W)))
+    T = np.moveaxis(T[..., :m], -1, 0)
+    d, e = np.diagonal(T, axis1=1, axis2=2), np.diagonal(T, -1, axis1=1, axis2=2)
+    return np.stack(
+        [np.diag(di) + np.diag(ei, -1) + np.diag(ei, 1) for di, ei in zip(d, e, strict=True)]
+    )
+
+
+def _h_tridiagonal(T: np.ndarray, q: float) -> tuple[float, float]:
+    """``K.h_tridiagonal_lanes`` for one lane (T (1, n, n) tridiagonal)."""
+    h, dh = np.empty(W), np.empty(W)
+    K.h_tridiagonal_lanes(_lanes(T), np.full(W, q), 1, h, dh, np.empty((6, W)))
+    return h[0], dh[0]
+
+
 @settings(max_examples=40, deadline=None)
 @given(n=st.integers(1, 7), seed=st.integers(0, 2**32 - 1), log_cond=st.floats(0.0, 8.0))
 def test_tridiagonal_form_keeps_the_eigenvalues(n, seed, log_cond):
     rng = np.random.default_rng(seed)
     M = _spd(rng, n, 10**log_cond, 1.0)
-    T = M.copy()
-    K.tridiagonalize(T, np.zeros(n), np.zeros(n))
-    Tfull = np.diag(np.diag(T)) + np.diag(np.diag(T, -1), -1) + np.diag(np.diag(T, -1), 1)
-    np.testing.assert_allclose(np.linalg.eigvalsh(Tfull), np.linalg.eigvalsh(M), atol=1e-14)
+    T = _tridiagonal(M[None])[0]
+    np.testing.assert_allclose(np.linalg.eigvalsh(T), np.linalg.eigvalsh(M), atol=1e-14)
 
 
 @settings(max_examples=40, deadline=None)
@@ -153,10 +190,8 @@ def test_pivot_recurrence_gives_h_and_its_derivative(n, seed, log_q):
     """h and h' of the LDL^T recurrence against the eigenvalue formulas."""
     rng = np.random.default_rng(seed)
     M = _spd(rng, n, 1e3, 1.0)
-    T = M.copy()
-    K.tridiagonalize(T, np.zeros(n), np.zeros(n))
     lam, q = np.linalg.eigvalsh(M), 10**log_q
-    h, dh = K.h_tridiagonal(T, q)
+    h, dh = _h_tridiagonal(_tridiagonal(M[None]), q)
     assert h == pytest.approx(np.sum(q * (q + 1) / (lam + q)) - n, rel=1e-10, abs=1e-12)
     exact_dh = np.sum((q * q + 2 * q * lam + lam) / (lam + q) ** 2)
     assert dh == pytest.approx(exact_dh, rel=1e-8)
@@ -164,7 +199,7 @@ def test_pivot_recurrence_gives_h_and_its_derivative(n, seed, log_q):
 
 def test_pivot_recurrence_reports_an_indefinite_shift():
     T = np.diag([1.0, -2.0, 3.0])
-    assert np.isnan(K.h_tridiagonal(T, 1.0)[0])
+    assert np.isnan(_h_tridiagonal(T[None], 1.0)[0])
 
 
 @pytest.mark.parametrize("s", [1e-8, 1e-30, 1e-60])
@@ -180,3 +215,84 @@ def test_tiny_first_summand_gives_the_exact_member(s):
     exact = (1 + p) * (s * C / p + C)
     logvol = np.linalg.slogdet(out.ellipsoid.shape)[1]
     assert logvol == pytest.approx(np.linalg.slogdet(exact)[1], abs=1e-13)
+
+
+def _mixed_pairs(rng, count: int, n: int = 3):
+    """Pairs of every kind in one block: balls (p exact at the start), cond up to 1e12,
+    summands up to 1e100 apart in size, both orientations: the lanes converge after very
+    different numbers of Newton steps."""
+    cases = [(1.0, 1.0), (1e2, 1e-6), (1e4, 1e6), (1e6, 1.0), (1e12, 1.0), (1e12, 1e-100)]
+    C1s, C2s, rtols = [], [], []
+    for i in range(count):
+        cond, scale = cases[i % len(cases)]
+        if i % 5 == 0:
+            C1, C2 = np.eye(n), scale * np.eye(n)
+        else:
+            C1, C2 = _spd(rng, n, cond, 1.0), _spd(rng, n, cond, scale)
+        if i % 2:
+            C1, C2 = C2, C1
+        C1s.append(C1)
+        C2s.append(C2)
+        rtols.append(1e-4 if cond > 1e6 else 1e-9)
+    return np.array(C1s), np.array(C2s), rtols
+
+
+def test_lockstep_lanes_are_independent_and_match_the_exact_root():
+    """A full block of lanes with mixed convergence: each lane gives the bits of the same
+    instance alone (a block of one, the scalar remainder of the vector loops), whatever its
+    neighbours and the inactive lanes (NaN data) do, and the 50-digit root."""
+    C1s, C2s, rtols = _mixed_pairs(np.random.default_rng(7), W)
+    active = np.ones(W)
+    active[3::9] = 0.0  # inactive lanes hold garbage: they must not disturb the others
+    C1s[3::9, 0, 0] = np.nan
+    p = _p_block(C1s, C2s, active)
+    for i in range(W):
+        if active[i]:
+            assert p[i] == _p_volume(C1s[i], C2s[i]), i
+    for i in range(0, W, 4):
+        if active[i]:
+            assert p[i] == pytest.approx(_p_exact(C1s[i], C2s[i]), rel=rtols[i]), i
+
+
+def _kernel_batch(c1, C1, c2, C2, mode=K.P_VOLUME, p_in=None):
+    B, n = c1.shape
+    out = (
+        np.empty((B, n)),
+        np.empty((B, n, n)),
+        np.zeros(B, np.int8),
+        np.empty(B),
+        np.empty(B),
+    )
+    p_in = np.full(B, 0.5) if p_in is None else p_in
+    dims = np.array([0, 1]), np.array([2])
+    K.sum_range(c1, C1, c2, C2, mode, p_in, *dims, out, 0, B)
+    return out
+
+
+@pytest.mark.parametrize("mode", [K.P_VOLUME, K.P_TRACE, K.P_GIVEN, K.P_XY_PSI])
+def test_mixed_batch_matches_single_calls(mode):
+    """Valid and invalid instances (every error code of both summands, a bad p, a sum
+    leaving the domain) in full blocks and a remainder: each instance's code, p, margin and
+    result equal those of the single call (bitwise)."""
+    rng = np.random.default_rng(11)
+    B = 2 * W + 5
+    C1s, C2s, _ = _mixed_pairs(rng, B)
+    c1, c2 = rng.standard_normal((B, 3)), rng.standard_normal((B, 3))
+    p_in = rng.uniform(0.1, 10.0, B)
+    C1s[1::13, 1, 0] += 1e-3  # asymmetric first summand
+    C2s[2::17] *= -1.0  # second summand not positive definite
+    c2[4::19, 0] = np.inf  # not finite
+    c1[5::23] *= 1e70  # centre too far
+    C1s[6::29] *= 1e119
+    C2s[6::29] *= 1e119  # the sum leaves the domain
+    p_in[7::31] = -1.0  # a bad p (kappa outside (0, 1))
+    out = _kernel_batch(c1, C1s, c2, C2s, mode, p_in)
+    assert len(set(out[2].tolist())) >= 5 and np.sum(out[2] == 0) > B // 2
+    dims = np.array([0, 1]), np.array([2])
+    for i in range(B):
+        c, C, _, _, (code, p, margin) = K.sum_single(
+            c1[i], C1s[i], c2[i], C2s[i], mode, p_in[i], *dims
+        )
+        assert (out[2][i], out[3][i], out[4][i]) == (code, p, margin), i
+        if code == 0:
+            assert np.array_equal(out[0][i], c) and np.array_equal(out[1][i], C), i
