@@ -231,17 +231,24 @@ def h_shifted_lanes(A, B, LB, q, m, h, dh, S, L, X, rows):
         dh[k] = (2.0 * q[k] + 1.0) * t1[k] - qq * t2[k] if pivot[k] > 0.0 else np.nan
 
 
-# newton_lanes and p_volume_lanes are compiled once and called, not inlined (compile time);
-# _nrt=False keeps their views free of atomic reference counting. The lane helpers are
-# inlined into them.
-@njit(cache=True, error_model="numpy", _nrt=False)
-def newton_lanes(shifted, A, B, LB, T, L, X, m, q, hi0, active, rows):
-    """Root of the increasing h in ``(0, hi0]`` per lane by Newton's method safeguarded by a
-    bracket, started at q in (0, hi0] (q (W,) is updated in place to the root, finite and
-    > 0), on the lanes with ``active`` > 0. h is :func:`h_tridiagonal_lanes` on T, or
-    :func:`h_shifted_lanes` on (A, B, LB) if ``shifted`` (T, L, X its work space); the
-    stopping tolerance rtol is ``NEWTON_RTOL`` or ``TRIDIAGONAL_RTOL`` accordingly. ``rows``
-    is (11, W) work space.
+@njit(cache=True, error_model="numpy", inline="always")
+def newton_start(m, hi0, active, rows):
+    """Initial state of :func:`newton_update` in ``rows`` (lo, hi, run; rows 2, 3 receive h
+    and h'); returns the number of running lanes."""
+    lo, hi, run = rows[0], rows[1], rows[4]
+    running = 0
+    for k in range(m):
+        lo[k] = 0.0
+        hi[k] = hi0[k]
+        run[k] = active[k]
+        running += 1 if active[k] > 0.0 else 0
+    return running
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def newton_update(m, q, rtol, rows):
+    """One step of Newton's method safeguarded by a bracket on every running lane, from h and
+    h' at q (rows 2, 3); returns the number of lanes still running.
 
     The lanes iterate in lockstep while any of them runs; a lane that has stopped is no longer
     updated (selects, no branch), so its result does not depend on the other lanes. A Newton
@@ -249,41 +256,56 @@ def newton_lanes(shifted, A, B, LB, T, L, X, m, q, hi0, active, rows):
     the lower end is 0; a failed evaluation counts as h < 0: q too small). A step below
     ``rtol q`` is taken and ends the iteration: Newton's error after it is of the order of the
     step squared."""
-    rtol = NEWTON_RTOL if shifted else TRIDIAGONAL_RTOL
     lo, hi, h, dh, run = rows[0], rows[1], rows[2], rows[3], rows[4]
     running = 0
     for k in range(m):
-        lo[k] = 0.0
-        hi[k] = hi0[k]
-        run[k] = active[k]
-        running += 1 if active[k] > 0.0 else 0
+        qk, hk = q[k], h[k]
+        up = hk > 0.0
+        lok = lo[k] if up else qk
+        hik = qk if up else hi[k]
+        step = qk - hk / dh[k] if dh[k] > 0.0 else np.nan
+        inside = lok < step < hik
+        converged = inside and abs(step - qk) <= rtol * qk
+        if not inside:
+            step = np.sqrt(lok * hik) if lok > 0.0 else 0.25 * qk
+        collapsed = not hik - lok > 4.0 * U * hik  # bracket at rounding level
+        take = converged or not (hk == 0.0 or collapsed)
+        stop = hk == 0.0 or converged or collapsed
+        live = run[k] > 0.0
+        q[k] = step if live and take else qk
+        lo[k] = lok if live else lo[k]
+        hi[k] = hik if live else hi[k]
+        run[k] = 0.0 if stop else run[k]
+        running += 1 if run[k] > 0.0 else 0
+    return running
+
+
+# The two Newton stages and p_volume_lanes are compiled once and called, not inlined (compile
+# time); _nrt=False keeps their views free of atomic reference counting. The lane helpers are
+# inlined into them.
+@njit(cache=True, error_model="numpy", _nrt=False)
+def newton_tridiagonal(T, m, q, hi0, active, rows):
+    """Stage 1: the root of h (:func:`h_tridiagonal_lanes` on T) in ``(0, hi0]`` per lane
+    with ``active`` > 0, from q in (0, hi0] (q (W,) is updated in place to the root, finite and
+    > 0), to ``TRIDIAGONAL_RTOL`` (:func:`newton_update`). ``rows`` is (11, W) work space."""
+    running = newton_start(m, hi0, active, rows)
     for _ in range(NEWTON_MAX_STEPS):
         if running == 0:
             break
-        if shifted:
-            h_shifted_lanes(A, B, LB, q, m, h, dh, T, L, X, rows[5:])
-        else:
-            h_tridiagonal_lanes(T, q, m, h, dh, rows[5:])
-        running = 0
-        for k in range(m):
-            qk, hk = q[k], h[k]
-            up = hk > 0.0
-            lok = lo[k] if up else qk
-            hik = qk if up else hi[k]
-            step = qk - hk / dh[k] if dh[k] > 0.0 else np.nan
-            inside = lok < step < hik
-            converged = inside and abs(step - qk) <= rtol * qk
-            if not inside:
-                step = np.sqrt(lok * hik) if lok > 0.0 else 0.25 * qk
-            collapsed = not hik - lok > 4.0 * U * hik  # bracket at rounding level
-            take = converged or not (hk == 0.0 or collapsed)
-            stop = hk == 0.0 or converged or collapsed
-            live = run[k] > 0.0
-            q[k] = step if live and take else qk
-            lo[k] = lok if live else lo[k]
-            hi[k] = hik if live else hi[k]
-            run[k] = 0.0 if stop else run[k]
-            running += 1 if run[k] > 0.0 else 0
+        h_tridiagonal_lanes(T, q, m, rows[2], rows[3], rows[5:])
+        running = newton_update(m, q, TRIDIAGONAL_RTOL, rows)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False)
+def newton_shifted(A, B, LB, m, q, hi0, active, mats, rows):
+    """Stage 2: as :func:`newton_tridiagonal` with h from :func:`h_shifted_lanes` on (A, B, LB),
+    to ``NEWTON_RTOL``; mats (3, n, n, W) is its work space."""
+    running = newton_start(m, hi0, active, rows)
+    for _ in range(NEWTON_MAX_STEPS):
+        if running == 0:
+            break
+        h_shifted_lanes(A, B, LB, q, m, rows[2], rows[3], mats[0], mats[1], mats[2], rows[5:])
+        running = newton_update(m, q, NEWTON_RTOL, rows)
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
@@ -300,7 +322,7 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
     stage 2 polishing with :func:`h_shifted_lanes` (usually one evaluation, which confirms the
     root), since the standard form loses accuracy when both shapes are ill-conditioned."""
     n = C1.shape[0]
-    A, B, LB, M, Y, L, X = mats[0], mats[1], mats[2], mats[3], mats[4], mats[5], mats[6]
+    A, B, LB, M, Y = mats[0], mats[1], mats[2], mats[3], mats[4]
     swap, q, hi = rows[0], rows[1], rows[2]
     for k in range(m):
         t1 = 0.0
@@ -331,8 +353,8 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
             big = max(big, e)
         hi[k] = np.sqrt(big) * 1.01
         q[k] = min(q[k], hi[k])
-    newton_lanes(False, A, B, LB, M, L, X, m, q, hi, active, rows[3:])
-    newton_lanes(True, A, B, LB, Y, L, X, m, q, hi, active, rows[3:])
+    newton_tridiagonal(M, m, q, hi, active, rows[3:])
+    newton_shifted(A, B, LB, m, q, hi, active, mats[4:], rows[3:])
     for k in range(m):
         p[k] = 1.0 / q[k] if swap[k] > 0.0 else q[k]
 
@@ -481,11 +503,25 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     n = c1.shape[0]
     out = (np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.empty(1), np.empty(1))
     one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
+    # Writable copies: read-only inputs (an Ellipsoid's arrays) would be a type of their own,
+    # for which numba would compile the whole block kernel a second time.
+    c1w, c2w = np.empty((1, n)), np.empty((1, n))
+    C1w, C2w = np.empty((1, n, n)), np.empty((1, n, n))
+    c1w[0], c2w[0], C1w[0], C2w[0] = c1, c2, C1, C2
     _sum_loop(
-        np.ascontiguousarray(c1).reshape((1, n)), np.ascontiguousarray(C1).reshape((1, n, n)),
-        np.ascontiguousarray(c2).reshape((1, n)), np.ascontiguousarray(C2).reshape((1, n, n)),
-        mode, np.full(1, p_in), planar, heading, out, block_work(n), one - 1, one,
-    )  # fmt: skip
+        c1w,
+        C1w,
+        c2w,
+        C2w,
+        mode,
+        np.full(1, p_in),
+        planar,
+        heading,
+        out,
+        block_work(n),
+        one - 1,
+        one,
+    )
     out_c, out_C = out[0][0], out[1][0]
     out_L = np.empty((n, n))
     valid = check_ellipsoid(out_c, out_C, out_L)
