@@ -280,32 +280,26 @@ def newton_update(m, q, rtol, rows):
     return running
 
 
-# The two Newton stages and p_volume_lanes are compiled once and called, not inlined (compile
-# time); _nrt=False keeps their views free of atomic reference counting. The lane helpers are
-# inlined into them.
+# newton_lanes and p_volume_lanes are compiled once and called, not inlined (compile time:
+# newton_lanes has two call sites, so LLVM does not inline it either); _nrt=False keeps their
+# views free of atomic reference counting. The lane helpers are inlined into them.
 @njit(cache=True, error_model="numpy", _nrt=False)
-def newton_tridiagonal(T, m, q, hi0, active, rows):
-    """Stage 1: the root of h (:func:`h_tridiagonal_lanes` on T) in ``(0, hi0]`` per lane
-    with ``active`` > 0, from q in (0, hi0] (q (W,) is updated in place to the root, finite and
-    > 0), to ``TRIDIAGONAL_RTOL`` (:func:`newton_update`). ``rows`` is (11, W) work space."""
+def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
+    """Root of h in ``(0, hi0]`` per lane with ``active`` > 0, from q in (0, hi0] (q (W,) is
+    updated in place to the root, finite and > 0), by :func:`newton_update`. Stage 1
+    (``stage == 1``): h from :func:`h_tridiagonal_lanes` on T, to ``TRIDIAGONAL_RTOL``;
+    stage 2: h from :func:`h_shifted_lanes` on (A, B, LB), to ``NEWTON_RTOL``. mats
+    (3, n, n, W) and rows (11, W) are work space."""
+    rtol = TRIDIAGONAL_RTOL if stage == 1 else NEWTON_RTOL
     running = newton_start(m, hi0, active, rows)
     for _ in range(NEWTON_MAX_STEPS):
         if running == 0:
             break
-        h_tridiagonal_lanes(T, q, m, rows[2], rows[3], rows[5:])
-        running = newton_update(m, q, TRIDIAGONAL_RTOL, rows)
-
-
-@njit(cache=True, error_model="numpy", _nrt=False)
-def newton_shifted(A, B, LB, m, q, hi0, active, mats, rows):
-    """Stage 2: as :func:`newton_tridiagonal` with h from :func:`h_shifted_lanes` on (A, B, LB),
-    to ``NEWTON_RTOL``; mats (3, n, n, W) is its work space."""
-    running = newton_start(m, hi0, active, rows)
-    for _ in range(NEWTON_MAX_STEPS):
-        if running == 0:
-            break
-        h_shifted_lanes(A, B, LB, q, m, rows[2], rows[3], mats[0], mats[1], mats[2], rows[5:])
-        running = newton_update(m, q, NEWTON_RTOL, rows)
+        if stage == 1:
+            h_tridiagonal_lanes(T, q, m, rows[2], rows[3], rows[5:])
+        else:
+            h_shifted_lanes(A, B, LB, q, m, rows[2], rows[3], mats[0], mats[1], mats[2], rows[5:])
+        running = newton_update(m, q, rtol, rows)
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
@@ -353,8 +347,9 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
             big = max(big, e)
         hi[k] = np.sqrt(big) * 1.01
         q[k] = min(q[k], hi[k])
-    newton_tridiagonal(M, m, q, hi, active, rows[3:])
-    newton_shifted(A, B, LB, m, q, hi, active, mats[4:], rows[3:])
+    # np.int64(): a typed stage number, where a literal would compile one specialization each
+    newton_lanes(np.int64(1), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:])
+    newton_lanes(np.int64(2), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:])
     for k in range(m):
         p[k] = 1.0 / q[k] if swap[k] > 0.0 else q[k]
 
@@ -411,10 +406,10 @@ def _validate_block(c, C, L, m, code, scratch):
     check_ellipsoids(c, C, L, m, code, scratch)
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", inline="always")
 def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     """The certified sums of instances ``base .. base + m`` (m <= W) as one block of lanes.
-    ``wk`` = (mats, vecs, rows, codes) is the block work space."""
+    ``wk`` = (mats, vecs, rows, codes) is the block work space (:func:`block_work`)."""
     out_c, out_C, code, p_out, margin_out = out
     mats, vecs, rows, codes = wk
     c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
@@ -473,16 +468,6 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
         margin_out[base + k] = margin[k] if r == 0 else 0.0
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
-    """The batch loop over blocks of W lanes, compiled without numba's reference counting
-    (``_nrt=False``): every view otherwise increments and decrements its parent's counter
-    atomically, a cache line both threads fight over. Nothing here allocates."""
-    for base in range(start, stop, W):
-        m = min(W, stop - base)
-        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
-
-
 @njit(cache=True, error_model="numpy")
 def block_work(n):
     """Work space of one slice: (mats, vecs, rows, codes)."""
@@ -494,12 +479,23 @@ def block_work(n):
     )
 
 
+@njit(cache=True, error_model="numpy", nogil=True)
+def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
+    """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
+    in blocks of W lanes. ``out`` = (centres, shapes, code, p, margin); no Cholesky factors
+    (the batch returns none). The views taken per block cost one reference count per W
+    instances."""
+    wk = block_work(c1.shape[1])
+    for base in range(start, stop, W):
+        m = min(W, stop - base)
+        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
+
+
 @njit(cache=True, error_model="numpy")
 def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
-    """One instance through the batch loop ``_sum_loop`` (a batch of one: the same compiled
-    code, so single and batched results agree bitwise and the kernel is compiled once), plus
-    the result's Cholesky factor and its validation code (0 by construction, see
-    ``_midrad.inflate``)."""
+    """One instance through ``sum_range`` (a batch of one: the same compiled code, so single
+    and batched results agree bitwise), plus the result's Cholesky factor and its validation
+    code (0 by construction, see ``_midrad.inflate``)."""
     n = c1.shape[0]
     out = (np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.empty(1), np.empty(1))
     one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
@@ -508,31 +504,8 @@ def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
     c1w, c2w = np.empty((1, n)), np.empty((1, n))
     C1w, C2w = np.empty((1, n, n)), np.empty((1, n, n))
     c1w[0], c2w[0], C1w[0], C2w[0] = c1, c2, C1, C2
-    _sum_loop(
-        c1w,
-        C1w,
-        c2w,
-        C2w,
-        mode,
-        np.full(1, p_in),
-        planar,
-        heading,
-        out,
-        block_work(n),
-        one - 1,
-        one,
-    )
+    sum_range(c1w, C1w, c2w, C2w, mode, np.full(1, p_in), planar, heading, out, one - 1, one)
     out_c, out_C = out[0][0], out[1][0]
     out_L = np.empty((n, n))
     valid = check_ellipsoid(out_c, out_C, out_L)
     return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0])
-
-
-@njit(cache=True, error_model="numpy", nogil=True)
-def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
-    """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller).
-    ``out`` = (centres, shapes, code, p, margin); no Cholesky factors (the batch returns none).
-    """
-    _sum_loop(
-        c1, C1, c2, C2, mode, p_in, planar, heading, out, block_work(c1.shape[1]), start, stop
-    )
