@@ -11,7 +11,7 @@ import numpy as np
 from numba import njit
 
 from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
-from optbound.analytic._minkowski_kernel import p_volume_lanes
+from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._strip_lambda import lam_volume
 
 
@@ -58,23 +58,25 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, nogil=True, _nrt=False)
-def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, mats, vecs, rows, start, stop):
+@njit(cache=True, nogil=True)
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
-    same blocks of W lanes (``optbound.analytic._minkowski_kernel._sum_loop``), so that the
-    ratio compares the per-instance work only: Cholesky factors, p, the float member."""
+    same blocks of W lanes and work space (``optbound.analytic._minkowski_kernel.sum_range``),
+    so that the ratio compares the per-instance work only: Cholesky factors, p, the float
+    member."""
     n = c1.shape[1]
+    mats, vecs, rows, _ = block_work(n, min(W, stop - start))
     C1s, C2s, L1, L2, S = mats[0], mats[1], mats[2], mats[3], mats[4]
-    p, act = rows[0], rows[1]
+    p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
         load_matrices(C1, base, m, C1s)
         load_matrices(C2, base, m, C2s)
-        cholesky_lanes(C1s, L1, m, rows[2])
-        cholesky_lanes(C2s, L2, m, rows[2])
+        cholesky_lanes(C1s, L1, m, pivot)
+        cholesky_lanes(C2s, L2, m, pivot)
         for k in range(m):
             act[k] = 1.0
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs, rows[3:])
+        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs[:3], rows[3:])
         for i in range(n):
             for j in range(n):
                 for k in range(m):
@@ -83,10 +85,3 @@ def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, mats, vecs, rows, start, stop)
         for k in range(m):
             for i in range(n):
                 out_c[base + k, i] = c1[base + k, i] + c2[base + k, i]
-
-
-@njit(cache=True, nogil=True)
-def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
-    n = c1.shape[1]
-    mats, vecs, rows = np.empty((12, n, n, W)), np.empty((3, n, W)), np.empty((20, W))
-    _minkowski_loop(c1, C1, c2, C2, out_c, out_C, mats, vecs, rows, start, stop)

@@ -191,7 +191,8 @@ def trace_inverse_lanes(L, m, total):
 def inflate_lanes(S, D, c, d, T, L, m, margin, rows):
     """``_midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
     writes T (T may be S; L is work space) and each lane's margin (or -1.0 if T is too large
-    for the domain) into ``margin`` (W,). ``rows`` is (8, W) scratch. The same quantities as
+    for the domain) into ``margin`` (W,). ``rows``: 8 scratch rows (W,), separate arrays (see
+    ``_minkowski_kernel.block_work``). The same quantities as
     ``_midrad.inflate`` (see there for the mathematics), computed lane by lane."""
     n = S.shape[0]
     trace, cmax, pivot, total = rows[0], rows[1], rows[2], rows[3]

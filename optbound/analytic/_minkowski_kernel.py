@@ -58,8 +58,6 @@ NEWTON_MAX_STEPS = 100
 # Newton ends after a step below rtol q (its error is then ~ step^2): the tridiagonal stage may
 # stop earlier, since the polishing step that follows squares its error again.
 NEWTON_RTOL, TRIDIAGONAL_RTOL = 1e-9, 1e-6
-# Block work space: matrices (n, n, W), vectors (n, W) and rows (W,) per slice.
-N_MATS, N_VECS, N_ROWS = 12, 7, 24
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -99,7 +97,7 @@ def reduce_pencil_lanes(A, LB, M, Y, r, m):
 def tridiagonalize_lanes(M, m, v, w, rows):
     """Householder reduction of the symmetric M (n, n, W; lower triangle) to tridiagonal form
     T in place, per lane: T's diagonal on M's, its sub-diagonal on M's (orthogonal similarity,
-    same eigenvalues; n - 2 reflections, one in 3-D). v, w (n, W) and rows (4, W) are work
+    same eigenvalues; n - 2 reflections, one in 3-D). v, w (n, W) and 4 rows are work
     space. Each reflector is built from the column scaled by its largest entry, so no square
     overflows; a lane whose column is already reduced (all zero) is left unchanged."""
     n = M.shape[0]
@@ -151,7 +149,7 @@ def h_tridiagonal_lanes(T, q, m, h, dh, rows):
     """``h(q) = q (q + 1) tr((T + q I)^{-1}) - n`` and h'(q) per lane into h, dh (W,), for the
     tridiagonal T (diagonal and sub-diagonal of T (n, n, W)), in O(n), or nan where T + q I is
     not numerically positive definite (q below the rounding level of T's small eigenvalues).
-    ``rows`` is (6, W) work space.
+    ``rows`` are 6 work rows.
 
     The LDL^T pivots ``d_i = t_ii + q - e_i^2 / d_{i-1}`` give ``tr((T + qI)^{-1}) =
     d/dq log det(T + qI) = sum_i d_i' / d_i`` and its derivative ``sum_i (d_i'' / d_i -
@@ -194,7 +192,7 @@ def h_shifted_lanes(A, B, LB, q, m, h, dh, S, L, X, rows):
     ``tr((S^{-1} B)^2) = ||X X^T||_F^2``, so ``h = q (q + 1) ||X||_F^2 - n`` and ``h' =
     (2q + 1) ||X||_F^2 - q (q + 1) ||X X^T||_F^2``. O(n^3), but as accurate as the pencil
     allows (cond(S) <= max(cond A, cond B)); nan where the factorization fails. S, L, X
-    (n, n, W) and rows (4, W) are work space."""
+    (n, n, W) and 4 rows are work space."""
     n = A.shape[0]
     pivot, t1, t2, g = rows[0], rows[1], rows[2], rows[3]
     for i in range(n):
@@ -288,8 +286,8 @@ def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
     """Root of h in ``(0, hi0]`` per lane with ``active`` > 0, from q in (0, hi0] (q (W,) is
     updated in place to the root, finite and > 0), by :func:`newton_update`. Stage 1
     (``stage == 1``): h from :func:`h_tridiagonal_lanes` on T, to ``TRIDIAGONAL_RTOL``;
-    stage 2: h from :func:`h_shifted_lanes` on (A, B, LB), to ``NEWTON_RTOL``. mats
-    (3, n, n, W) and rows (11, W) are work space."""
+    stage 2: h from :func:`h_shifted_lanes` on (A, B, LB), to ``NEWTON_RTOL``. 3 mats
+    (n, n, W) and 11 rows are work space."""
     rtol = TRIDIAGONAL_RTOL if stage == 1 else NEWTON_RTOL
     running = newton_start(m, hi0, active, rows)
     for _ in range(NEWTON_MAX_STEPS):
@@ -305,8 +303,8 @@ def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
 @njit(cache=True, error_model="numpy", _nrt=False)
 def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
     """The volume-optimal p (module docstring) of the lanes with ``active`` > 0, into p (W,):
-    C1, C2 (n, n, W) the shapes, L1, L2 their Cholesky factors; mats (7, n, n, W), vecs
-    (3, n, W) and rows (16, W) are work space.
+    C1, C2 (n, n, W) the shapes, L1, L2 their Cholesky factors; 7 mats (n, n, W), 3 vecs
+    (n, W) and 14 rows are work space.
 
     Each lane solves the oriented pencil, so that its root is not small: if ``p0 =
     sqrt(tr C1 / tr C2)`` (in ``[sqrt(l_min), sqrt(l_max)]``, the root for equal eigenvalues)
@@ -421,10 +419,11 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     load_matrices(C2, base, m, C2s)
     _validate_block(c1s, C1s, L1, m, codes[0], rows[5:])
     _validate_block(c2s, C2s, L2, m, codes[1], rows[5:])
+    code1, code2 = codes
     for k in range(m):
-        c = codes[0, k]
-        codes[0, k] = c if c != 0 else (codes[1, k] + 10 if codes[1, k] != 0 else 0)
-        act[k] = 1.0 if codes[0, k] == 0 else 0.0
+        c = code1[k]
+        code1[k] = c if c != 0 else (code2[k] + 10 if code2[k] != 0 else 0)
+        act[k] = 1.0 if code1[k] == 0 else 0.0
     n = c1s.shape[0]
     if mode == P_VOLUME:
         p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:], vecs[4:], rows[5:])
@@ -443,8 +442,8 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
         for k in range(m):
             p[k] = p_xy_psi(C1[base + k], C2[base + k], planar, heading) if act[k] > 0.0 else 1.0
     for k in range(m):
-        if mode == P_GIVEN and codes[0, k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
-            codes[0, k] = BAD_KAPPA
+        if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
+            code1[k] = BAD_KAPPA
         onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
     S, D = mats[4], mats[5]
     for i in range(n):
@@ -460,7 +459,7 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     store_vectors(oc, base, m, out_c)
     store_matrices(T, base, m, out_C)
     for k in range(m):
-        r = codes[0, k]
+        r = code1[k]
         if r == 0 and margin[k] < 0.0:
             r = OUT_OF_DOMAIN
         code[base + k] = r
@@ -468,27 +467,54 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
         margin_out[base + k] = margin[k] if r == 0 else 0.0
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _four(stack, first, shape):
+    """Four arrays of ``shape``: ``stack[first:first + 4]`` unless the stack is empty, else
+    new allocations."""
+    if stack.shape[0] == 0:
+        return (np.empty(shape), np.empty(shape), np.empty(shape), np.empty(shape))
+    return (stack[first], stack[first + 1], stack[first + 2], stack[first + 3])
+
+
 @njit(cache=True, error_model="numpy")
-def block_work(n):
-    """Work space of one slice: (mats, vecs, rows, codes)."""
+def block_work(n, lanes):
+    """Work space of one slice for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs, rows,
+    codes), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,).
+
+    For full blocks (lanes = W) every array is allocated separately: a lane loop storing to
+    one row of an array while reading another is not vectorized by LLVM (their distance
+    depends on the runtime stride). A smaller batch (a single call) gets views of three
+    stacks instead, since ~40 allocations would dominate its time; its loops run in scalar
+    code either way. Same types, same compiled kernel, the same bits."""
+    mat, vec, row = (n, n, lanes), (n, lanes), (lanes,)
+    k = 1 if lanes < W else 0
+    mats, vecs, rows = np.empty((12 * k, *mat)), np.empty((8 * k, *vec)), np.empty((24 * k, lanes))
     return (
-        np.empty((N_MATS, n, n, W)),
-        np.empty((N_VECS, n, W)),
-        np.empty((N_ROWS, W)),
-        np.empty((2, W), np.int64),
-    )
+        _four(mats, 0, mat) + _four(mats, 4, mat) + _four(mats, 8, mat),
+        _four(vecs, 0, vec) + _four(vecs, 4, vec),
+        _four(rows, 0, row) + _four(rows, 4, row) + _four(rows, 8, row)
+        + _four(rows, 12, row) + _four(rows, 16, row) + _four(rows, 20, row),
+        (np.empty(lanes, np.int64), np.empty(lanes, np.int64)),
+    )  # fmt: skip
+
+
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
+    """The loop over blocks, compiled without numba's reference counting (``_nrt=False``):
+    every view and every work tuple taken per block would otherwise increment and decrement
+    its parent's counter atomically (microseconds per block). Nothing here allocates."""
+    for base in range(start, stop, W):
+        m = min(W, stop - base)
+        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
     in blocks of W lanes. ``out`` = (centres, shapes, code, p, margin); no Cholesky factors
-    (the batch returns none). The views taken per block cost one reference count per W
-    instances."""
-    wk = block_work(c1.shape[1])
-    for base in range(start, stop, W):
-        m = min(W, stop - base)
-        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
+    (the batch returns none)."""
+    wk = block_work(c1.shape[1], min(W, stop - start))
+    _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
 
 
 @njit(cache=True, error_model="numpy")

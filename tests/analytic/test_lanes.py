@@ -92,11 +92,11 @@ def _inflate_cases(n: int, count: int, seed: int):
 
 
 @njit(error_model="numpy")
-def _inflate_batch(S, D, c, d, T_out, margin_out):
+def _inflate_batch(S, D, c, d, T_out, margin_out, rows):
     n_batch, n = c.shape
     mats = np.empty((4, n, n, W))
     Ss, Ds, Ts, Ls = mats[0], mats[1], mats[2], mats[3]
-    cs, ds, margin, rows = np.empty((n, W)), np.empty((n, W)), np.empty(W), np.empty((8, W))
+    cs, ds, margin = np.empty((n, W)), np.empty((n, W)), np.empty(W)
     for base in range(0, n_batch, W):
         m = min(W, n_batch - base)
         load_matrices(S, base, m, Ss)
@@ -115,7 +115,7 @@ def test_inflate_lanes_matches_the_scalar_inflate(n, count):
     refuses), in full blocks and in the remainder."""
     S, D, c, d = _inflate_cases(n, count, seed=n * 100 + count)
     T, margin = np.empty((count, n, n)), np.empty(count)
-    _inflate_batch(S, D, c, d, T, margin)
+    _inflate_batch(S, D, c, d, T, margin, tuple(np.empty(W) for _ in range(8)))
     assert {-1.0} < set(margin.tolist()) or count == 1
     for i in range(count):
         T_ref = np.empty((n, n))

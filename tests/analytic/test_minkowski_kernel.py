@@ -44,9 +44,8 @@ def _p_block(C1s, C2s, active=None) -> np.ndarray:
     act = np.ones(W) if active is None else np.asarray(active, float)
     assert np.all((pivot1[:m] > 0) & (pivot2[:m] > 0) | (act[:m] == 0))
     p = np.full(W, np.nan)
-    K.p_volume_lanes(
-        A, B, L1, L2, m, act, p, np.empty((7, n, n, W)), np.empty((3, n, W)), np.empty((16, W))
-    )
+    mats, vecs, rows, _ = K.block_work(n, W)
+    K.p_volume_lanes(A, B, L1, L2, m, act, p, mats[:7], vecs[:3], rows[:14])
     return p[:m]
 
 
@@ -156,11 +155,16 @@ def test_domain_corners_give_finite_positive_p_without_warnings(a1, a2, cond):
     assert p == pytest.approx(_p_exact(C1, C2), rel=1e-4)
 
 
+def _rows(count: int) -> tuple:
+    """Work rows, as the kernels get them (separate arrays)."""
+    return tuple(np.empty(W) for _ in range(count))
+
+
 def _tridiagonal(Ms: np.ndarray) -> np.ndarray:
     """``K.tridiagonalize_lanes`` on a block of m = len(Ms) lanes, as full (m, n, n) matrices."""
     m, n = Ms.shape[:2]
     T = _lanes(Ms)
-    K.tridiagonalize_lanes(T, m, np.empty((n, W)), np.empty((n, W)), np.empty((4, W)))
+    K.tridiagonalize_lanes(T, m, np.empty((n, W)), np.empty((n, W)), _rows(4))
     T = np.moveaxis(T[..., :m], -1, 0)
     d, e = np.diagonal(T, axis1=1, axis2=2), np.diagonal(T, -1, axis1=1, axis2=2)
     return np.stack(
@@ -171,7 +175,7 @@ def _tridiagonal(Ms: np.ndarray) -> np.ndarray:
 def _h_tridiagonal(T: np.ndarray, q: float) -> tuple[float, float]:
     """``K.h_tridiagonal_lanes`` for one lane (T (1, n, n) tridiagonal)."""
     h, dh = np.empty(W), np.empty(W)
-    K.h_tridiagonal_lanes(_lanes(T), np.full(W, q), 1, h, dh, np.empty((6, W)))
+    K.h_tridiagonal_lanes(_lanes(T), np.full(W, q), 1, h, dh, _rows(6))
     return h[0], dh[0]
 
 
