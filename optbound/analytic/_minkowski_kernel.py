@@ -49,7 +49,6 @@ from optbound.analytic._lanes import (
     store_vectors,
 )
 from optbound.analytic._midrad import U, mr_add, mr_div, mr_mul
-from optbound.sets._domain import check_ellipsoid
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -511,27 +510,9 @@ def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
 @njit(cache=True, error_model="numpy", nogil=True)
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes. ``out`` = (centres, shapes, code, p, margin); no Cholesky factors
-    (the batch returns none)."""
+    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin). The entry point of
+    both :func:`minkowski_sum` (a batch of one: the same compiled code, so single and batched
+    results agree bitwise) and :func:`minkowski_sum_batch`; both pass their inputs read-only,
+    so that numba compiles it once."""
     wk = block_work(c1.shape[1], min(W, stop - start))
     _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
-
-
-@njit(cache=True, error_model="numpy")
-def sum_single(c1, C1, c2, C2, mode, p_in, planar, heading):
-    """One instance through ``sum_range`` (a batch of one: the same compiled code, so single
-    and batched results agree bitwise), plus the result's Cholesky factor and its validation
-    code (0 by construction, see ``_midrad.inflate``)."""
-    n = c1.shape[0]
-    out = (np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.empty(1), np.empty(1))
-    one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
-    # Writable copies: read-only inputs (an Ellipsoid's arrays) would be a type of their own,
-    # for which numba would compile the whole block kernel a second time.
-    c1w, c2w = np.empty((1, n)), np.empty((1, n))
-    C1w, C2w = np.empty((1, n, n)), np.empty((1, n, n))
-    c1w[0], c2w[0], C1w[0], C2w[0] = c1, c2, C1, C2
-    sum_range(c1w, C1w, c2w, C2w, mode, np.full(1, p_in), planar, heading, out, one - 1, one)
-    out_c, out_C = out[0][0], out[1][0]
-    out_L = np.empty((n, n))
-    valid = check_ellipsoid(out_c, out_C, out_L)
-    return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0])

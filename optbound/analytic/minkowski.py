@@ -30,11 +30,10 @@ from optbound.analytic._minkowski_kernel import (
     P_VOLUME,
     P_XY_PSI,
     sum_range,
-    sum_single,
 )
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
-from optbound.sets._domain import raise_for
+from optbound.sets._domain import check_ellipsoid, raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 
 CRITERIA = ("volume", "trace", "size_xy_psi")
@@ -123,6 +122,13 @@ def _mode(criterion: str, kappa, dims, n_batch: int, n: int):
 _NO_DIMS = np.zeros(0, np.int64)
 
 
+def _read_only(arr: np.ndarray) -> np.ndarray:
+    """A read-only view of ``arr``."""
+    view = arr.view()
+    view.flags.writeable = False
+    return view
+
+
 def minkowski_sum(
     E1: Ellipsoid, E2: Ellipsoid, criterion: str = "volume", kappa=None, dims=None
 ) -> MinkowskiResult:
@@ -164,13 +170,18 @@ def minkowski_sum(
             raise TypeError(f"{name} must be an Ellipsoid, got {type(E).__name__}")
     if E1.dim != E2.dim:
         raise ValueError(f"E1 and E2 must have the same dimension, got {E1.dim} and {E2.dim}")
-    mode, p, planar, heading = _mode(criterion, kappa, dims, 1, E1.dim)
-    c, C, L, valid, (code, p_used, margin) = sum_single(
-        E1.center, E1.shape, E2.center, E2.shape, mode, p[0], planar, heading
-    )
+    n = E1.dim
+    mode, p, planar, heading = _mode(criterion, kappa, dims, 1, n)
+    out = ellipsoid_outputs(1, n, np.int8, float, float)
+    # A batch of one through the batch kernel (bitwise the same results); an Ellipsoid's
+    # arrays are read-only, as the batch passes its inputs.
+    inputs = (E1.center[None], E1.shape[None], E2.center[None], E2.shape[None])
+    sum_range(*inputs, mode, p, planar, heading, out, 0, 1)
+    (c,), (C,), (code,), (p_used,), (margin,) = out
     if code:
-        _raise(code, 0, _NAMES_SINGLE, False)
-    E = Ellipsoid._from_kernel(c, C, L, valid)
+        _raise(int(code), 0, _NAMES_SINGLE, False)
+    L = np.empty((n, n))
+    E = Ellipsoid._from_kernel(c, C, L, check_ellipsoid(c, C, L))
     return MinkowskiResult(E, 1.0 / (1.0 + p_used), margin)
 
 
@@ -207,7 +218,8 @@ def minkowski_sum_batch(
     mode, p, planar, heading = _mode(criterion, kappa, dims, *c1.shape)
     n_batch, n = c1.shape
     out = ellipsoid_outputs(n_batch, n, np.int8, float, float)
-    run_sliced(sum_range, n_batch, c1, C1, c2, C2, mode, p, planar, heading, out)
+    inputs = [_read_only(x) for x in (c1, C1, c2, C2)]  # the kernel's type (minkowski_sum)
+    run_sliced(sum_range, n_batch, *inputs, mode, p, planar, heading, out)
     out_c, out_C, code, p_used, margin = out
     bad = np.flatnonzero(code)
     if bad.size:

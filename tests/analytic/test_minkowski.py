@@ -7,7 +7,8 @@ from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
 from optbound import Ellipsoid, analytic
-from tests.analytic.instances import ellipsoid_pair, sample_sum
+from optbound.analytic._lanes import W
+from tests.analytic.instances import ellipsoid_pair, random_ellipsoid, sample_sum
 
 CONTAIN_TOL = 1e-9
 
@@ -174,3 +175,24 @@ def test_batch_bad_inputs_raise():
             np.zeros((2, 2)),
             np.stack([np.eye(2), -np.eye(2)]),
         )
+
+
+@pytest.mark.parametrize("criterion", ["volume", "trace", "size_xy_psi", "kappa"])
+def test_full_blocks_match_single_calls(criterion):
+    """Two full blocks of lanes (vectorized loops) and a remainder against single calls
+    (a block of one): the same bits, whatever the neighbouring instances."""
+    rng = np.random.default_rng(5)
+    B = 2 * W + 3
+    pairs = [(random_ellipsoid(rng, 3, 4.0), random_ellipsoid(rng, 3, 0.5)) for _ in range(B)]
+    kw = {"kappa": rng.uniform(0.05, 0.95, B)} if criterion == "kappa" else {}
+    out = analytic.minkowski_sum_batch(
+        *(np.stack([getattr(E, a) for E in Es]) for Es in zip(*pairs, strict=True)
+          for a in ("center", "shape")),
+        **({"criterion": criterion} if criterion != "kappa" else kw),
+    )  # fmt: skip
+    for i, (E1, E2) in enumerate(pairs):
+        k = {"kappa": kw["kappa"][i]} if kw else {"criterion": criterion}
+        single = analytic.minkowski_sum(E1, E2, **k)
+        assert out.kappa[i] == single.kappa and out.margin[i] == single.margin, i
+        assert np.array_equal(out.shapes[i], single.ellipsoid.shape), i
+        assert np.array_equal(out.centers[i], single.ellipsoid.center), i

@@ -258,18 +258,14 @@ def test_lockstep_lanes_are_independent_and_match_the_exact_root():
             assert p[i] == pytest.approx(_p_exact(C1s[i], C2s[i]), rel=rtols[i]), i
 
 
-def _kernel_batch(c1, C1, c2, C2, mode=K.P_VOLUME, p_in=None):
+def _kernel_batch(c1, C1, c2, C2, mode, p_in):
+    """``K.sum_range`` on the whole batch, inputs read-only as the public functions pass them."""
     B, n = c1.shape
-    out = (
-        np.empty((B, n)),
-        np.empty((B, n, n)),
-        np.zeros(B, np.int8),
-        np.empty(B),
-        np.empty(B),
-    )
-    p_in = np.full(B, 0.5) if p_in is None else p_in
-    dims = np.array([0, 1]), np.array([2])
-    K.sum_range(c1, C1, c2, C2, mode, p_in, *dims, out, 0, B)
+    out = (np.empty((B, n)), np.empty((B, n, n)), np.zeros(B, np.int8), np.empty(B), np.empty(B))
+    inputs = [np.array(x) for x in (c1, C1, c2, C2)]
+    for x in inputs:
+        x.flags.writeable = False
+    K.sum_range(*inputs, mode, p_in, np.array([0, 1]), np.array([2]), out, 0, B)
     return out
 
 
@@ -277,7 +273,7 @@ def _kernel_batch(c1, C1, c2, C2, mode=K.P_VOLUME, p_in=None):
 def test_mixed_batch_matches_single_calls(mode):
     """Valid and invalid instances (every error code of both summands, a bad p, a sum
     leaving the domain) in full blocks and a remainder: each instance's code, p, margin and
-    result equal those of the single call (bitwise)."""
+    result equal those of a batch of one, the path of a single call (bitwise)."""
     rng = np.random.default_rng(11)
     B = 2 * W + 5
     C1s, C2s, _ = _mixed_pairs(rng, B)
@@ -292,11 +288,10 @@ def test_mixed_batch_matches_single_calls(mode):
     p_in[7::31] = -1.0  # a bad p (kappa outside (0, 1))
     out = _kernel_batch(c1, C1s, c2, C2s, mode, p_in)
     assert len(set(out[2].tolist())) >= 5 and np.sum(out[2] == 0) > B // 2
-    dims = np.array([0, 1]), np.array([2])
     for i in range(B):
-        c, C, _, _, (code, p, margin) = K.sum_single(
-            c1[i], C1s[i], c2[i], C2s[i], mode, p_in[i], *dims
-        )
-        assert (out[2][i], out[3][i], out[4][i]) == (code, p, margin), i
-        if code == 0:
-            assert np.array_equal(out[0][i], c) and np.array_equal(out[1][i], C), i
+        one = _kernel_batch(c1[i : i + 1], C1s[i : i + 1], c2[i : i + 1], C2s[i : i + 1], mode,
+                            p_in[i : i + 1])  # fmt: skip
+        assert [x[i] for x in out[2:]] == [x[0] for x in one[2:]], i
+        if one[2][0] == 0:
+            assert np.array_equal(out[0][i], one[0][0]), i
+            assert np.array_equal(out[1][i], one[1][0]), i
