@@ -1,24 +1,31 @@
-"""Compiled core of the outer Minkowski sum [HS96, eq. (14)], one instance per call.
+"""Compiled core of the outer Minkowski sum [HS96, eq. (14)], over blocks of W instances.
 
-Shared by :func:`minkowski_sum` and :func:`minkowski_sum_batch` (bitwise agreement). Steps:
-validate both summands (``check_ellipsoid``), choose p = (1 - kappa) / kappa, evaluate the
-member ``(1 + p) (C1 / p + C2)`` and the centre ``c1 + c2`` in midpoint-radius arithmetic,
-inflate by the certified margin (``_midrad.inflate``, which keeps the output in the domain).
+Shared by :func:`minkowski_sum` (a batch of one) and :func:`minkowski_sum_batch`: the same
+compiled code, so single and batched results agree bitwise. A batch is processed in blocks of
+up to ``W`` instances, one per lane of lanes-last arrays (:mod:`optbound.analytic._lanes`), so
+that every step is a SIMD loop over the lanes. Steps per block: validate both summands
+(``_lanes.check_ellipsoids``), choose p = (1 - kappa) / kappa, evaluate the member ``(1 + p)
+(C1 / p + C2)`` and the centre ``c1 + c2`` in midpoint-radius arithmetic, inflate by the
+certified margin (``_lanes.inflate_lanes``, the lane form of ``_midrad.inflate``, which keeps
+the output in the domain). A lane never depends on another (branches are selects), and the
+loops' vector bodies and scalar remainders perform the same IEEE operations (no fastmath), so
+a lane gives the same bits in any block.
 
 The volume-optimal p is the root of the increasing ``h(p) = p (p + 1) tr((C1 + p C2)^{-1} C2)
 - n`` (the module docstring of :mod:`optbound.analytic.minkowski`: with the generalized
 eigenvalues l_i of (C1, C2), ``tr((C1 + p C2)^{-1} C2) = sum_i 1 / (l_i + p)``), in
-``[sqrt(l_min), sqrt(l_max)]``. :func:`p_volume` finds it per instance in two stages:
+``[sqrt(l_min), sqrt(l_max)]``. :func:`p_volume_lanes` finds it for a block of lanes in two
+stages, each a Newton iteration run in lockstep over the lanes (:func:`newton_lanes`):
 
 1. Once per instance, the pencil is reduced to the standard form ``M = L2^{-1} C1 L2^{-T}``
-   (L2 the Cholesky factor of C2, already computed by ``check_ellipsoid``) and M to a
+   (L2 the Cholesky factor of C2, already computed by the validation) and M to a
    tridiagonal T by Householder reflections (one in 3-D). Then ``tr((C1 + p C2)^{-1} C2) =
    tr((T + p I)^{-1})``, which the LDL^T pivot recurrence of ``T + p I`` and its derivatives
-   give in O(n) without cancellation or overflow (:func:`h_tridiagonal`); Newton's method
+   give in O(n) without cancellation or overflow (:func:`h_tridiagonal_lanes`); Newton's method
    safeguarded by a bracket solves h = 0 on it.
 2. The standard form inherits cond(C2) cond(C1)-sized rounding errors, so the root is polished
    by Newton steps on h evaluated from the Cholesky factor of ``C1 + p C2`` (whose condition
-   is at most max(cond C1, cond C2), :func:`h_shifted`): O(n^3), but usually one evaluation,
+   is at most max(cond C1, cond C2), :func:`h_shifted_lanes`): O(n^3), but usually one evaluation,
    which only confirms the stage-1 root.
 
 The pencil is oriented so that the root is not small (p << 1 would cancel in h): if
@@ -229,6 +236,20 @@ def h_shifted_lanes(A, B, LB, q, m, h, dh, S, L, X, rows):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def sqrt_trace_ratio(C1, C2, m, out, t2):
+    """``sqrt(tr C1 / tr C2)`` per lane into out (W,); t2 (W,) is work space."""
+    for k in range(m):
+        out[k] = 0.0
+        t2[k] = 0.0
+    for i in range(C1.shape[0]):
+        for k in range(m):
+            out[k] += C1[i, i, k]
+            t2[k] += C2[i, i, k]
+    for k in range(m):
+        out[k] = np.sqrt(out[k] / t2[k])
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def newton_start(m, hi0, active, rows):
     """Initial state of :func:`newton_update` in ``rows`` (lo, hi, run; rows 2, 3 receive h
     and h'); returns the number of running lanes."""
@@ -277,9 +298,9 @@ def newton_update(m, q, rtol, rows):
     return running
 
 
-# newton_lanes and p_volume_lanes are compiled once and called, not inlined (compile time:
-# newton_lanes has two call sites, so LLVM does not inline it either); _nrt=False keeps their
-# views free of atomic reference counting. The lane helpers are inlined into them.
+# newton_lanes and p_volume_lanes are compiled once and called, not inlined by numba (compile
+# time); _nrt=False keeps their views free of atomic reference counting. The lane helpers are
+# inlined into them.
 @njit(cache=True, error_model="numpy", _nrt=False)
 def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
     """Root of h in ``(0, hi0]`` per lane with ``active`` > 0, from q in (0, hi0] (q (W,) is
@@ -315,13 +336,9 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
     n = C1.shape[0]
     A, B, LB, M, Y = mats[0], mats[1], mats[2], mats[3], mats[4]
     swap, q, hi = rows[0], rows[1], rows[2]
+    sqrt_trace_ratio(C1, C2, m, q, hi)
     for k in range(m):
-        t1 = 0.0
-        t2 = 0.0
-        for i in range(n):  # the only loop over n inside a lane loop: a short reduction
-            t1 += C1[i, i, k]
-            t2 += C2[i, i, k]
-        p0 = np.sqrt(t1 / t2)
+        p0 = q[k]
         swap[k] = 0.0 if p0 >= 1.0 else 1.0
         q[k] = p0 if p0 >= 1.0 else 1.0 / p0
     for i in range(n):
@@ -333,16 +350,20 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
                 LB[i, j, k] = L1[i, j, k] if swap[k] > 0.0 else L2[i, j, k]
     reduce_pencil_lanes(A, LB, M, Y, vecs[0], m)
     tridiagonalize_lanes(M, m, vecs[1], vecs[2], rows[3:])
-    for k in range(m):  # h(sqrt(l_max)) >= 0: Gershgorin's bound on T's largest eigenvalue,
-        big = 0.0  # times a factor for the rounding of T's eigenvalues (normwise)
-        for i in range(n):
+    # h(sqrt(l_max)) >= 0: Gershgorin's bound on T's largest eigenvalue (in hi), times a
+    # factor for the rounding of T's eigenvalues (normwise).
+    for k in range(m):
+        hi[k] = 0.0
+    for i in range(n):
+        for k in range(m):
             e = M[i, i, k]
             if i > 0:
                 e += abs(M[i, i - 1, k])
             if i + 1 < n:
                 e += abs(M[i + 1, i, k])
-            big = max(big, e)
-        hi[k] = np.sqrt(big) * 1.01
+            hi[k] = max(hi[k], e)
+    for k in range(m):
+        hi[k] = np.sqrt(hi[k]) * 1.01
         q[k] = min(q[k], hi[k])
     # np.int64(): a typed stage number, where a literal would compile one specialization each
     newton_lanes(np.int64(1), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:])
@@ -366,10 +387,10 @@ def _xy_psi_size(k, t1, t2, h1, h2):
 
 
 @njit(cache=True, error_model="numpy")
-def p_xy_psi(C1, C2, planar, heading):
+def p_xy_psi(C1, C2, planar, heading, p_trace):
     """p of the root of the cubic [HS96, eqs. (16)-(17)] in (0, 1) minimizing
-    tr(proj_xy C) tr(proj_psi C); the trace-optimal kappa is an always-valid extra candidate
-    (a safety net, never worse)."""
+    tr(proj_xy C) tr(proj_psi C); the trace-optimal kappa (from its p, ``p_trace``) is an
+    always-valid extra candidate (a safety net, never worse)."""
     t1, t2 = _trace(C1, planar), _trace(C2, planar)
     h1, h2 = _trace(C1, heading), _trace(C2, heading)
     m11, m22, m12, m21 = t1 * h1, t2 * h2, t1 * h2, t2 * h1  # M_AB [HS96, eq. (15)]
@@ -385,13 +406,7 @@ def p_xy_psi(C1, C2, planar, heading):
             size = _xy_psi_size(kap, t1, t2, h1, h2)
             if size < best_size:
                 best, best_size = kap, size
-    n = C1.shape[0]
-    T1 = 0.0
-    T2 = 0.0
-    for i in range(n):
-        T1 += C1[i, i]
-        T2 += C2[i, i]
-    kap = 1.0 / (1.0 + np.sqrt(T1 / T2))
+    kap = 1.0 / (1.0 + p_trace)
     if not best_size <= _xy_psi_size(kap, t1, t2, h1, h2):
         best = kap
     return (1.0 - best) / best
@@ -429,17 +444,12 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     elif mode == P_GIVEN:
         for k in range(m):
             p[k] = p_in[base + k]
-    elif mode == P_TRACE:
-        for k in range(m):  # kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))
-            t1 = 0.0
-            t2 = 0.0
-            for i in range(n):
-                t1 += C1s[i, i, k]
-                t2 += C2s[i, i, k]
-            p[k] = np.sqrt(t1 / t2)
-    else:
-        for k in range(m):
-            p[k] = p_xy_psi(C1[base + k], C2[base + k], planar, heading) if act[k] > 0.0 else 1.0
+    else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
+        sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
+        if mode == P_XY_PSI:
+            for k in range(m):  # scalar calls: a short cubic per instance
+                if act[k] > 0.0:
+                    p[k] = p_xy_psi(C1[base + k], C2[base + k], planar, heading, p[k])
     for k in range(m):
         if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
             code1[k] = BAD_KAPPA
