@@ -67,6 +67,18 @@ NEWTON_RTOL, TRIDIAGONAL_RTOL = 1e-9, 1e-6
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def solve_column(LB, r, X, j, m):
+    """``X[:, j] = LB^{-1} X[:, j]`` in place per lane (forward substitution; r (n, W) holds
+    LB's reciprocal diagonal)."""
+    for i in range(X.shape[0]):
+        for q in range(i):
+            for k in range(m):
+                X[i, j, k] -= LB[i, q, k] * X[q, j, k]
+        for k in range(m):
+            X[i, j, k] *= r[i, k]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def reduce_pencil_lanes(A, LB, M, Y, r, m):
     """``M = LB^{-1} A LB^{-T}`` per lane (A symmetric, its lower triangle used; LB lower
     triangular): the standard form of the pencil (A, LB LB^T), same eigenvalues. Y (n, n, W)
@@ -83,20 +95,12 @@ def reduce_pencil_lanes(A, LB, M, Y, r, m):
             else:
                 for k in range(m):
                     Y[i, j, k] = A[j, i, k]
-            for q in range(i):
-                for k in range(m):
-                    Y[i, j, k] -= LB[i, q, k] * Y[q, j, k]
-            for k in range(m):
-                Y[i, j, k] *= r[i, k]
+        solve_column(LB, r, Y, j, m)
     for j in range(n):  # M[:, j] = LB^{-1} Y[j, :] (M = Y LB^{-T} is symmetric)
         for i in range(n):
             for k in range(m):
                 M[i, j, k] = Y[j, i, k]
-            for q in range(i):
-                for k in range(m):
-                    M[i, j, k] -= LB[i, q, k] * M[q, j, k]
-            for k in range(m):
-                M[i, j, k] *= r[i, k]
+        solve_column(LB, r, M, j, m)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
