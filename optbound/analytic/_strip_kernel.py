@@ -24,6 +24,7 @@ import numpy as np
 from numba import njit
 
 from optbound.analytic._lanes import (
+    CHECK_ROWS,
     W,
     check_ellipsoids,
     load_matrices,
@@ -71,7 +72,7 @@ OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 @njit(cache=True, error_model="numpy", inline="always")
 def _validate(c, C, a, t, mode, m, L, code, scratch):
     """Step 1 for the block: ``check_ellipsoid``'s codes, then the strip's (b in row ``STRIP_B``)
-    and lambda's (row ``LAM_IN``). ``scratch`` is (3, W)."""
+    and lambda's (row ``LAM_IN``). ``scratch`` is (CHECK_ROWS W,)."""
     n = c.shape[0]
     check_ellipsoids(c, C, L, m, code, scratch)
     for k in range(m):
@@ -492,11 +493,11 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
 @njit(cache=True, error_model="numpy")
 def workspace(n):
     """Scratch of one thread: lane vectors (9, n, W), lane matrices (3, n, n, W), the per-lane
-    scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (3, W), and the
-    scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
+    scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
+    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
     return (
         np.zeros((9, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
-        np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros((3, W)),
+        np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
         np.zeros((4, max(n, 4), n)), np.zeros(n),
     )  # fmt: skip
 

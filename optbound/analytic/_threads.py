@@ -13,7 +13,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-MIN_SLICE = 8192  # below this, one thread (start-up costs more than it saves)
+MIN_SLICE = 2048  # below this, one thread (start-up costs more than it saves)
 _LOCAL = threading.local()
 _POOL: tuple[int, ThreadPoolExecutor] | None = None  # (owner pid, pool): a forked child
 # inherits the pool object but not its threads, so it makes its own.
