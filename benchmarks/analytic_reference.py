@@ -3,6 +3,9 @@
 No validation, no certified error bounds, no margin, no output checks: what the analytic core
 would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
 reports our kernels' time as a ratio to these, measured in the same run (same threads).
+They are compiled with the same options as ours (``error_model="numpy"``: no zero-division
+branch per division), one instance per loop iteration (LLVM does not vectorize across
+instances here; ours are laid out so that it does, see ``optbound.analytic._lanes``).
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from optbound.analytic._strip_lambda import lam_volume
 from optbound.sets._domain import cholesky
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def strip_one(c, C, a, b, out_c, out_C, w):
     """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula; ``w``
     (n,) is scratch (allocated once per slice, not per instance)."""
@@ -45,20 +48,20 @@ def strip_one(c, C, a, b, out_c, out_C, w):
             out_C[i, j] = K * (C[i, j] - gam * w[i] * w[j])
 
 
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
-    """The same loop structure as ``optbound.analytic._strip_kernel._fuse_loop`` (views without
-    reference counting), so that the ratio compares the per-instance work only."""
+    """The batch loop, with views without reference counting (as ours), so that the ratio
+    compares the work per instance only."""
     for i in range(start, stop):
         strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same Newton solver as ours."""
     n = c1.shape[0]
@@ -72,7 +75,7 @@ def minkowski_one(c1, C1, c2, C2, out_c, out_C, work):
             out_C[i, j] = (1.0 + p) * (C1[i, j] / p + C2[i, j])
 
 
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, work, start, stop):
     """The same loop structure as ``optbound.analytic._minkowski_kernel._sum_loop`` (views
     without reference counting), so that the ratio compares the per-instance work only."""
@@ -80,7 +83,7 @@ def _minkowski_loop(c1, C1, c2, C2, out_c, out_C, work, start, stop):
         minkowski_one(c1[i], C1[i], c2[i], C2[i], out_c[i], out_C[i], work)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     n = c1.shape[1]
     _minkowski_loop(c1, C1, c2, C2, out_c, out_C, np.empty((5, n, n)), start, stop)

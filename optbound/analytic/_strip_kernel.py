@@ -1,11 +1,14 @@
-"""Compiled core of ellipsoid ∩ strip fusion [HS96, eqs. (24)-(29)], one instance per call.
+"""Compiled core of ellipsoid ∩ strip fusion [HS96, eqs. (24)-(29)], W instances at a time.
 
-The same per-instance code serves :func:`intersect_strip` and :func:`intersect_strip_batch`,
-so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centre c:
+A batch is processed in blocks of up to W instances, one per SIMD lane (``_lanes``): every
+step below is a loop over the lanes with a straight-line body, and a lane never depends on
+another. A single call is a block of one lane through the same compiled code, so
+:func:`intersect_strip` and :func:`intersect_strip_batch` agree bitwise. Steps, all in the
+local frame of the ellipsoid's centre c:
 
 1. validate the instance (``check_ellipsoid``, the strip's domain, lambda);
 2. locate the strip relative to c: ``eps = b - a^T c`` in twice the working precision
-   (``_midrad.offset``) and ``G = a^T C a`` with certified radii, so that the interval
+   (:func:`_offsets`) and ``G = a^T C a`` with certified radii, so that the interval
    ``[lo, hi]`` of ``a^T (x - c)`` that is fused contains that of E ∩ S *exactly*;
    disjointness is declared only when even the outward interval misses E's outward extent;
 3. clip (optionally) and floor the strip's width, normalize it to |a'^T x - b'| <= 1;
