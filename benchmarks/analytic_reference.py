@@ -3,6 +3,10 @@
 No validation, no certified error bounds, no margin, no output checks: what the analytic core
 would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
 reports our kernels' time as a ratio to these, measured in the same run (same threads).
+They are compiled with the same options as ours (``error_model="numpy"``: no zero-division
+branch per division). The strip reference runs one instance per loop iteration (LLVM does not
+vectorize across instances there; ours are laid out so that it does, see
+``optbound.analytic._lanes``); the Minkowski reference shares our lane-parallel p solver.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._strip_lambda import lam_volume
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def strip_one(c, C, a, b, out_c, out_C, w):
     """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula; ``w``
     (n,) is scratch (allocated once per slice, not per instance)."""
@@ -45,35 +49,35 @@ def strip_one(c, C, a, b, out_c, out_C, w):
             out_C[i, j] = K * (C[i, j] - gam * w[i] * w[j])
 
 
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
-    """The same loop structure as ``optbound.analytic._strip_kernel._fuse_loop`` (views without
-    reference counting), so that the ratio compares the per-instance work only."""
+    """The batch loop, with views without reference counting (as ours), so that the ratio
+    compares the work per instance only."""
     for i in range(start, stop):
         strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, error_model="numpy", nogil=True)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and work space (``optbound.analytic._minkowski_kernel.sum_range``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the float
     member."""
     n = c1.shape[1]
-    mats, vecs, rows, _ = block_work(n, min(W, stop - start))
+    mats, vecs, rows, _, _ = block_work(n, min(W, stop - start))
     C1s, C2s, L1, L2, S = mats[0], mats[1], mats[2], mats[3], mats[4]
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
         load_matrices(C1, base, m, C1s)
         load_matrices(C2, base, m, C2s)
-        cholesky_lanes(C1s, L1, m, pivot)
-        cholesky_lanes(C2s, L2, m, pivot)
+        cholesky_lanes(C1s, L1, m, pivot, 0)
+        cholesky_lanes(C2s, L2, m, pivot, 0)
         for k in range(m):
             act[k] = 1.0
         p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs[:3], rows[3:])

@@ -16,7 +16,7 @@ ellipsoid and a segment, ``E(0, C*) + [-delta, delta] ⊆ E(0, (1+rho) C* + (1 +
 delta^T)``, for any rho > 0. No eigenvalue needs to be certified for this; rho only balances
 the two terms (rho = |d| / sqrt(lambda_min(S)), estimated).
 
-The strip member (``_strip_kernel.member``) applies the same rule with the scale folded into
+The strip member (``_strip_kernel._member_shape``) applies the same rule with the scale folded into
 its scalar factor, so that each entry of its shape is rounded only once (``output_floor``,
 ``segment_scale`` and ``segment_term`` are shared).
 
@@ -91,28 +91,6 @@ def _two_sum(a, b):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def offset(b, a, c):
-    """``b - a^T c`` in twice the working precision (Dot2 of Ogita, Rump & Oishi 2005), with a
-    certified radius ``2 U |res| + 2 gamma_{n+1}^2 (|b| + sum |a_i c_i|)``.
-
-    This is the cancellation of a strip far from the origin: with it, the strip is located
-    relative to the ellipsoid's centre to full precision whatever the centre's magnitude.
-    """
-    n = a.shape[0]
-    s = b
-    comp = 0.0
-    mag = abs(b)
-    for i in range(n):
-        p, e = _two_prod(-a[i], c[i])
-        s, f = _two_sum(s, p)
-        comp += e + f
-        mag += abs(p)
-    res = s + comp
-    g = (n + 1) * U / (1.0 - (n + 1) * U)
-    return res, 2.0 * U * abs(res) + 2.0 * g * g * mag + TINY
-
-
-@njit(cache=True, error_model="numpy", inline="always")
 def down(x):
     """A float <= x for a value x computed with one or two roundings (relative 4U)."""
     return x - 4.0 * U * abs(x) - TINY
@@ -167,29 +145,6 @@ def lambda_min_estimate(L) -> float:
             L[j, i] = -s / L[i, i]
             total += L[j, i] * L[j, i]
     return 1.0 / total
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def trace_inverse(L, r) -> float:
-    """``tr(A^{-1}) = ||L^{-1}||_F^2`` for A = L L^T with n divisions (``lambda_min_estimate``,
-    which has no scratch vector, needs n (n + 1) / 2): row i of X = L^{-1} is
-    ``X_ii = r_i = 1 / L_ii``, ``X_ij = -r_i (L_ij r_j + sum_{j<k<i} L_ik X_kj)``. ``r`` (n,)
-    is scratch; the strict lower part of X is stored transposed in L's (unused) strict upper
-    triangle."""
-    n = L.shape[0]
-    total = 0.0
-    for i in range(n):
-        ri = 1.0 / L[i, i]
-        r[i] = ri
-        total += ri * ri
-        for j in range(i):
-            s = L[i, j] * r[j]
-            for k in range(j + 1, i):
-                s += L[i, k] * L[j, k]
-            x = -ri * s
-            L[j, i] = x
-            total += x * x
-    return total
 
 
 @njit(cache=True, error_model="numpy")

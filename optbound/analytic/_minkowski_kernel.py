@@ -46,6 +46,7 @@ from numba import njit
 
 from optbound.analytic._cubic import real_roots
 from optbound.analytic._lanes import (
+    CHECK_ROWS,
     W,
     check_ellipsoids,
     cholesky_lanes,
@@ -209,7 +210,7 @@ def h_shifted_lanes(A, B, LB, q, m, h, dh, S, L, X, rows):
         for j in range(i + 1):
             for k in range(m):
                 S[i, j, k] = A[i, j, k] + q[k] * B[i, j, k]
-    cholesky_lanes(S, L, m, pivot)
+    cholesky_lanes(S, L, m, pivot, 0)
     for k in range(m):
         t1[k] = 0.0
         t2[k] = 0.0
@@ -418,16 +419,17 @@ def p_xy_psi(C1, C2, planar, heading, p_trace):
 
 @njit(cache=True, error_model="numpy", _nrt=False)
 def _validate_block(c, C, L, m, code, scratch):
-    """``check_ellipsoids`` compiled once (called for both summands)."""
+    """``check_ellipsoids`` compiled once (called for both summands); scratch is
+    (CHECK_ROWS W,)."""
     check_ellipsoids(c, C, L, m, code, scratch)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     """The certified sums of instances ``base .. base + m`` (m <= W) as one block of lanes.
-    ``wk`` = (mats, vecs, rows, codes) is the block work space (:func:`block_work`)."""
+    ``wk`` = (mats, vecs, rows, codes, check) is the block work space (:func:`block_work`)."""
     out_c, out_C, code, p_out, margin_out = out
-    mats, vecs, rows, codes = wk
+    mats, vecs, rows, codes, check = wk
     c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
@@ -435,8 +437,8 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
     load_matrices(C1, base, m, C1s)
     load_vectors(c2, base, m, c2s)
     load_matrices(C2, base, m, C2s)
-    _validate_block(c1s, C1s, L1, m, codes[0], rows[5:])
-    _validate_block(c2s, C2s, L2, m, codes[1], rows[5:])
+    _validate_block(c1s, C1s, L1, m, codes[0], check)
+    _validate_block(c2s, C2s, L2, m, codes[1], check)
     code1, code2 = codes
     for k in range(m):
         c = code1[k]
@@ -492,7 +494,8 @@ def _four(stack, first, shape):
 @njit(cache=True, error_model="numpy")
 def block_work(n, lanes):
     """Work space of one slice for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs, rows,
-    codes), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,).
+    codes, check), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,), two
+    integer rows and the scratch of ``check_ellipsoids``.
 
     For full blocks (lanes = W) every array is allocated separately: a lane loop storing to
     one row of an array while reading another is not vectorized by LLVM (their distance
@@ -508,6 +511,7 @@ def block_work(n, lanes):
         _four(rows, 0, row) + _four(rows, 4, row) + _four(rows, 8, row)
         + _four(rows, 12, row) + _four(rows, 16, row) + _four(rows, 20, row),
         (np.empty(lanes, np.int64), np.empty(lanes, np.int64)),
+        np.empty(CHECK_ROWS * W),
     )  # fmt: skip
 
 

@@ -1,11 +1,14 @@
-"""Compiled core of ellipsoid ∩ strip fusion [HS96, eqs. (24)-(29)], one instance per call.
+"""Compiled core of ellipsoid ∩ strip fusion [HS96, eqs. (24)-(29)], W instances at a time.
 
-The same per-instance code serves :func:`intersect_strip` and :func:`intersect_strip_batch`,
-so the two agree bitwise. Steps, all in the local frame of the ellipsoid's centre c:
+A batch is processed in blocks of up to W instances, one per SIMD lane (``_lanes``): every
+step below is a loop over the lanes with a straight-line body, and a lane never depends on
+another. A single call is a block of one lane through the same compiled code, so
+:func:`intersect_strip` and :func:`intersect_strip_batch` agree bitwise. Steps, all in the
+local frame of the ellipsoid's centre c:
 
 1. validate the instance (``check_ellipsoid``, the strip's domain, lambda);
 2. locate the strip relative to c: ``eps = b - a^T c`` in twice the working precision
-   (``_midrad.offset``) and ``G = a^T C a`` with certified radii, so that the interval
+   (:func:`_offsets`) and ``G = a^T C a`` with certified radii, so that the interval
    ``[lo, hi]`` of ``a^T (x - c)`` that is fused contains that of E ∩ S *exactly*;
    disjointness is declared only when even the outward interval misses E's outward extent;
 3. clip (optionally) and floor the strip's width, normalize it to |a'^T x - b'| <= 1;
@@ -23,6 +26,13 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound.analytic._lanes import (
+    CHECK_ROWS,
+    W,
+    check_ellipsoids,
+    load_matrices,
+    load_vectors,
+)
 from optbound.analytic._midrad import (
     RADIUS_SAFETY,
     TINY,
@@ -32,11 +42,9 @@ from optbound.analytic._midrad import (
     _two_sum,
     mr_add,
     mr_mul,
-    offset,
     output_floor,
     segment_scale,
     segment_term,
-    trace_inverse,
 )
 from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
@@ -51,65 +59,121 @@ MIN_REL_WIDTH = 1e-6
 # lambda is capped here (a larger one only gives a bound >= 1e8 times E in some direction).
 LAM_MAX = 1e8
 LAMG_MAX = 1e16
+# The per-lane scalars of a block live in one flat array, row r at offset r W (``workspace``).
+# Constant offsets let LLVM prove that two rows never overlap; rows as views of a 2-D array
+# have a run-time stride, and the run-time overlap checks of ~20 rows in one loop exceed its
+# limit (the loop then stays scalar: measured 8x slower).
+N_ROWS = 47
+(STRIP_B, LAM_IN, EPS, REPS, GS, GT, RG, CONS, MID, HALF, GRAM, GRAM_LO, LAM, GAM, KH, KL, RK, OM,
+ ACTIVE, DD, CMAX, AA, WW, TRC, TRINV, LMIN, LREF, RHO, CENTRE, SH, SL, SA, ALPHA, BETA, GAMMA,
+ WIDEN, MARGIN, MU, EH, EL, S0, S1, S2, S3, S4, S5, S6,
+ ) = (W * r for r in range(N_ROWS))  # fmt: skip
+# What a lane's output is: the certified member, E itself (lambda = 0), or zeros (no ellipsoid).
+OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _strip_ok(a, b) -> int:
-    n = a.shape[0]
+def _validate(c, C, a, t, mode, m, L, code, scratch):
+    """Step 1 for the block: ``check_ellipsoid``'s codes, then the strip's (b in row ``STRIP_B``)
+    and lambda's (row ``LAM_IN``). ``scratch`` is (CHECK_ROWS W,)."""
+    n = c.shape[0]
+    check_ellipsoids(c, C, L, m, code, scratch)
+    for k in range(m):
+        t[S0 + k] = 0.0
     # No scaling is needed: |a| in [1 / MAG, MAG] puts |a|^2 in [1e-120, 1e120], far from
     # overflow and underflow; a non-finite entry makes the sum non-finite (and fails).
-    ss = 0.0
     for i in range(n):
-        ss += a[i] * a[i]
-    if not (1.0 / (MAG * MAG) <= ss <= MAG * MAG):
-        return BAD_A
-    if not (np.isfinite(b) and abs(b) <= MAG * MAG):
-        return BAD_B
-    return 0
+        for k in range(m):
+            t[S0 + k] += a[i, k] * a[i, k]
+    for k in range(m):
+        r = 0
+        lam = t[LAM_IN + k]
+        if mode == GIVEN and not (abs(lam) < np.inf and lam >= 0.0):
+            r = BAD_LAM
+        if not (abs(t[STRIP_B + k]) <= MAG * MAG):
+            r = BAD_B
+        if not (1.0 / (MAG * MAG) <= t[S0 + k] <= MAG * MAG):
+            r = BAD_A
+        if code[k] == 0:
+            code[k] = r
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
-    """Steps 1-3. Writes C's Cholesky factor into L and ``w = C a`` as ``wh + wl`` with error
-    bounds ``we``. Returns (code, case, consistency, mid, half, G, G_lo, r_G): the fused strip
-    is ``|a^T (x - c) - mid| <= half`` (mid, half exact floats), ``G + G_lo`` (exactly) is
-    within r_G of a^T C a."""
+def _offsets(c, a, t, m):
+    """``eps = b - a^T c`` per lane in twice the working precision (Dot2 of Ogita, Rump & Oishi
+    2005), with the certified radius ``reps = 2 U |eps| + 2 gamma_{n+1}^2 (|b| + sum |a_i
+    c_i|)``: the strip located relative to the ellipsoid's centre to full precision, whatever
+    the centre's magnitude (the cancellation of a strip far from the origin)."""
     n = c.shape[0]
-    code = check_ellipsoid(c, C, L)
-    if code == 0:
-        code = _strip_ok(a, b)
-    if code != 0:
-        return code, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    g2 = 2.0 * (2 * n * U / (1.0 - 2 * n * U)) ** 2
-    eps, reps = offset(b, a, c)
-    # w = C a and G = a^T C a in twice the working precision (Dot2): a plain dot product has
-    # a relative error of cond(C) U when a is close to a thin axis of E, and the member's
-    # error would grow like cond(C)^2 U. Each w_i = s_i + t_i before rounding, with
-    # |s_i + t_i - w_i| <= g2 m_i.
-    Gs = 0.0
-    Gt = 0.0
-    mG = 0.0  # sum |a_i s_i| (Dot2 bound) ...
-    dG = 0.0  # ... sum |a_i| g2 m_i (the w_i's own error) + 4 n U sum |a_i t_i| (plain part)
+    comp, mag = S0, S1  # rows
+    for k in range(m):
+        t[EPS + k] = t[STRIP_B + k]
+        t[comp + k] = 0.0
+        t[mag + k] = abs(t[STRIP_B + k])
     for i in range(n):
-        si = 0.0
-        ti = 0.0
-        mi = 0.0
+        for k in range(m):
+            p, e = _two_prod(-a[i, k], c[i, k])
+            s, f = _two_sum(t[EPS + k], p)
+            t[EPS + k] = s
+            t[comp + k] += e + f
+            t[mag + k] += abs(p)
+    g = (n + 1) * U / (1.0 - (n + 1) * U)
+    for k in range(m):
+        res = t[EPS + k] + t[comp + k]
+        t[EPS + k] = res
+        t[REPS + k] = 2.0 * U * abs(res) + 2.0 * g * g * t[mag + k] + TINY
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _project(C, a, m, wh, wl, we, t):
+    """Step 2's ``w = C a`` and ``G = a^T C a`` per lane in twice the working precision (Dot2):
+    a plain dot product has a relative error of cond(C) U when a is close to a thin axis of E,
+    and the member's error would grow like cond(C)^2 U. Each ``w_i = wh_i + wl_i`` before
+    rounding, within ``we_i = g2 m_i + TINY`` (``m_i = sum_j |C_ij a_j|``); ``Gs + Gt`` is
+    within ``g2 mG + dG`` of a^T C a (``mG = sum |a_i wh_i|``, ``dG = sum |a_i| (g2 m_i +
+    4 n U |wl_i|)``: the w_i's own errors and the plain part's)."""
+    n = a.shape[0]
+    g2 = 2.0 * (2 * n * U / (1.0 - 2 * n * U)) ** 2
+    for k in range(m):
+        t[GS + k] = 0.0
+        t[GT + k] = 0.0
+        t[S0 + k] = 0.0
+        t[RG + k] = 0.0
+    for i in range(n):
+        for k in range(m):
+            wh[i, k] = 0.0
+            wl[i, k] = 0.0
+            t[S1 + k] = 0.0
         for j in range(n):
-            cij = C[i, j] if j <= i else C[j, i]
-            p, e = _two_prod(cij, a[j])
-            si, f = _two_sum(si, p)
-            ti += e + f
-            mi += abs(p)
-        wh[i] = si
-        wl[i] = ti
-        we[i] = g2 * mi + TINY
-        p, e = _two_prod(a[i], si)
-        Gs, f = _two_sum(Gs, p)
-        Gt += e + f + a[i] * ti
-        mG += abs(p)
-        dG += abs(a[i]) * (g2 * mi + 4.0 * n * U * abs(ti))
-    G, G_lo = _two_sum(Gs, Gt)  # G + G_lo = Gs + Gt exactly, within rG of a^T C a
-    rG_dd = g2 * mG + dG + TINY
+            r, q = (i, j) if j <= i else (j, i)  # the lower triangle defines C
+            for k in range(m):
+                p, e = _two_prod(C[r, q, k], a[j, k])
+                si, f = _two_sum(wh[i, k], p)
+                wh[i, k] = si
+                wl[i, k] += e + f
+                t[S1 + k] += abs(p)
+        for k in range(m):
+            si, ti = wh[i, k], wl[i, k]
+            we[i, k] = g2 * t[S1 + k] + TINY
+            p, e = _two_prod(a[i, k], si)
+            gs, f = _two_sum(t[GS + k], p)
+            t[GS + k] = gs
+            t[GT + k] += e + f + a[i, k] * ti
+            t[S0 + k] += abs(p)
+            t[RG + k] += abs(a[i, k]) * (g2 * t[S1 + k] + 4.0 * n * U * abs(ti))
+    for k in range(m):
+        t[RG + k] = g2 * t[S0 + k] + t[RG + k] + TINY  # row RG: the whole radius of Gs + Gt
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def locate(eps, reps, Gs, Gt, rG_dd, halfspace, clip):
+    """Steps 2-3 for one lane: the strip's interval for ``a^T (x - c)`` against E's extent
+    ``[-g, g]`` (g = sqrt(a^T C a)). ``eps`` is within reps of b - a^T c, ``Gs + Gt`` within
+    rG_dd of a^T C a. Returns (case, consistency, mid, half, G, G_lo, rG): the fused strip is
+    ``|a^T (x - c) - mid| <= half`` (mid, half exact floats) and contains the interval of
+    E ∩ S *exactly* (outward bounds only); ``G + G_lo`` (exactly) is within rG of a^T C a.
+    Disjointness is declared only when even the outward interval misses E's outward extent."""
+    G, G_lo = _two_sum(Gs, Gt)  # G + G_lo = Gs + Gt exactly
     rG = rG_dd + abs(G_lo)
     g = np.sqrt(G)
     g_hi = np.sqrt(G + rG) * (1.0 + 4.0 * U) + TINY
@@ -136,7 +200,7 @@ def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
     overlap = max(min(hi, g) - max(lo, -g), 0.0)
     consistency = min(max(overlap / (2.0 * np.sqrt(g)), 0.0), 1.0)  # [HS96, eq. (29)]
     if lo_dn > g_hi or hi_up < -g_hi:
-        return 0, INCONSISTENT, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0  # proven disjoint
+        return INCONSISTENT, 0.0, 0.0, 0.0, G, G_lo, rG_dd  # proven disjoint
     if lo_up <= -g_lo and hi_dn >= g_lo:
         case = NO_REDUCTION  # proven: S covers E
     elif (-g < lo < g) and (-g < hi < g):
@@ -156,7 +220,17 @@ def prepare(c, C, a, b, halfspace, clip, L, wh, wl, we):
         mid = min(max(mid, -g_lo + floor), g_lo - floor)
     half = max(hi_f - mid, mid - lo_f) * (1.0 + 2.0 * U)
     half = max(half, floor)
-    return 0, case, consistency, mid, half, G, G_lo, rG_dd
+    return case, consistency, mid, half, G, G_lo, rG_dd
+
+
+@njit(cache=True, error_model="numpy")
+def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
+    """Step 4 for the cubic criteria (trace, projection); the projection uses ``work`` as
+    scratch (planes 3 and 1, row (0, 3)). Only the volume criterion's lambda is inlined into
+    ``fuse_one``."""
+    if mode == TRACE:
+        return lam_trace(C, w, half, Gn, e)
+    return lam_projection(C, w, half, Gn, e, idx, work[3], work[1], work[0, 3])
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -212,11 +286,94 @@ def _shape_factor(gam, mid, half, G, G_lo, rG):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf):
-    """Step 5: the member for the float parameter ``gam`` (> 0, with gam G < 1), inflated and
-    written into out_c, out_C; ``L`` is the Cholesky factor of C (its strict upper part is
-    overwritten), ``buf`` (>= (3, n)) scratch. Returns the margin, or -1.0 if it cannot be
-    certified (the caller falls back to E).
+def _member_centre(c, a, C, wh, wl, we, t, m, out_c):
+    """Step 5's centre ``c + gam mid w`` in midpoint-radius arithmetic (``dd``: the squared
+    norm of its radii), and per lane ``|out_c|_inf``, ``|a|^2``, ``|wh|^2``, ``tr C``."""
+    n = c.shape[0]
+    for k in range(m):
+        t[DD + k] = 0.0
+        t[CMAX + k] = 0.0
+        t[AA + k] = 0.0
+        t[WW + k] = 0.0
+        t[TRC + k] = 0.0
+    for i in range(n):
+        for k in range(m):
+            gm, rgm = mr_mul(t[GAM + k], 0.0, t[MID + k], 0.0)
+            fw, rfw = mr_mul(gm, rgm, wh[i, k], abs(wl[i, k]) + we[i, k])
+            ci, di = mr_add(c[i, k], 0.0, fw, rfw)
+            out_c[i, k] = ci
+            t[DD + k] += di * di
+            t[CMAX + k] = max(t[CMAX + k], abs(ci))
+            t[AA + k] += a[i, k] * a[i, k]
+            t[WW + k] += wh[i, k] * wh[i, k]
+            t[TRC + k] += C[i, i, k]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _trace_inverse(L, m, t, r):
+    """``tr(A^{-1}) = ||L^{-1}||_F^2`` per lane (``_midrad.trace_inverse``, lanes innermost):
+    row i of X = L^{-1} is ``X_ii = r_i = 1 / L_ii``, ``X_ij = -r_i (L_ij r_j + sum_{j<q<i}
+    L_iq X_qj)``; X's strict lower part is stored transposed in L's strict upper triangle.
+    r (n, W) and s (W,) are scratch."""
+    n = L.shape[0]
+    for k in range(m):
+        t[TRINV + k] = 0.0
+    for i in range(n):
+        for k in range(m):
+            ri = 1.0 / L[i, i, k]
+            r[i, k] = ri
+            t[TRINV + k] += ri * ri
+        for j in range(i):
+            for k in range(m):
+                t[S0 + k] = L[i, j, k] * r[j, k]
+            for q in range(j + 1, i):
+                for k in range(m):
+                    t[S0 + k] += L[i, q, k] * L[j, q, k]
+            for k in range(m):
+                x = -r[i, k] * t[S0 + k]
+                L[j, i, k] = x
+                t[TRINV + k] += x * x
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _margin_terms(Kh, Kl, rK, om, gam, tr_inv, aa, trace_c, ww, dd, cmax):
+    """Step 5's scalars for one lane (see ``_member_shape``): the estimates of lambda_min(C*)
+    and tr(C*), the output floor, Schweppe's scale and centre term, ``scale K`` as the
+    double-double ``Sh + Sl`` within rS, and the coefficients of the entries' error bound.
+
+    lambda_min(C*) is estimated without a factorization: by Sherman-Morrison ``(C - gam w
+    w^T)^{-1} = C^{-1} + gam a a^T / om`` (w = C a, om = 1 - gam a^T C a), so ``tr(C*^{-1}) =
+    (tr(C^{-1}) + gam |a|^2 / om) / K``, and ``1 / tr(X^{-1}) <= lambda_min(X) <= n /
+    tr(X^{-1})``. Only estimates: no guarantee rests on them (as in ``_midrad.inflate``)."""
+    lmin = Kh / (tr_inv + gam * aa / om)
+    trace = Kh * max(trace_c - gam * ww, 0.0)
+    floor = output_floor(trace, cmax)
+    if not (lmin > 0.0 and trace <= 1e14 * lmin):  # beyond the estimate's accuracy
+        lmin = 0.0
+    lref = max(lmin, floor)
+    scale = segment_scale(dd, lref)
+    rho = scale - 1.0
+    centre = segment_term(dd, rho)
+    # scale K as a double-double within rS.
+    p, e = _two_prod(scale, Kh)
+    t = scale * Kl
+    Sl0 = e + t
+    Sh, Sl = _two_sum(p, Sl0)
+    rS = scale * rK + U * (abs(t) + abs(Sl0)) + TINY
+    Sa = Sh + abs(Sl) + rS  # >= |scale K| up to rounding (covered by RADIUS_SAFETY)
+    alpha = 4.0 * U * (Sa + Sh) + rS + abs(Sl)
+    beta = rS + 4.0 * U * (abs(Sl) + U * Sh)
+    gamma = 4.0 * U * Sa
+    widen = 2.0 * floor - scale * lmin
+    return lmin, lref, rho, centre, Sh, Sl, Sa, alpha, beta, gamma, widen
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
+    """Step 5's shape for the lanes with ``t[ACTIVE + k] != 0``: writes the inflated shape into T
+    (n, n, W) and returns its margin per lane in ``t[MARGIN]`` (-1.0 if it cannot be
+    certified: the caller falls back to E). ``t`` holds the rows written by
+    :func:`_margin_terms` and scratch rows; hd, ld (n, W) scratch; mu (W,) receives mu.
 
     Parametrized by ``gam = lambda / (u half^2)`` itself, the member of [HS96, eq. (24)] for
     the fused strip reads, with w = C a exactly and ``lambda' = gam half^2 / (1 - gam G)``:
@@ -237,201 +394,275 @@ def member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, bu
     diagonal is rounded and raised until it holds (the bound grows by ~2 U sqrt(n) per unit of
     mu, so this ends at once).
 
-    lambda_min(C*) (for rho, the widening and the reported margin) is estimated without a
-    factorization: by Sherman-Morrison ``(C - gam w w^T)^{-1} = C^{-1} + gam a a^T / om``
-    (w = C a, om = 1 - gam a^T C a), so ``tr(C*^{-1}) = (tr(C^{-1}) + gam |a|^2 / om) / K``,
-    and ``1 / tr(X^{-1}) <= lambda_min(X) <= n / tr(X^{-1})``; tr(C^{-1}) = ||L^{-1}||_F^2.
-    Only estimates: no guarantee rests on them (as in ``_midrad.inflate``).
+    The error of the double-double entry h + lo against scale K* (C_ij - gam w*_i w*_j) is
+    derived from |sK* - Sh - Sl| <= rS, the error err of sh + sl (``gam X_ij + 4 U (|ql| +
+    |sl| + U |qh|)``), the dropped Sl sl and the four roundings of lo (|e1| <= U |h|, |t4| <=
+    (1 + U) Sh |sl|, |t5| <= (1 + U) |Sl| |sh|):
+
+        e_ij <= Sa gam X_ij + alpha |sl| + beta |sh| + gamma (|ql| + U |qh|),
+
+    X_ij = W_i we_j + we_i W_j + |wl_i| |wl_j| + 4 U (|wh_i| |wl_j| + |wl_i| |wh_j|) a sum of
+    outer products, so ||X||_F <= 2 |W| |we| + |wl|^2 + 8 U |wh| |wl| (vector 2-norms).
     """
-    n = c.shape[0]
-    Kh, Kl, rK, om = _shape_factor(gam, mid, half, G, G_lo, rG)
-    if not (rK >= 0.0 and Kh > 2.0 * (abs(Kl) + rK)):
-        return -1.0
-    gm, rgm = mr_mul(gam, 0.0, mid, 0.0)
-    dd = 0.0
-    cmax = 0.0
-    aa = 0.0
-    ww = 0.0
-    trace_c = 0.0
+    n = C.shape[0]
+    # Rows S0..S6: |W|^2, |we|^2, |wl|^2, |wh|^2, e2, r2, d2 below (S0 then en).
+    for k in range(m):
+        t[S0 + k] = 0.0
+        t[S1 + k] = 0.0
+        t[S2 + k] = 0.0
+        t[S3 + k] = 0.0
+        t[S4 + k] = 0.0  # sum of the e_ij parts but X over the whole matrix (off-diagonal twice)
+        t[S5 + k] = 0.0  # sum of T_ij^2 over the off-diagonal entries (their rounding: U |T_ij|)
+        t[S6 + k] = 0.0
     for i in range(n):
-        fw, rfw = mr_mul(gm, rgm, wh[i], abs(wl[i]) + we[i])
-        out_c[i], di = mr_add(c[i], 0.0, fw, rfw)
-        dd += di * di
-        cmax = max(cmax, abs(out_c[i]))
-        aa += a[i] * a[i]
-        ww += wh[i] * wh[i]
-        trace_c += C[i, i]
-    # Estimates of lambda_min(C*) and tr(C*) (see the docstring).
-    lmin = Kh / (trace_inverse(L, buf[2]) + gam * aa / om)
-    trace = Kh * max(trace_c - gam * ww, 0.0)
-    floor = output_floor(trace, cmax)
-    if not (lmin > 0.0 and trace <= 1e14 * lmin):  # beyond the estimate's accuracy
-        lmin = 0.0
-    lref = max(lmin, floor)
-    scale = segment_scale(dd, lref)
-    rho = scale - 1.0
-    centre = segment_term(dd, rho)
-    # scale K as a double-double within rS.
-    p, e = _two_prod(scale, Kh)
-    t = scale * Kl
-    Sl0 = e + t
-    Sh, Sl = _two_sum(p, Sl0)
-    rS = scale * rK + U * (abs(t) + abs(Sl0)) + TINY
-    Sa = Sh + abs(Sl) + rS  # >= |scale K| up to rounding (covered by RADIUS_SAFETY)
-    # Error of the double-double entry h + lo against scale K* (C_ij - gam w*_i w*_j), derived
-    # from |sK* - Sh - Sl| <= rS, the error err of sh + sl (the c0 bound of the old midrad code:
-    # ``gam X_ij + 4 U (|ql| + |sl| + U |qh|)``), the dropped Sl sl and the four roundings of
-    # lo (|e1| <= U |h|, |t4| <= (1 + U) Sh |sl|, |t5| <= (1 + U) |Sl| |sh|):
-    #     e_ij <= Sa gam X_ij + alpha |sl| + beta |sh| + gamma (|ql| + U |qh|),
-    # X_ij = W_i we_j + we_i W_j + |wl_i| |wl_j| + 4 U (|wh_i| |wl_j| + |wl_i| |wh_j|) a sum
-    # of outer products, so ||X||_F <= 2 |W| |we| + |wl|^2 + 8 U |wh| |wl| (vector 2-norms).
-    alpha = 4.0 * U * (Sa + Sh) + rS + abs(Sl)
-    beta = rS + 4.0 * U * (abs(Sl) + U * Sh)
-    gamma = 4.0 * U * Sa
-    nW = 0.0
-    nwe = 0.0
-    nwl = 0.0
-    nwh = 0.0
-    for i in range(n):
-        nW += (abs(wh[i]) + abs(wl[i]) + we[i]) ** 2
-        nwe += we[i] * we[i]
-        nwl += wl[i] * wl[i]
-        nwh += wh[i] * wh[i]
-    nX = 2.0 * np.sqrt(nW * nwe) + nwl + 8.0 * U * np.sqrt(nwh * nwl)
-    hd, ld = buf[0], buf[1]  # the diagonal's h, lo before its rounding (mu is added first)
-    e2 = 0.0  # sum of the e_ij parts but X over the whole matrix (off-diagonal twice)
-    r2 = 0.0  # sum of T_ij^2 over the off-diagonal entries (their rounding: U |T_ij|)
+        for k in range(m):
+            t[S0 + k] += (abs(wh[i, k]) + abs(wl[i, k]) + we[i, k]) ** 2
+            t[S1 + k] += we[i, k] * we[i, k]
+            t[S2 + k] += wl[i, k] * wl[i, k]
+            t[S3 + k] += wh[i, k] * wh[i, k]
     for i in range(n):
         for j in range(i + 1):
-            ph, pl = _two_prod(wh[i], wh[j])
-            cross = wh[i] * wl[j] + wl[i] * wh[j]
-            pl += cross
-            qh, ql = _two_prod(gam, ph)
-            ql += gam * pl
-            sh, sl = _two_sum(C[i, j], -qh)
-            sl -= ql
-            h, e1 = _two_prod(Sh, sh)
-            lo = (e1 + Sh * sl) + Sl * sh
-            eij = alpha * abs(sl) + beta * abs(sh) + gamma * (abs(ql) + U * abs(qh))
-            if i == j:
-                hd[i], ld[i] = h, lo
-                e2 += eij * eij
+            for k in range(m):
+                ph, pl = _two_prod(wh[i, k], wh[j, k])
+                cross = wh[i, k] * wl[j, k] + wl[i, k] * wh[j, k]
+                pl += cross
+                qh, ql = _two_prod(t[GAM + k], ph)
+                ql += t[GAM + k] * pl
+                sh, sl = _two_sum(C[i, j, k], -qh)
+                sl -= ql
+                h, e1 = _two_prod(t[SH + k], sh)
+                lo = (e1 + t[SH + k] * sl) + t[SL + k] * sh
+                eij = (
+                    t[ALPHA + k] * abs(sl)
+                    + t[BETA + k] * abs(sh)
+                    + t[GAMMA + k] * (abs(ql) + U * abs(qh))
+                )
+                t[EH + k], t[EL + k] = h, lo
+                t[S4 + k] += (1.0 if i == j else 2.0) * eij * eij  # off-diagonal twice
+            # Stored in a loop of its own: a loop writing to rows of t and to T (n, n, W)
+            # needs more run-time overlap checks than LLVM allows, and stays scalar.
+            if i == j:  # the diagonal's h, lo before its rounding (mu is added first)
+                for k in range(m):
+                    hd[i, k], ld[i, k] = t[EH + k], t[EL + k]
             else:
-                tij = h + lo
-                out_C[i, j] = tij
-                out_C[j, i] = tij
-                e2 += 2.0 * eij * eij
-                r2 += 2.0 * tij * tij
+                for k in range(m):
+                    tij = t[EH + k] + t[EL + k]
+                    T[i, j, k] = tij
+                    T[j, i, k] = tij
+                    t[S5 + k] += 2.0 * tij * tij
     # ||F||_F <= ||E||_F + ||rounding||_F (triangle inequality); the diagonal's rounding is
     # U (|fl(lo + mu)| + |T_ii|) (two roundings).
-    en = Sa * gam * nX + np.sqrt(e2)
-    d2 = 0.0
+    for k in range(m):
+        nX = (
+            2.0 * np.sqrt(t[S0 + k] * t[S1 + k])
+            + t[S2 + k]
+            + 8.0 * U * np.sqrt(t[S3 + k] * t[S2 + k])
+        )
+        t[S0 + k] = t[SA + k] * t[GAM + k] * nX + np.sqrt(t[S4 + k])
     for i in range(n):
-        d2 += (abs(hd[i]) + 3.0 * abs(ld[i])) ** 2
+        for k in range(m):
+            t[S6 + k] += (abs(hd[i, k]) + 3.0 * abs(ld[i, k])) ** 2
     # A first guess that the check below accepts (the diagonal's rounding of mu: ~2 U mu).
-    mu = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY / (1.0 - 3.0 * U * np.sqrt(n))
-    mu = max(mu + TINY, 2.0 * floor - scale * lmin)  # widening (only ever adds to mu)
-    while True:
-        d2 = 0.0
+    for k in range(m):
+        g = (t[CENTRE + k] + t[S0 + k] + U * np.sqrt(t[S5 + k] + t[S6 + k])) * RADIUS_SAFETY
+        g = g / (1.0 - 3.0 * U * np.sqrt(n))
+        t[MU + k] = max(g + TINY, t[WIDEN + k])  # widening (only ever adds to mu)
+        t[MARGIN + k] = 0.0 if t[ACTIVE + k] != 0.0 else -1.0  # -1: not certified (or not asked)
+    pending = True
+    while pending:
+        for k in range(m):
+            t[S6 + k] = 0.0
         for i in range(n):
-            lm = ld[i] + mu
-            tii = hd[i] + lm
-            if not tii <= MAX_DIAG:
-                return -1.0
-            out_C[i, i] = tii
-            d2 += (abs(lm) + abs(tii)) ** 2
-        need = (centre + en + U * np.sqrt(r2 + d2)) * RADIUS_SAFETY + TINY
-        if mu >= need:
-            break
-        mu = need * (1.0 + 4.0 * U * n)
-    if not cmax <= MAG:
-        return -1.0
-    return rho + mu / lref
+            for k in range(m):
+                lm = ld[i, k] + t[MU + k]
+                tii = hd[i, k] + lm
+                if not tii <= MAX_DIAG:
+                    t[MARGIN + k] = -1.0
+                T[i, i, k] = tii
+                t[S6 + k] += (abs(lm) + abs(tii)) ** 2
+        pending = False
+        for k in range(m):
+            need = (
+                t[CENTRE + k] + t[S0 + k] + U * np.sqrt(t[S5 + k] + t[S6 + k])
+            ) * RADIUS_SAFETY + TINY
+            if t[MARGIN + k] == 0.0 and not t[MU + k] >= need:
+                if need < np.inf:
+                    t[MU + k] = need * (1.0 + 4.0 * U * n)
+                    pending = True
+                else:
+                    t[MARGIN + k] = -1.0
 
 
 @njit(cache=True, error_model="numpy")
-def _copy_input(c, C, out_c, out_C):
-    n = c.shape[0]
-    for i in range(n):
-        out_c[i] = c[i]
-        for j in range(n):
-            out_C[i, j] = C[i, j] if j <= i else C[j, i]
-
-
-@njit(cache=True, error_model="numpy")
-def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
-    """Step 4 for the cubic criteria (trace, projection); the projection uses ``work`` as
-    scratch (planes 3 and 1, row (0, 3)). Only the volume criterion's lambda is inlined into
-    ``fuse_one``."""
-    if mode == TRACE:
-        return lam_trace(C, w, half, Gn, e)
-    return lam_projection(C, w, half, Gn, e, idx, work[3], work[1], work[0, 3])
+def workspace(n):
+    """Scratch of one thread: lane vectors (9, n, W), lane matrices (3, n, n, W), the per-lane
+    scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
+    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
+    return (
+        np.zeros((9, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
+        np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
+        np.zeros((4, max(n, 4), n)), np.zeros(n),
+    )  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def fuse_one(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out_c, out_C, work):
-    """One full update (steps 1-6); ``idx`` are the coordinates of the projection criteria
-    (unused otherwise). ``work`` is (4, max(n, 4), n) scratch. Inlined into its two callers:
-    as a separate function, LLVM no longer inlined it into the batch loop once the criteria's
-    branches were added (measured ~10 % slower per instance).
-
-    Returns (code, case, consistency, lam, empty, margin).
-    """
-    n = c.shape[0]
-    wh, wl, we, L = work[0, 0], work[0, 1], work[0, 2], work[2, :n]
-    code, case, cons, mid, half, G, G_lo, rG = prepare(c, C, a, b, halfspace, clip, L, wh, wl, we)
-    if code != 0:
-        return code, case, 0.0, 0.0, True, 0.0
-    if mode == GIVEN and not (np.isfinite(lam_in) and lam_in >= 0.0):
-        return BAD_LAM, case, 0.0, 0.0, True, 0.0
-    if case == INCONSISTENT:
-        for i in range(n):
-            out_c[i] = 0.0
-            for j in range(n):
-                out_C[i, j] = 0.0
-        return 0, case, 0.0, 0.0, True, 0.0
-    lam = 0.0
-    Gn = G / (half * half)
-    if case != NO_REDUCTION:
+def _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
+    """Step 4 for the block: ``t[LAM]`` and ``t[GAM] = lam / ((1 + lam Gn) half^2)`` per lane
+    (lambda = 0 where there is nothing to fuse: an error, no reduction, inconsistent)."""
+    for k in range(m):
+        gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
+        x = 0.0
         if mode == GIVEN:
-            lam = lam_in
-        else:
-            e = mid / half
-            if mode == VOLUME or mode == ROBUST:
-                lam = lam_volume(Gn, e, n)
-            else:
-                lam = _lam_cubic(C, wh, e, half, Gn, mode, idx, work)
-            if mode == ROBUST or mode == ROBUST_PROJECTION:
-                lam = lam / (1.0 + np.exp(-steep * (cons - midp)))  # [HS96, eq. (30)]
-        lam = min(lam, LAM_MAX, LAMG_MAX / Gn)
-    margin = 0.0
-    if lam > 0.0:
-        gam = lam / ((1.0 + lam * Gn) * (half * half))
-        buf = work[1, :3]
-        margin = member(c, C, a, gam, mid, half, G, G_lo, rG, wh, wl, we, L, out_c, out_C, buf)
-    if not lam > 0.0 or margin < 0.0:
-        _copy_input(c, C, out_c, out_C)
-        return 0, case, cons, 0.0, False, 0.0
-    return 0, case, cons, lam, False, margin
+            x = t[LAM_IN + k]
+        elif mode == VOLUME or mode == ROBUST:
+            x = lam_volume(gn, t[MID + k] / t[HALF + k], n)
+        t[LAM + k] = x
+    if mode == TRACE or mode == PROJECTION or mode == ROBUST_PROJECTION:
+        for k in range(m):  # scalar, per lane: the cubic criteria need branches and logs
+            if code[k] == 0 and case[k] != INCONSISTENT and case[k] != NO_REDUCTION:
+                for i in range(n):
+                    wvec[i] = wh[i, k]
+                Gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
+                t[LAM + k] = _lam_cubic(
+                    C[base + k], wvec, t[MID + k] / t[HALF + k], t[HALF + k], Gn, mode, idx, work
+                )
+    if mode == ROBUST or mode == ROBUST_PROJECTION:
+        for k in range(m):
+            t[LAM + k] = t[LAM + k] / (
+                1.0 + np.exp(-steep * (t[CONS + k] - midp))
+            )  # [HS96, eq. (30)]
+    for k in range(m):
+        gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
+        x = min(t[LAM + k], LAM_MAX, LAMG_MAX / gn)
+        if not (code[k] == 0 and case[k] != INCONSISTENT and case[k] != NO_REDUCTION):
+            x = 0.0
+        t[LAM + k] = x
+        t[GAM + k] = x / ((1.0 + x * gn) * (t[HALF + k] * t[HALF + k]))
+
+
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out, ws, base, m):
+    """Steps 1-6 for the m <= W instances ``base ..`` (lane k = instance base + k), each step a
+    loop over the lanes (``_lanes``). Compiled without numba's reference counting
+    (``_nrt=False``): every view (``V[0]``, ``t[EPS]``, ``C[base + k]``) otherwise increments
+    and decrements its parent's counter atomically, a cache line both threads fight over.
+    Nothing here allocates; the views live no longer than the call."""
+    n = c.shape[1]
+    V, M, t, code, case, scratch, work, wvec = ws
+    cs, av, wh, wl, we, oc, hd, ld, r = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7], V[8]
+    Cs, L, Os = M[0], M[1], M[2]
+    load_vectors(c, base, m, cs)
+    load_matrices(C, base, m, Cs)
+    load_vectors(a, base, m, av)
+    for k in range(m):
+        t[STRIP_B + k] = b[base + k]
+        t[LAM_IN + k] = lam_in[base + k]
+    _validate(cs, Cs, av, t, mode, m, L, code, scratch)
+    _offsets(cs, av, t, m)
+    _project(Cs, av, m, wh, wl, we, t)
+    for k in range(m):
+        ck, cons, mid, half, g, glo, rg = locate(
+            t[EPS + k], t[REPS + k], t[GS + k], t[GT + k], t[RG + k], halfspace, clip
+        )
+        case[k] = ck if code[k] == 0 else INCONSISTENT
+        t[CONS + k], t[MID + k], t[HALF + k] = cons, mid, half
+        t[GRAM + k], t[GRAM_LO + k], t[RG + k] = g, glo, rg
+    _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
+    for k in range(m):
+        kh, kl, rk, om = _shape_factor(
+            t[GAM + k], t[MID + k], t[HALF + k], t[GRAM + k], t[GRAM_LO + k], t[RG + k]
+        )
+        t[KH + k], t[KL + k], t[RK + k], t[OM + k] = kh, kl, rk, om
+        ok = t[LAM + k] > 0.0 and rk >= 0.0 and kh > 2.0 * (abs(kl) + rk)
+        t[ACTIVE + k] = 1.0 if ok else 0.0
+    _member_centre(cs, av, Cs, wh, wl, we, t, m, oc)
+    _trace_inverse(L, m, t, r)
+    for k in range(m):
+        terms = _margin_terms(
+            t[KH + k], t[KL + k], t[RK + k], t[OM + k], t[GAM + k], t[TRINV + k], t[AA + k],
+            t[TRC + k], t[WW + k], t[DD + k], t[CMAX + k],
+        )  # fmt: skip
+        lmin, lref, rho, centre, sh, sl, sa, alpha, beta, gamma, widen = terms
+        t[LMIN + k], t[LREF + k], t[RHO + k], t[CENTRE + k] = lmin, lref, rho, centre
+        t[SH + k], t[SL + k], t[SA + k], t[WIDEN + k] = sh, sl, sa, widen
+        t[ALPHA + k], t[BETA + k], t[GAMMA + k] = alpha, beta, gamma
+    _member_shape(Cs, wh, wl, we, t, m, Os, hd, ld)
+    _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out):
+    """Step 6 and the block's outputs: a lane whose member was not certified falls back to E
+    (lambda = 0); a lane with an error or proven disjoint gets zeros and ``empty``."""
+    out_c, out_C, code_o, case_o, cons_o, lam_o, empty_o, margin_o = out
+    kind = S0  # row
+    for k in range(m):
+        margin = t[RHO + k] + t[MU + k] / t[LREF + k]
+        if not (t[MARGIN + k] == 0.0 and t[CMAX + k] <= MAG):
+            margin = -1.0
+        fused = code[k] == 0 and case[k] != INCONSISTENT
+        t[kind + k] = OUT_NONE if not fused else (OUT_MEMBER if margin >= 0.0 else OUT_INPUT)
+        t[MARGIN + k] = margin if t[kind + k] == OUT_MEMBER else 0.0
+        t[CONS + k] = t[CONS + k] if fused else 0.0
+        t[LAM + k] = t[LAM + k] if t[kind + k] == OUT_MEMBER else 0.0
+    # One output array per loop (a loop storing to several arrays stays scalar, see
+    # ``_member_shape``).
+    for k in range(m):
+        code_o[base + k] = code[k]
+    for k in range(m):
+        case_o[base + k] = case[k]
+    for k in range(m):
+        empty_o[base + k] = t[kind + k] == OUT_NONE
+    for k in range(m):
+        cons_o[base + k] = t[CONS + k]
+    for k in range(m):
+        lam_o[base + k] = t[LAM + k]
+    for k in range(m):
+        margin_o[base + k] = t[MARGIN + k]
+    # The outputs, selected per lane while they are stored (lanes innermost, as ``_lanes``).
+    for i in range(n):
+        for k in range(m):
+            member, source = oc[i, k], cs[i, k]
+            out_c[base + k, i] = (
+                member
+                if t[kind + k] == OUT_MEMBER
+                else (source if t[kind + k] == OUT_INPUT else 0.0)
+            )
+        for j in range(n):
+            r, q = (i, j) if j <= i else (j, i)  # E's shape: its lower triangle
+            for k in range(m):
+                member, source = Os[i, j, k], Cs[r, q, k]
+                out_C[base + k, i, j] = (
+                    member
+                    if t[kind + k] == OUT_MEMBER
+                    else (source if t[kind + k] == OUT_INPUT else 0.0)
+                )
+
+
+@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
+    """Instances ``start..stop`` block by block."""
+    for base in range(start, stop, W):
+        m = min(W, stop - base)
+        _fuse_block(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, base, m)
 
 
 @njit(cache=True, error_model="numpy")
-def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
+def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
     """One instance through the batch loop ``_fuse_loop`` (a batch of one: the same compiled
     code, so single and batched results agree bitwise and the kernel is compiled once), plus
-    the result's Cholesky factor and its validation code (0 by construction: ``member`` keeps
-    the result in the domain as ``_midrad.inflate`` does)."""
+    the result's Cholesky factor and its validation code (0 by construction: the member keeps
+    the result in the domain as ``_midrad.inflate`` does). ``ws`` is ``workspace(n)``."""
     n = c.shape[0]
     out = (
         np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.zeros(1, np.int8),
         np.zeros(1), np.zeros(1), np.zeros(1, np.bool_), np.zeros(1),
     )  # fmt: skip
-    work = np.zeros((4, max(n, 4), n))
     one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
     _fuse_loop(
         np.ascontiguousarray(c).reshape((1, n)), np.ascontiguousarray(C).reshape((1, n, n)),
         np.ascontiguousarray(a).reshape((1, n)), np.full(1, b), halfspace, clip, mode,
-        np.full(1, lam), idx, steep, midp, out, work, one - 1, one,
+        np.full(1, lam), idx, steep, midp, out, ws, one - 1, one,
     )  # fmt: skip
     out_c, out_C = out[0][0], out[1][0]
     out_L = np.empty((n, n))
@@ -440,25 +671,9 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp):
     return out_c, out_C, out_L, valid, r
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, work, start, stop):
-    """The batch loop, compiled without numba's reference counting (``_nrt=False``): every
-    per-instance view (``c[i]``, ``work[0, 0]``, ...) otherwise increments and decrements the
-    parent array's counter atomically, a cache line both threads fight over (measured: half
-    the time per instance). Nothing here allocates; the views live no longer than the call."""
-    out_c, out_C, code, case, cons, lam_out, empty, margin = out
-    for i in range(start, stop):
-        r = fuse_one(
-            c[i], C[i], a[i], b[i], halfspace, clip, mode, lam[i], idx, steep, midp,
-            out_c[i], out_C[i], work,
-        )  # fmt: skip
-        code[i], case[i], cons[i], lam_out[i], empty[i], margin[i] = r
-
-
 @njit(cache=True, error_model="numpy", nogil=True)
 def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, start, stop):
-    """``fuse_one`` on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
+    """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
     caller). ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin)."""
-    n = c.shape[1]
-    work = np.zeros((4, max(n, 4), n))
-    _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, work, start, stop)
+    ws = workspace(c.shape[1])
+    _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)

@@ -8,11 +8,13 @@ oversubscribed machine a batch of 1e3 then took ~30 ms instead of ~0.3 ms.
 from __future__ import annotations
 
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-MIN_SLICE = 8192  # below this, one thread (start-up costs more than it saves)
+MIN_SLICE = 2048  # below this, one thread (start-up costs more than it saves)
+_LOCAL = threading.local()
 _POOL: tuple[int, ThreadPoolExecutor] | None = None  # (owner pid, pool): a forked child
 # inherits the pool object but not its threads, so it makes its own.
 
@@ -44,3 +46,14 @@ def ellipsoid_outputs(n_batch: int, n: int, *scalars) -> tuple:
         np.empty((n_batch, n, n)),
         *(np.zeros(n_batch, dtype) for dtype in scalars),
     )
+
+
+def workspace(factory, n: int) -> tuple:
+    """The scratch ``factory(n)`` of a compiled kernel, made once per thread and dimension:
+    a single call would otherwise spend longer allocating its block scratch (~4 us) than
+    computing. Per thread, so that concurrent single calls never share it."""
+    cache = _LOCAL.__dict__.setdefault("workspaces", {})
+    key = (factory, n)
+    if key not in cache:
+        cache[key] = factory(n)
+    return cache[key]

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from optbound.analytic import _batch
+from optbound.analytic import _batch, _threads
 from optbound.analytic._strip_kernel import (
     BAD_A,
     BAD_B,
@@ -54,6 +54,7 @@ from optbound.analytic._strip_kernel import (
     VOLUME,
     fuse_range,
     fuse_single,
+    workspace,
 )
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
@@ -229,8 +230,9 @@ def intersect_strip(
     steep, midp = _check_robust(steepness, midpoint)
     halfspace = isinstance(S, Halfspace)
     c, C, L, valid, r = fuse_single(
-        E.center, E.shape, S.a, S.b, halfspace, clip, mode, lams[0], idx, steep, midp
-    )
+        E.center, E.shape, S.a, S.b, halfspace, clip, mode, lams[0], idx, steep, midp,
+        _threads.workspace(workspace, E.dim),
+    )  # fmt: skip
     code, case, consistency, lam_used, empty, margin = r
     if code:
         _raise(code, 0, _NAMES_SINGLE, False)

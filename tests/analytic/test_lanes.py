@@ -5,6 +5,7 @@ import pytest
 from numba import njit
 
 from optbound.analytic._lanes import (
+    CHECK_ROWS,
     W,
     check_ellipsoids,
     inflate_lanes,
@@ -22,7 +23,7 @@ def _check_batch(c, C, code, L_out, c_out, C_out):
     """check_ellipsoids block by block; the centres and shapes are also stored back."""
     n_batch, n = c.shape
     cs, Cs, Ls = np.empty((n, W)), np.empty((n, n, W)), np.empty((n, n, W))
-    codes, scratch = np.empty(W, np.int64), np.empty((3, W))
+    codes, scratch = np.empty(W, np.int64), np.empty(CHECK_ROWS * W)
     for base in range(0, n_batch, W):
         m = min(W, n_batch - base)
         load_vectors(c, base, m, cs)

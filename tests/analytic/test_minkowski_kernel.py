@@ -39,12 +39,12 @@ def _p_block(C1s, C2s, active=None) -> np.ndarray:
     m, n = C1s.shape[:2]
     A, B = _lanes(C1s), _lanes(C2s)
     L1, L2, pivot1, pivot2 = np.empty((n, n, W)), np.empty((n, n, W)), np.empty(W), np.empty(W)
-    cholesky_lanes(A, L1, m, pivot1)
-    cholesky_lanes(B, L2, m, pivot2)
+    cholesky_lanes(A, L1, m, pivot1, 0)
+    cholesky_lanes(B, L2, m, pivot2, 0)
     act = np.ones(W) if active is None else np.asarray(active, float)
     assert np.all((pivot1[:m] > 0) & (pivot2[:m] > 0) | (act[:m] == 0))
     p = np.full(W, np.nan)
-    mats, vecs, rows, _ = K.block_work(n, W)
+    mats, vecs, rows, _, _ = K.block_work(n, W)
     K.p_volume_lanes(A, B, L1, L2, m, act, p, mats[:7], vecs[:3], rows[:14])
     return p[:m]
 

@@ -1,0 +1,103 @@
+"""The lane-parallel strip kernel: its lanes are independent of each other and of the block.
+
+Every instance is computed in one lane of a block of ``W`` (``optbound.analytic._lanes``).
+These tests check what that layout must not change: a lane's result (error code included)
+is the single call's, bitwise, wherever the instance sits in the batch, whatever its
+neighbours are (valid or not), for every criterion, strips and half-spaces.
+"""
+
+import numpy as np
+import pytest
+from numba import njit
+
+from benchmarks.speed_analytic import batch_instances
+from optbound.analytic import _strip_kernel as K
+from optbound.analytic._lanes import W
+from optbound.analytic._threads import ellipsoid_outputs
+
+MODES = (K.VOLUME, K.GIVEN, K.ROBUST, K.TRACE, K.PROJECTION, K.ROBUST_PROJECTION)
+
+
+def _mixed_batch(seed: int, count: int, n: int):
+    """Random instances (conditions up to 1e8, far centres) with invalid ones mixed in."""
+    rng = np.random.default_rng(seed)
+    parts = [batch_instances(rng, count, n, cond) for cond in (None, 1e3, 1e8)]
+    c, C, a, b = (np.concatenate(x) for x in zip(*parts, strict=True))
+    pick = rng.permutation(3 * count)[:count]
+    c, C, a, b = c[pick].copy(), C[pick].copy(), a[pick].copy(), b[pick].copy()
+    far = slice(0, None, 5)
+    shift = 1.0e7 * rng.standard_normal(n)
+    c[far] += shift
+    b[far] += a[far] @ shift
+    C[3::17, 0, 0] = np.nan  # not finite
+    C[5::19] *= -1.0  # not positive definite
+    a[7::23] = 0.0  # zero normal
+    b[11::29] = np.inf
+    b[13::31] += 1e3  # far from E: inconsistent
+    lam = rng.uniform(0.0, 5.0, count)
+    lam[::9] = 1e16
+    lam[2::37] = -1.0  # invalid for the GIVEN mode
+    return c, C, a, b, lam
+
+
+def _batch(c, C, a, b, lam, halfspace, clip, mode, idx):
+    n_batch, n = c.shape
+    out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    K.fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, 10.0, 0.5, out, 0, n_batch)
+    return out
+
+
+@pytest.mark.parametrize("mode", MODES)
+@pytest.mark.parametrize("halfspace", [False, True])
+def test_every_lane_is_the_single_call_bitwise(mode, halfspace):
+    n, count = 3, 2 * W + 5  # two full blocks and a partial one
+    c, C, a, b, lam = _mixed_batch(seed=mode + 10 * halfspace, count=count, n=n)
+    idx = np.array([0, 1], np.int64)
+    out = _batch(c, C, a, b, lam, halfspace, True, mode, idx)
+    ws = K.workspace(n)
+    codes = set()
+    for k in range(count):
+        oc, oC, _, _, r = K.fuse_single(
+            c[k], C[k], a[k], b[k], halfspace, True, mode, lam[k], idx, 10.0, 0.5, ws
+        )
+        assert r[0] == out[2][k], k
+        codes.add(int(r[0]))
+        if r[0] != 0:
+            continue  # an error: the batch raises, nothing else is defined
+        assert r[1:] == tuple(out[q][k] for q in range(3, 8)), k
+        assert np.array_equal(oc, out[0][k]) and np.array_equal(oC, out[1][k]), k
+    assert {0, K.BAD_A, K.BAD_B} <= codes  # the neighbours really were mixed
+
+
+@pytest.mark.parametrize("n", [2, 4])
+def test_a_lane_does_not_depend_on_its_position(n):
+    count = W + 9
+    c, C, a, b, lam = _mixed_batch(seed=n, count=count, n=n)
+    idx = np.array([0, 1], np.int64)
+    out = _batch(c, C, a, b, lam, False, True, K.VOLUME, idx)
+    pick = np.random.default_rng(n).permutation(count)
+    again = _batch(c[pick], C[pick], a[pick], b[pick], lam[pick], False, True, K.VOLUME, idx)
+    valid = out[2] == 0
+    for q in range(8):
+        assert np.array_equal(again[q][valid[pick]], out[q][pick][valid[pick]]), q
+
+
+@njit(error_model="numpy")
+def _trace_inverse_of(L_batch):
+    """The lane kernel's tr(A^-1) for a batch of Cholesky factors (one block)."""
+    m, n = L_batch.shape[0], L_batch.shape[1]
+    L = np.zeros((n, n, W))
+    for k in range(m):
+        L[:, :, k] = L_batch[k]
+    t = np.zeros(K.N_ROWS * W)
+    K._trace_inverse(L, m, t, np.zeros((n, W)))
+    return t[K.TRINV : K.TRINV + m].copy()
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 5])
+def test_trace_inverse_is_the_trace_of_the_inverse(n):
+    rng = np.random.default_rng(n)
+    A = rng.standard_normal((W, n, n))
+    A = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(n)
+    total = _trace_inverse_of(np.linalg.cholesky(A))
+    np.testing.assert_allclose(total, np.trace(np.linalg.inv(A), axis1=1, axis2=2), rtol=1e-12)
