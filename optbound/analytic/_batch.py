@@ -22,11 +22,14 @@ def float_array(name: str, value, ndim: int) -> np.ndarray:
     return arr
 
 
-def per_instance(name: str, value, n_batch: int, trailing: tuple[int, ...]) -> np.ndarray:
+def per_instance(
+    name: str, value, n_batch: int, trailing: tuple[int, ...], finite: bool = True
+) -> np.ndarray:
     """Broadcast a shared value (shape ``trailing``) or a per-instance one to (B, *trailing),
     as a C-contiguous, writable array: always the same array type for the compiled kernels,
     whatever B (a broadcast of one instance would otherwise be a read-only view, a type of its
-    own that numba compiles the whole kernel again for)."""
+    own that numba compiles the whole kernel again for). ``finite=False`` leaves the
+    finiteness check to a kernel that checks every instance anyway (and names it)."""
     arr = real_array(name, value)
     if arr.shape == trailing:
         arr = np.broadcast_to(arr, (n_batch, *trailing))
@@ -34,6 +37,6 @@ def per_instance(name: str, value, n_batch: int, trailing: tuple[int, ...]) -> n
         raise ValueError(
             f"{name} must have shape {trailing} or {(n_batch, *trailing)}, got {arr.shape}"
         )
-    if not np.all(np.isfinite(arr)):
+    if finite and not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite")
     return np.require(arr, requirements="CW")

@@ -556,7 +556,7 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
     load_vectors(a, base, m, av)
     for k in range(m):
         t[STRIP_B + k] = b[base + k]
-        t[LAM_IN + k] = lam_in[base + k]
+        t[LAM_IN + k] = lam_in[base + k] if mode == GIVEN else 0.0  # (B,) in that mode only
     _validate(cs, Cs, av, t, mode, m, L, code, scratch)
     _offsets(cs, av, t, m)
     _project(Cs, av, m, wh, wl, we, t)

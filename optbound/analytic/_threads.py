@@ -20,7 +20,9 @@ _POOL: tuple[int, ThreadPoolExecutor] | None = None  # (owner pid, pool): a fork
 
 
 def run_sliced(kernel, n_batch: int, *args) -> None:
-    """Call ``kernel(*args, start, stop)`` on slices covering ``range(n_batch)``."""
+    """Call ``kernel(*args, start, stop)`` on slices covering ``range(n_batch)``: the calling
+    thread runs the last slice itself (a dispatch to the pool costs ~15 µs, as much as 300
+    strip updates), the pool the others."""
     global _POOL
     workers = min(os.cpu_count() or 1, max(1, n_batch // MIN_SLICE))
     if workers == 1:
@@ -33,7 +35,8 @@ def run_sliced(kernel, n_batch: int, *args) -> None:
         )
     pool = _POOL[1]
     bounds = np.linspace(0, n_batch, workers + 1).astype(int)
-    jobs = [pool.submit(kernel, *args, bounds[k], bounds[k + 1]) for k in range(workers)]
+    jobs = [pool.submit(kernel, *args, bounds[k], bounds[k + 1]) for k in range(workers - 1)]
+    kernel(*args, bounds[-2], bounds[-1])
     for job in jobs:
         job.result()
 

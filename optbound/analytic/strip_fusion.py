@@ -135,8 +135,8 @@ def _raise(code: int, index: int, names: tuple[str, str, str, str], batched: boo
 
 
 def _mode(criterion, dims, lam, n_batch, n):
-    """Kernel mode, per-instance lambda array (zeros where the kernel chooses it) and the
-    coordinates of the projection criteria (empty if unused)."""
+    """Kernel mode, per-instance lambda array (a placeholder where the kernel chooses it) and
+    the coordinates of the projection criteria (empty if unused)."""
     if criterion not in CRITERIA:
         raise ValueError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
     if n < 2:
@@ -155,10 +155,11 @@ def _mode(criterion, dims, lam, n_batch, n):
         mode = ROBUST if dims is None else ROBUST_PROJECTION
     else:
         mode = {"volume": VOLUME, "trace": TRACE, "projection": PROJECTION}[criterion]
-    return mode, np.zeros(n_batch), idx
+    return mode, _NO_LAMBDAS, idx
 
 
 _NO_DIMS = np.zeros(0, np.int64)
+_NO_LAMBDAS = np.zeros(1)  # the kernel reads lambdas in the GIVEN mode only
 
 
 def _check_robust(steepness, midpoint) -> tuple[float, float]:
@@ -293,8 +294,9 @@ def intersect_strip_batch(
     n_batch, n = c.shape
     if C.shape != (n_batch, n, n):
         raise ValueError(f"shapes must have shape {(n_batch, n, n)}, got {C.shape}")
-    a = _batch.per_instance("a", a, n_batch, (n,))
-    b = _batch.per_instance("b", b, n_batch, ())
+    # Non-finite a and b are refused per instance by the kernel (BAD_A, BAD_B), with its index.
+    a = _batch.per_instance("a", a, n_batch, (n,), finite=False)
+    b = _batch.per_instance("b", b, n_batch, (), finite=False)
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
