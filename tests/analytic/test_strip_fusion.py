@@ -304,6 +304,21 @@ def test_bad_inputs_raise(kwargs, match):
         ([[0.0, 0.0]], [[[2.0, 4.0], [4.0, 8.0]]], [1.0, 0.0], 0.0, "ill-conditioned|singular"),
         ([[0.0, 0.0]], [np.eye(3)], [1.0, 0.0], 0.0, "shapes must have shape"),
         ([[0.0, 0.0]], [np.eye(2)], [0.0, 0.0], 0.0, "non-zero"),
+        # a and b are checked by the kernel, per instance, with the instance's index.
+        (
+            [[0.0, 0.0]] * 3,
+            [np.eye(2)] * 3,
+            [[1.0, 0.0], [1.0, np.nan], [1.0, 0.0]],
+            0.0,
+            r"a must be finite.*\(instance 1\)",
+        ),
+        (
+            [[0.0, 0.0]] * 2,
+            [np.eye(2)] * 2,
+            [1.0, 0.0],
+            [0.0, np.inf],
+            r"b must be finite.*\(instance 1\)",
+        ),
         ([[0.0, 0.0]], [np.eye(2)], [1.0, 0.0], [0.0, 1.0], "b must have shape"),
         ([[0.0]], [np.eye(1)], [1.0], 0.0, "dimension >= 2"),
     ],
