@@ -32,6 +32,7 @@ from optbound.analytic._lanes import (
     check_ellipsoids,
     load_matrices,
     load_vectors,
+    trace_inverse_lanes,
 )
 from optbound.analytic._midrad import (
     RADIUS_SAFETY,
@@ -226,8 +227,8 @@ def locate(eps, reps, Gs, Gt, rG_dd, halfspace, clip):
 @njit(cache=True, error_model="numpy")
 def _lam_cubic(C, w, e, half, Gn, mode, idx, work):
     """Step 4 for the cubic criteria (trace, projection); the projection uses ``work`` as
-    scratch (planes 3 and 1, row (0, 3)). Only the volume criterion's lambda is inlined into
-    ``fuse_one``."""
+    scratch (planes 3 and 1, row (0, 3)). Called per lane (branches and logs); the volume
+    criterion's lambda is a lane loop of ``_choose_lam``."""
     if mode == TRACE:
         return lam_trace(C, w, half, Gn, e)
     return lam_projection(C, w, half, Gn, e, idx, work[3], work[1], work[0, 3])
@@ -307,32 +308,6 @@ def _member_centre(c, a, C, wh, wl, we, t, m, out_c):
             t[AA + k] += a[i, k] * a[i, k]
             t[WW + k] += wh[i, k] * wh[i, k]
             t[TRC + k] += C[i, i, k]
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def _trace_inverse(L, m, t, r):
-    """``tr(A^{-1}) = ||L^{-1}||_F^2`` per lane (``_midrad.trace_inverse``, lanes innermost):
-    row i of X = L^{-1} is ``X_ii = r_i = 1 / L_ii``, ``X_ij = -r_i (L_ij r_j + sum_{j<q<i}
-    L_iq X_qj)``; X's strict lower part is stored transposed in L's strict upper triangle.
-    r (n, W) and s (W,) are scratch."""
-    n = L.shape[0]
-    for k in range(m):
-        t[TRINV + k] = 0.0
-    for i in range(n):
-        for k in range(m):
-            ri = 1.0 / L[i, i, k]
-            r[i, k] = ri
-            t[TRINV + k] += ri * ri
-        for j in range(i):
-            for k in range(m):
-                t[S0 + k] = L[i, j, k] * r[j, k]
-            for q in range(j + 1, i):
-                for k in range(m):
-                    t[S0 + k] += L[i, q, k] * L[j, q, k]
-            for k in range(m):
-                x = -r[i, k] * t[S0 + k]
-                L[j, i, k] = x
-                t[TRINV + k] += x * x
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -495,11 +470,11 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
 
 @njit(cache=True, error_model="numpy")
 def workspace(n):
-    """Scratch of one thread: lane vectors (9, n, W), lane matrices (3, n, n, W), the per-lane
+    """Scratch of one thread: lane vectors (8, n, W), lane matrices (3, n, n, W), the per-lane
     scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
     and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
     return (
-        np.zeros((9, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
+        np.zeros((8, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
         np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
         np.zeros((4, max(n, 4), n)), np.zeros(n),
     )  # fmt: skip
@@ -549,7 +524,7 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
     Nothing here allocates; the views live no longer than the call."""
     n = c.shape[1]
     V, M, t, code, case, scratch, work, wvec = ws
-    cs, av, wh, wl, we, oc, hd, ld, r = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7], V[8]
+    cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
     Cs, L, Os = M[0], M[1], M[2]
     load_vectors(c, base, m, cs)
     load_matrices(C, base, m, Cs)
@@ -576,7 +551,7 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
         ok = t[LAM + k] > 0.0 and rk >= 0.0 and kh > 2.0 * (abs(kl) + rk)
         t[ACTIVE + k] = 1.0 if ok else 0.0
     _member_centre(cs, av, Cs, wh, wl, we, t, m, oc)
-    _trace_inverse(L, m, t, r)
+    trace_inverse_lanes(L, m, t[TRINV : TRINV + W])  # L is not needed after this
     for k in range(m):
         terms = _margin_terms(
             t[KH + k], t[KL + k], t[RK + k], t[OM + k], t[GAM + k], t[TRINV + k], t[AA + k],

@@ -13,6 +13,7 @@ from optbound.analytic._lanes import (
     load_vectors,
     store_matrices,
     store_vectors,
+    trace_inverse_lanes,
 )
 from optbound.analytic._midrad import inflate
 from optbound.sets._domain import check_ellipsoid
@@ -124,3 +125,24 @@ def test_inflate_lanes_matches_the_scalar_inflate(n, count):
         assert margin[i] == m_ref, i
         if m_ref >= 0.0:
             assert np.array_equal(T[i], T_ref), i
+
+
+@njit(error_model="numpy")
+def _trace_inverse_of(L_batch):
+    """trace_inverse_lanes on a block of Cholesky factors."""
+    m, n = L_batch.shape[0], L_batch.shape[1]
+    L = np.zeros((n, n, W))
+    for k in range(m):
+        L[:, :, k] = L_batch[k]
+    total = np.zeros(W)
+    trace_inverse_lanes(L, m, total)
+    return total[:m].copy()
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 5])
+def test_trace_inverse_is_the_trace_of_the_inverse(n):
+    rng = np.random.default_rng(n)
+    A = rng.standard_normal((W, n, n))
+    A = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(n)
+    total = _trace_inverse_of(np.linalg.cholesky(A))
+    np.testing.assert_allclose(total, np.trace(np.linalg.inv(A), axis1=1, axis2=2), rtol=1e-12)

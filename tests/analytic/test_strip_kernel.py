@@ -8,7 +8,6 @@ neighbours are (valid or not), for every criterion, strips and half-spaces.
 
 import numpy as np
 import pytest
-from numba import njit
 
 from benchmarks.speed_analytic import batch_instances
 from optbound.analytic import _strip_kernel as K
@@ -80,24 +79,3 @@ def test_a_lane_does_not_depend_on_its_position(n):
     valid = out[2] == 0
     for q in range(8):
         assert np.array_equal(again[q][valid[pick]], out[q][pick][valid[pick]]), q
-
-
-@njit(error_model="numpy")
-def _trace_inverse_of(L_batch):
-    """The lane kernel's tr(A^-1) for a batch of Cholesky factors (one block)."""
-    m, n = L_batch.shape[0], L_batch.shape[1]
-    L = np.zeros((n, n, W))
-    for k in range(m):
-        L[:, :, k] = L_batch[k]
-    t = np.zeros(K.N_ROWS * W)
-    K._trace_inverse(L, m, t, np.zeros((n, W)))
-    return t[K.TRINV : K.TRINV + m].copy()
-
-
-@pytest.mark.parametrize("n", [1, 2, 3, 5])
-def test_trace_inverse_is_the_trace_of_the_inverse(n):
-    rng = np.random.default_rng(n)
-    A = rng.standard_normal((W, n, n))
-    A = A @ A.transpose(0, 2, 1) + 0.1 * np.eye(n)
-    total = _trace_inverse_of(np.linalg.cholesky(A))
-    np.testing.assert_allclose(total, np.trace(np.linalg.inv(A), axis1=1, axis2=2), rtol=1e-12)
