@@ -291,7 +291,9 @@ def _member_centre(c, a, C, wh, wl, we, t, m, out_c):
     """Step 5's centre ``c + gam mid w`` in midpoint-radius arithmetic (``dd``: the squared
     norm of its radii), and per lane ``|out_c|_inf``, ``|a|^2``, ``|wh|^2``, ``tr C``."""
     n = c.shape[0]
+    gm, rgm = S0, S1  # rows: gam mid and its radius
     for k in range(m):
+        t[gm + k], t[rgm + k] = mr_mul(t[GAM + k], 0.0, t[MID + k], 0.0)
         t[DD + k] = 0.0
         t[CMAX + k] = 0.0
         t[AA + k] = 0.0
@@ -299,8 +301,7 @@ def _member_centre(c, a, C, wh, wl, we, t, m, out_c):
         t[TRC + k] = 0.0
     for i in range(n):
         for k in range(m):
-            gm, rgm = mr_mul(t[GAM + k], 0.0, t[MID + k], 0.0)
-            fw, rfw = mr_mul(gm, rgm, wh[i, k], abs(wl[i, k]) + we[i, k])
+            fw, rfw = mr_mul(t[gm + k], t[rgm + k], wh[i, k], abs(wl[i, k]) + we[i, k])
             ci, di = mr_add(c[i, k], 0.0, fw, rfw)
             out_c[i, k] = ci
             t[DD + k] += di * di
