@@ -17,6 +17,7 @@ from numba import njit
 from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
 from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._strip_lambda import lam_volume
+from optbound.analytic._threads import run_sliced
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
@@ -74,8 +75,8 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
-        load_matrices(C1, base, m, C1s)
-        load_matrices(C2, base, m, C2s)
+        load_matrices(C1[base:], m, C1s)
+        load_matrices(C2[base:], m, C2s)
         cholesky_lanes(C1s, L1, m, pivot, 0)
         cholesky_lanes(C2s, L2, m, pivot, 0)
         for k in range(m):
@@ -85,7 +86,24 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
             for j in range(n):
                 for k in range(m):
                     S[i, j, k] = (1.0 + p[k]) * (C1s[i, j, k] / p[k] + C2s[i, j, k])
-        store_matrices(S, base, m, out_C)
+        store_matrices(S, m, out_C[base:])
         for k in range(m):
             for i in range(n):
                 out_c[base + k, i] = c1[base + k, i] + c2[base + k, i]
+
+
+def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
+    """The reference strip update of a batch on all cores (the same slices and threads as
+    ours), into new arrays as ours returns (their first touch is part of the cost)."""
+    out_c, out_C = np.empty(c.shape), np.empty(C.shape)
+    run_sliced(lambda start, stop: strip_range(c, C, a, b, out_c, out_C, start, stop), len(c))
+    return out_c, out_C
+
+
+def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
+    """As :func:`strip_batch` for the volume-optimal Minkowski sum."""
+    out_c, out_C = np.empty(c1.shape), np.empty(C1.shape)
+    run_sliced(
+        lambda start, stop: minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop), len(c1)
+    )
+    return out_c, out_C

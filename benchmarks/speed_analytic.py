@@ -2,14 +2,15 @@
 
 Every ratio is taken between two timings of the same run on the same machine, measured
 alternately (ours, reference, ours, ...) and summarized by their medians, so that the load of
-a shared machine hits both alike:
+a shared machine hits both alike; each sample is the mean over back-to-back calls filling at
+least 20 ms (a sustained rate):
 
 - batch: seconds per update of ``intersect_strip_batch`` / ``minkowski_sum_batch`` (3-D,
   volume criterion, including validation and the certified margin) over seconds per update of
   the plain kernels of ``benchmarks.analytic_reference`` (same formula, same threads, no
-  validation, no margin), B = 1e3 ... 1e6;
+  validation, no margin; both return new arrays), B = 1e3 ... 1e6;
 - one call: ``intersect_strip(E, S)`` / ``minkowski_sum(E1, E2)`` end to end (including the
-  result's Ellipsoid) over one call of the reference kernel;
+  result's Ellipsoid) over one call of the reference kernel (into existing arrays);
 - every criterion (strip: trace, projection, robust with and without dims; Minkowski: trace,
   size_xy_psi) over the volume criterion of the same operation: one call and a batch of 1e4;
 - SDP cost: one SDP solve over one analytic call.
@@ -88,13 +89,18 @@ def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
 
 
 def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """As :func:`alternating` for microsecond calls: each sample is a mean over a loop."""
+    """As :func:`alternating`, each sample the mean over back-to-back calls filling >= 20 ms
+    (results dropped at once): a sustained rate, not the latency of one call after idling."""
     number = 1
     while per_call(ours, repeat=1, min_time=0.0) * number < 0.02:
         number *= 2
 
     def looped(fn):
-        return lambda: [fn() for _ in range(number)]
+        def run() -> None:
+            for _ in range(number):
+                fn()
+
+        return run
 
     t_ours, t_ref = alternating(looped(ours), looped(reference), repeat)
     return t_ours / number, t_ref / number
@@ -119,18 +125,15 @@ def _one_call_records(what: str, ours: float, ref: float) -> list[dict]:
     ]  # fmt: skip
 
 
-def _timings(one, ours, reference_range, inputs, batches) -> dict:
+def _timings(one, ours, reference, inputs, batches) -> dict:
     """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
-    batch size, ``ours(*inputs[:count])`` against ``reference_range`` on the same slices."""
-    from optbound.analytic._threads import run_sliced
-
+    batch size, ``ours(*inputs[:count])`` against ``reference(*inputs[:count])`` (both
+    return new arrays)."""
     out = {"one": alternating_calls(*one)}
     for count in batches:
         args = tuple(x[:count] for x in inputs)
-        oc, oC = np.empty((count, DIM)), np.empty((count, DIM, DIM))
-        out[count] = alternating(
-            lambda args=args: ours(*args),
-            lambda args=args, oc=oc, oC=oC, k=count: run_sliced(reference_range, k, *args, oc, oC),
+        out[count] = alternating_calls(
+            lambda args=args: ours(*args), lambda args=args: reference(*args)
         )
     return out
 
@@ -147,7 +150,7 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
         lambda: analytic.intersect_strip(E, S),
         lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
     )
-    return _timings(one, analytic.intersect_strip_batch, ref.strip_range, (c, C, a, b), batches)
+    return _timings(one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches)
 
 
 def minkowski_timings(rng: np.random.Generator, batches) -> dict:
@@ -164,7 +167,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
         lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
     )
     inputs = (c1, C1, c2, C2)
-    return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_range, inputs, batches)
+    return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches)
 
 
 STRIP_CRITERIA = (

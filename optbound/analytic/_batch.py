@@ -39,4 +39,6 @@ def per_instance(
         )
     if finite and not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite")
+    if arr.flags.c_contiguous and arr.flags.writeable:
+        return arr
     return np.require(arr, requirements="CW")

@@ -10,6 +10,11 @@ large batch agree bitwise.
 
 Kernels using these loops must be compiled with ``error_model="numpy"``: numba's default
 Python error model adds a zero-division branch to every division, which blocks vectorization.
+
+Blocks: a kernel passes each block its arrays as views starting at the block's first instance
+(``c[base:]``), indexed by the lane k alone. An index ``base + k`` with a runtime base may be
+negative as far as numba knows, and every such access then carries wraparound code (measured:
+15 % of the strip kernel).
 """
 
 from __future__ import annotations
@@ -46,40 +51,41 @@ CHECK_ROWS = 6  # rows of the scratch of check_ellipsoids
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def load_vectors(src, base, m, dst):
-    """``dst[i, k] = src[base + k, i]`` for the m lanes of a block (src (B, n))."""
+def load_vectors(src, m, dst):
+    """``dst[i, k] = src[k, i]`` for the m lanes of a block (src (m, n): a view from the
+    block's first instance, see ``Blocks`` in the module docstring)."""
     for i in range(src.shape[1]):
         for k in range(m):
-            dst[i, k] = src[base + k, i]
+            dst[i, k] = src[k, i]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def load_matrices(src, base, m, dst):
-    """``dst[i, j, k] = src[base + k, i, j]`` for the m lanes of a block (src (B, n, n))."""
+def load_matrices(src, m, dst):
+    """``dst[i, j, k] = src[k, i, j]`` for the m lanes of a block (src (m, n, n))."""
     n = src.shape[1]
     for i in range(n):
         for j in range(n):
             for k in range(m):
-                dst[i, j, k] = src[base + k, i, j]
+                dst[i, j, k] = src[k, i, j]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def store_vectors(src, base, m, dst):
-    """``dst[base + k, i] = src[i, k]`` (the inverse of :func:`load_vectors`; lanes innermost
+def store_vectors(src, m, dst):
+    """``dst[k, i] = src[i, k]`` (the inverse of :func:`load_vectors`; lanes innermost
     here too: measured twice as fast as a contiguous inner loop over i)."""
     for i in range(src.shape[0]):
         for k in range(m):
-            dst[base + k, i] = src[i, k]
+            dst[k, i] = src[i, k]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def store_matrices(src, base, m, dst):
-    """``dst[base + k, i, j] = src[i, j, k]`` (the inverse of :func:`load_matrices`)."""
+def store_matrices(src, m, dst):
+    """``dst[k, i, j] = src[i, j, k]`` (the inverse of :func:`load_matrices`)."""
     n = src.shape[0]
     for i in range(n):
         for j in range(n):
             for k in range(m):
-                dst[base + k, i, j] = src[i, j, k]
+                dst[k, i, j] = src[i, j, k]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -253,3 +259,12 @@ def inflate_lanes(S, D, c, d, T, L, m, margin, rows):
                         margin[k] = -1.0
                 T[i, j, k] = t
                 T[j, i, k] = t
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def first_error(code, start, stop):
+    """The first ``i`` in ``start..stop`` with ``code[i] != 0``, or -1."""
+    for i in range(start, stop):
+        if code[i] != 0:
+            return i
+    return -1

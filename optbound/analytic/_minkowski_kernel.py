@@ -50,6 +50,7 @@ from optbound.analytic._lanes import (
     W,
     check_ellipsoids,
     cholesky_lanes,
+    first_error,
     inflate_lanes,
     load_matrices,
     load_vectors,
@@ -425,18 +426,19 @@ def _validate_block(c, C, L, m, code, scratch):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
-    """The certified sums of instances ``base .. base + m`` (m <= W) as one block of lanes.
-    ``wk`` = (mats, vecs, rows, codes, check) is the block work space (:func:`block_work`)."""
+def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
+    """The certified sums of the m <= W instances of a block (lane k = instance k of the
+    views c1, C1, c2, C2, p_in and out, which start at the block). ``wk`` = (mats, vecs, rows,
+    codes, check) is the block work space (:func:`block_work`)."""
     out_c, out_C, code, p_out, margin_out = out
     mats, vecs, rows, codes, check = wk
     c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
-    load_vectors(c1, base, m, c1s)
-    load_matrices(C1, base, m, C1s)
-    load_vectors(c2, base, m, c2s)
-    load_matrices(C2, base, m, C2s)
+    load_vectors(c1, m, c1s)
+    load_matrices(C1, m, C1s)
+    load_vectors(c2, m, c2s)
+    load_matrices(C2, m, C2s)
     _validate_block(c1s, C1s, L1, m, codes[0], check)
     _validate_block(c2s, C2s, L2, m, codes[1], check)
     code1, code2 = codes
@@ -449,13 +451,13 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
         p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:], vecs[4:], rows[5:])
     elif mode == P_GIVEN:
         for k in range(m):
-            p[k] = p_in[base + k]
+            p[k] = p_in[k]
     else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
         sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
         if mode == P_XY_PSI:
             for k in range(m):  # scalar calls: a short cubic per instance
                 if act[k] > 0.0:
-                    p[k] = p_xy_psi(C1[base + k], C2[base + k], planar, heading, p[k])
+                    p[k] = p_xy_psi(C1[k], C2[k], planar, heading, p[k])
     for k in range(m):
         if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
             code1[k] = BAD_KAPPA
@@ -471,15 +473,15 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk):
                 S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
     T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
     inflate_lanes(S, D, oc, dc, T, mats[6], m, margin, rows[5:])
-    store_vectors(oc, base, m, out_c)
-    store_matrices(T, base, m, out_C)
+    store_vectors(oc, m, out_c)
+    store_matrices(T, m, out_C)
     for k in range(m):
         r = code1[k]
         if r == 0 and margin[k] < 0.0:
             r = OUT_OF_DOMAIN
-        code[base + k] = r
-        p_out[base + k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
-        margin_out[base + k] = margin[k] if r == 0 else 0.0
+        code[k] = r
+        p_out[k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
+        margin_out[k] = margin[k] if r == 0 else 0.0
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -519,10 +521,13 @@ def block_work(n, lanes):
 def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
     """The loop over blocks, compiled without numba's reference counting (``_nrt=False``):
     every view and every work tuple taken per block would otherwise increment and decrement
-    its parent's counter atomically (microseconds per block). Nothing here allocates."""
+    its parent's counter atomically (microseconds per block). Nothing here allocates. Each
+    block is given views from its first instance (``_lanes``: no wraparound code)."""
     for base in range(start, stop, W):
         m = min(W, stop - base)
-        _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, base, m, wk)
+        o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:])
+        _sum_block(c1[base:], C1[base:], c2[base:], C2[base:], mode, p_in[base:], planar,
+                   heading, o, m, wk)  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
@@ -531,6 +536,10 @@ def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin). The entry point of
     both :func:`minkowski_sum` (a batch of one: the same compiled code, so single and batched
     results agree bitwise) and :func:`minkowski_sum_batch`; both pass their inputs read-only,
-    so that numba compiles it once."""
+    so that numba compiles it once. Returns the first instance with a non-zero code, or -1.
+
+    The work space is allocated here, not cached per thread as the strip's: its ~40 arrays
+    cost as much to pass through numba's dispatcher (unboxing each) as to allocate."""
     wk = block_work(c1.shape[1], min(W, stop - start))
     _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
+    return first_error(out[2], start, stop)

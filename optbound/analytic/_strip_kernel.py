@@ -30,6 +30,7 @@ from optbound.analytic._lanes import (
     CHECK_ROWS,
     W,
     check_ellipsoids,
+    first_error,
     load_matrices,
     load_vectors,
     trace_inverse_lanes,
@@ -482,7 +483,7 @@ def workspace(n):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
+def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
     """Step 4 for the block: ``t[LAM]`` and ``t[GAM] = lam / ((1 + lam Gn) half^2)`` per lane
     (lambda = 0 where there is nothing to fuse: an error, no reduction, inconsistent)."""
     for k in range(m):
@@ -500,7 +501,7 @@ def _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, 
                     wvec[i] = wh[i, k]
                 Gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
                 t[LAM + k] = _lam_cubic(
-                    C[base + k], wvec, t[MID + k] / t[HALF + k], t[HALF + k], Gn, mode, idx, work
+                    C[k], wvec, t[MID + k] / t[HALF + k], t[HALF + k], Gn, mode, idx, work
                 )
     if mode == ROBUST or mode == ROBUST_PROJECTION:
         for k in range(m):
@@ -517,22 +518,23 @@ def _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, 
 
 
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out, ws, base, m):
-    """Steps 1-6 for the m <= W instances ``base ..`` (lane k = instance base + k), each step a
-    loop over the lanes (``_lanes``). Compiled without numba's reference counting
-    (``_nrt=False``): every view (``V[0]``, ``t[EPS]``, ``C[base + k]``) otherwise increments
+def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out, ws, m):
+    """Steps 1-6 for the m <= W instances of a block (lane k = instance k of the views c, C,
+    a, b, lam_in and out, which start at the block), each step a loop over the lanes
+    (``_lanes``). Compiled without numba's reference counting (``_nrt=False``): every view
+    (``V[0]``, ``t[EPS]``, ``C[k]``) otherwise increments
     and decrements its parent's counter atomically, a cache line both threads fight over.
     Nothing here allocates; the views live no longer than the call."""
     n = c.shape[1]
     V, M, t, code, case, scratch, work, wvec = ws
     cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
     Cs, L, Os = M[0], M[1], M[2]
-    load_vectors(c, base, m, cs)
-    load_matrices(C, base, m, Cs)
-    load_vectors(a, base, m, av)
+    load_vectors(c, m, cs)
+    load_matrices(C, m, Cs)
+    load_vectors(a, m, av)
     for k in range(m):
-        t[STRIP_B + k] = b[base + k]
-        t[LAM_IN + k] = lam_in[base + k] if mode == GIVEN else 0.0  # (B,) in that mode only
+        t[STRIP_B + k] = b[k]
+        t[LAM_IN + k] = lam_in[k] if mode == GIVEN else 0.0  # (B,) in that mode only
     _validate(cs, Cs, av, t, mode, m, L, code, scratch)
     _offsets(cs, av, t, m)
     _project(Cs, av, m, wh, wl, we, t)
@@ -543,7 +545,7 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
         case[k] = ck if code[k] == 0 else INCONSISTENT
         t[CONS + k], t[MID + k], t[HALF + k] = cons, mid, half
         t[GRAM + k], t[GRAM_LO + k], t[RG + k] = g, glo, rg
-    _choose_lam(C, base, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
+    _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
     for k in range(m):
         kh, kl, rk, om = _shape_factor(
             t[GAM + k], t[MID + k], t[HALF + k], t[GRAM + k], t[GRAM_LO + k], t[RG + k]
@@ -563,11 +565,11 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
         t[SH + k], t[SL + k], t[SA + k], t[WIDEN + k] = sh, sl, sa, widen
         t[ALPHA + k], t[BETA + k], t[GAMMA + k] = alpha, beta, gamma
     _member_shape(Cs, wh, wl, we, t, m, Os, hd, ld)
-    _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out)
+    _finish(m, n, code, case, t, cs, Cs, oc, Os, out)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out):
+def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
     """Step 6 and the block's outputs: a lane whose member was not certified falls back to E
     (lambda = 0); a lane with an error or proven disjoint gets zeros and ``empty``."""
     out_c, out_C, code_o, case_o, cons_o, lam_o, empty_o, margin_o = out
@@ -584,22 +586,22 @@ def _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out):
     # One output array per loop (a loop storing to several arrays stays scalar, see
     # ``_member_shape``).
     for k in range(m):
-        code_o[base + k] = code[k]
+        code_o[k] = code[k]
     for k in range(m):
-        case_o[base + k] = case[k]
+        case_o[k] = case[k]
     for k in range(m):
-        empty_o[base + k] = t[kind + k] == OUT_NONE
+        empty_o[k] = t[kind + k] == OUT_NONE
     for k in range(m):
-        cons_o[base + k] = t[CONS + k]
+        cons_o[k] = t[CONS + k]
     for k in range(m):
-        lam_o[base + k] = t[LAM + k]
+        lam_o[k] = t[LAM + k]
     for k in range(m):
-        margin_o[base + k] = t[MARGIN + k]
+        margin_o[k] = t[MARGIN + k]
     # The outputs, selected per lane while they are stored (lanes innermost, as ``_lanes``).
     for i in range(n):
         for k in range(m):
             member, source = oc[i, k], cs[i, k]
-            out_c[base + k, i] = (
+            out_c[k, i] = (
                 member
                 if t[kind + k] == OUT_MEMBER
                 else (source if t[kind + k] == OUT_INPUT else 0.0)
@@ -608,7 +610,7 @@ def _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out):
             r, q = (i, j) if j <= i else (j, i)  # E's shape: its lower triangle
             for k in range(m):
                 member, source = Os[i, j, k], Cs[r, q, k]
-                out_C[base + k, i, j] = (
+                out_C[k, i, j] = (
                     member
                     if t[kind + k] == OUT_MEMBER
                     else (source if t[kind + k] == OUT_INPUT else 0.0)
@@ -617,10 +619,15 @@ def _finish(base, m, n, code, case, t, cs, Cs, oc, Os, out):
 
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
-    """Instances ``start..stop`` block by block."""
+    """Instances ``start..stop`` block by block, each block given views from its first
+    instance (``_lanes``: no wraparound code)."""
     for base in range(start, stop, W):
         m = min(W, stop - base)
-        _fuse_block(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, base, m)
+        lam_b = lam[base:] if mode == GIVEN else lam  # (B,) in that mode only
+        o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:],
+             out[5][base:], out[6][base:], out[7][base:])  # fmt: skip
+        _fuse_block(c[base:], C[base:], a[base:], b[base:], halfspace, clip, mode, lam_b, idx,
+                    steep, midp, o, ws, m)  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
@@ -648,8 +655,10 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, start, stop):
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
     """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller). ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin)."""
-    ws = workspace(c.shape[1])
+    caller), ``ws`` the calling thread's ``workspace(n)``. ``out`` = (centres, shapes, code,
+    case, consistency, lam, empty, margin). Returns the first instance with a non-zero code,
+    or -1."""
     _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)
+    return first_error(out[2], start, stop)

@@ -219,9 +219,12 @@ def minkowski_sum_batch(
     n_batch, n = c1.shape
     out = ellipsoid_outputs(n_batch, n, np.int8, float, float)
     inputs = [_read_only(x) for x in (c1, C1, c2, C2)]  # the kernel's type (minkowski_sum)
-    run_sliced(sum_range, n_batch, *inputs, mode, p, planar, heading, out)
+
+    def add(start: int, stop: int) -> int:
+        return sum_range(*inputs, mode, p, planar, heading, out, start, stop)
+
     out_c, out_C, code, p_used, margin = out
-    bad = np.flatnonzero(code)
-    if bad.size:
-        _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
+    bad = [i for i in run_sliced(add, n_batch) if i >= 0]
+    if bad:
+        _raise(int(code[bad[0]]), bad[0], _NAMES_BATCH, True)
     return MinkowskiBatch(out_c, out_C, 1.0 / (1.0 + p_used), margin)

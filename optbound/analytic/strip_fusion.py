@@ -300,9 +300,14 @@ def intersect_strip_batch(
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
-    run_sliced(fuse_range, n_batch, c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out)
+
+    def fuse(start: int, stop: int) -> int:
+        ws = _threads.workspace(workspace, n)
+        return fuse_range(c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out, ws,
+                          start, stop)  # fmt: skip
+
     out_c, out_C, code, case, cons, lam_used, empty, margin = out
-    bad = np.flatnonzero(code)
-    if bad.size:
-        _raise(int(code[bad[0]]), int(bad[0]), _NAMES_BATCH, True)
+    bad = [i for i in run_sliced(fuse, n_batch) if i >= 0]
+    if bad:
+        _raise(int(code[bad[0]]), bad[0], _NAMES_BATCH, True)
     return StripFusionBatch(out_c, out_C, lam_used, case, cons, empty, margin)

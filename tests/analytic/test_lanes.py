@@ -27,12 +27,12 @@ def _check_batch(c, C, code, L_out, c_out, C_out):
     codes, scratch = np.empty(W, np.int64), np.empty(CHECK_ROWS * W)
     for base in range(0, n_batch, W):
         m = min(W, n_batch - base)
-        load_vectors(c, base, m, cs)
-        load_matrices(C, base, m, Cs)
+        load_vectors(c[base:], m, cs)
+        load_matrices(C[base:], m, Cs)
         check_ellipsoids(cs, Cs, Ls, m, codes, scratch)
-        store_matrices(Ls, base, m, L_out)
-        store_vectors(cs, base, m, c_out)
-        store_matrices(Cs, base, m, C_out)
+        store_matrices(Ls, m, L_out[base:])
+        store_vectors(cs, m, c_out[base:])
+        store_matrices(Cs, m, C_out[base:])
         code[base : base + m] = codes[:m]
 
 
@@ -101,12 +101,12 @@ def _inflate_batch(S, D, c, d, T_out, margin_out, rows):
     cs, ds, margin = np.empty((n, W)), np.empty((n, W)), np.empty(W)
     for base in range(0, n_batch, W):
         m = min(W, n_batch - base)
-        load_matrices(S, base, m, Ss)
-        load_matrices(D, base, m, Ds)
-        load_vectors(c, base, m, cs)
-        load_vectors(d, base, m, ds)
+        load_matrices(S[base:], m, Ss)
+        load_matrices(D[base:], m, Ds)
+        load_vectors(c[base:], m, cs)
+        load_vectors(d[base:], m, ds)
         inflate_lanes(Ss, Ds, cs, ds, Ts, Ls, m, margin, rows)
-        store_matrices(Ts, base, m, T_out)
+        store_matrices(Ts, m, T_out[base:])
         margin_out[base : base + m] = margin[:m]
 
 

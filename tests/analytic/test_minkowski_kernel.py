@@ -265,7 +265,9 @@ def _kernel_batch(c1, C1, c2, C2, mode, p_in):
     inputs = [np.array(x) for x in (c1, C1, c2, C2)]
     for x in inputs:
         x.flags.writeable = False
-    K.sum_range(*inputs, mode, p_in, np.array([0, 1]), np.array([2]), out, 0, B)
+    first = K.sum_range(*inputs, mode, p_in, np.array([0, 1]), np.array([2]), out, 0, B)
+    bad = np.flatnonzero(out[2])
+    assert first == (bad[0] if bad.size else -1)
     return out
 
 

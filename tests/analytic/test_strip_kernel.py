@@ -42,7 +42,11 @@ def _mixed_batch(seed: int, count: int, n: int):
 def _batch(c, C, a, b, lam, halfspace, clip, mode, idx):
     n_batch, n = c.shape
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
-    K.fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, 10.0, 0.5, out, 0, n_batch)
+    ws = K.workspace(n)
+    first = K.fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, 10.0, 0.5, out, ws, 0,
+                         n_batch)  # fmt: skip
+    bad = np.flatnonzero(out[2])
+    assert first == (bad[0] if bad.size else -1)
     return out
 
 

@@ -1,12 +1,16 @@
-"""Batches split over threads give the same bits as one thread, also in a forked child."""
+"""Batches split over threads give the same bits as one thread, also in a forked child; the
+workers return their slices' results in order and raise their errors in the caller."""
 
+import itertools
 import multiprocessing
+import threading
 
 import numpy as np
+import pytest
 
 from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
-from optbound.analytic._threads import MIN_SLICE
+from optbound.analytic._threads import LEAD, MIN_SLICE, run_sliced, slice_bounds
 
 
 def _instances(count: int):
@@ -53,3 +57,53 @@ def test_a_forked_child_runs_sliced_batches():
     got = queue.get(timeout=120)
     child.join(timeout=60)
     assert got == expected
+
+
+@pytest.mark.parametrize("n_batch", [2 * MIN_SLICE, 1000, 10**6 + 7])
+@pytest.mark.parametrize("slices", [2, 3, 8])
+def test_slice_bounds_cover_the_batch_with_the_callers_lead(n_batch, slices):
+    bounds = slice_bounds(n_batch, slices)
+    assert bounds[0] == 0 and bounds[-1] == n_batch and len(bounds) == slices + 1
+    sizes = np.diff(bounds)
+    assert np.all(sizes > 0)
+    assert abs(sizes[0] - LEAD - sizes[1]) <= 1  # the caller's slice: LEAD longer
+    assert np.ptp(sizes[1:]) <= 1
+
+
+def test_run_sliced_returns_the_slices_in_order():
+    n_batch = 4 * MIN_SLICE + 1
+    slices = run_sliced(lambda start, stop: (start, stop, threading.get_ident()), n_batch)
+    assert slices[0][0] == 0 and slices[-1][1] == n_batch
+    assert all(a[1] == b[0] for a, b in itertools.pairwise(slices))
+    assert slices[0][2] == threading.get_ident()  # the caller runs the first slice
+
+
+def test_an_error_in_a_worker_is_raised_in_the_caller_and_the_pool_survives():
+    def call(start, stop):
+        if start > 0:
+            raise ArithmeticError(f"slice {start}")
+        return stop
+
+    n_batch = 2 * MIN_SLICE
+    if len(run_sliced(lambda start, stop: 0, n_batch)) == 1:
+        pytest.skip("one core: no worker")
+    with pytest.raises(ArithmeticError, match="slice"):
+        run_sliced(call, n_batch)
+    assert len(run_sliced(lambda start, stop: stop - start, n_batch)) > 1
+
+
+def test_concurrent_batches_agree_with_sequential_ones():
+    """A batch started while another holds the workers runs alone, with the same bits."""
+    c, C, a, b = _instances(4 * MIN_SLICE)
+    expected = analytic.intersect_strip_batch(c, C, a, b).shapes
+    got = [None] * 4
+
+    def run(k):
+        got[k] = analytic.intersect_strip_batch(c, C, a, b).shapes
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert all(np.array_equal(g, expected) for g in got)
