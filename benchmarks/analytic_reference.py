@@ -11,11 +11,14 @@ vectorize across instances there; ours are laid out so that it does, see
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 from numba import njit
 
 from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
 from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
+from optbound.analytic._spin import post_slices
 from optbound.analytic._strip_lambda import lam_volume
 from optbound.analytic._threads import run_sliced
 
@@ -59,16 +62,19 @@ def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def strip_range(c, C, a, b, out_c, out_C, start, stop):
+def strip_range(c, C, a, b, out_c, out_C, start, stop, posts):
+    """The batch loop on ``start..stop`` (``posts`` as in ``optbound.analytic._threads``)."""
+    post_slices(posts)
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop, posts):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and work space (``optbound.analytic._minkowski_kernel.sum_range``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the float
     member."""
+    post_slices(posts)
     n = c1.shape[1]
     mats, vecs, rows, _, _ = block_work(n, min(W, stop - start))
     C1s, C2s, L1, L2, S = mats[0], mats[1], mats[2], mats[3], mats[4]
@@ -96,14 +102,12 @@ def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
     """The reference strip update of a batch on all cores (the same slices and threads as
     ours), into new arrays as ours returns (their first touch is part of the cost)."""
     out_c, out_C = np.empty(c.shape), np.empty(C.shape)
-    run_sliced(lambda start, stop: strip_range(c, C, a, b, out_c, out_C, start, stop), len(c))
+    run_sliced(partial(strip_range, c, C, a, b, out_c, out_C), len(c))
     return out_c, out_C
 
 
 def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
     """As :func:`strip_batch` for the volume-optimal Minkowski sum."""
     out_c, out_C = np.empty(c1.shape), np.empty(C1.shape)
-    run_sliced(
-        lambda start, stop: minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop), len(c1)
-    )
+    run_sliced(partial(minkowski_range, c1, C1, c2, C2, out_c, out_C), len(c1))
     return out_c, out_C

@@ -142,13 +142,14 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
+    from optbound.analytic._threads import NO_POSTS
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.intersect_strip(E, S),
-        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
+        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1, NO_POSTS),
     )
     return _timings(one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches)
 
@@ -157,6 +158,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
+    from optbound.analytic._threads import NO_POSTS
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
@@ -164,7 +166,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.minkowski_sum(E1, E2),
-        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
+        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1, NO_POSTS),
     )
     inputs = (c1, C1, c2, C2)
     return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches)

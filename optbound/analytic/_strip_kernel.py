@@ -48,6 +48,7 @@ from optbound.analytic._midrad import (
     segment_scale,
     segment_term,
 )
+from optbound.analytic._spin import post_slices
 from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
@@ -655,10 +656,12 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop,
+               posts):  # fmt: skip
     """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller), ``ws`` the calling thread's ``workspace(n)``. ``out`` = (centres, shapes, code,
-    case, consistency, lam, empty, margin). Returns the first instance with a non-zero code,
-    or -1."""
+    caller), ``ws`` the calling thread's ``workspace(n)``, ``posts`` as in ``_threads``.
+    ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin). Returns the
+    first instance with a non-zero code, or -1."""
+    post_slices(posts)
     _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)
     return first_error(out[2], start, stop)

@@ -4,11 +4,18 @@ The kernels release the GIL (``nogil=True``), so plain threads run them truly in
 This is used instead of numba's ``parallel=True``: its OpenMP threads spin between regions,
 and on a shared, oversubscribed machine a batch of 1e3 then took ~30 ms instead of ~0.3 ms.
 
-The worker threads are made once per process and each is handed its slice through two raw
-locks: a ``ThreadPoolExecutor`` round trip (future, queue, condition variable) cost ~17 µs on
-the 2-core test machine, as much as 300 strip updates, the locks ~14 µs (mostly the wake-up of
-an idle core). The calling thread runs a slice itself, and since it starts while the workers
-are still waking up, its slice is the larger one for small batches (``LEAD``).
+The worker threads are made once per process. A slice is handed over through a raw lock and
+a flag: a ``ThreadPoolExecutor`` round trip (future, queue, condition variable) cost ~17 µs on
+the 2-core test machine, as much as 300 strip updates, and most of any handoff through locks
+is the wake-up of a sleeping core. So after each slice a worker polls for the next one for
+~100 µs before it sleeps, and the calling thread, done with its own slice, polls for the
+workers' results (``_spin``); back-to-back batches then never wait for a wake-up. The calling
+thread's slice is the larger one for small batches (``LEAD``): it starts while the workers
+may still be waking up.
+
+A kernel run by ``run_sliced`` is called as ``call(start, stop, posts)`` and must call
+``_spin.post_slices(posts)`` first, once it holds no GIL: that is what tells a polling worker
+that its slice is ready (were it told earlier, it would wait for the GIL, asleep).
 """
 
 from __future__ import annotations
@@ -20,55 +27,71 @@ from collections.abc import Callable
 
 import numpy as np
 
+from optbound.analytic._spin import handoff, wait_for
+
 MIN_SLICE = 256  # no slice is smaller (below 2 MIN_SLICE, one thread: waking costs more)
 LEAD = 64  # the calling thread's head start, in instances (see ``slice_bounds``)
+POLLS = 4000  # polls of a flag before a thread sleeps (~26 ns each on the test machine)
+NO_POSTS = np.zeros((0, 8), np.int64)  # ``posts`` of a kernel that hands no slices over
 _LOCAL = threading.local()
 
 
 class _Worker:
-    """A daemon thread that runs one ``call(start, stop)`` at a time."""
+    """A daemon thread that runs one ``call(start, stop, NO_POSTS)`` at a time. ``post`` is
+    its row of the pool's posts: [0] the number of the last slice handed over (set by the
+    caller's kernel), [1] the number of the slice to hand over next."""
 
-    def __init__(self) -> None:
+    def __init__(self, post: np.ndarray) -> None:
         self._go = _thread.allocate_lock()
         self._go.acquire()
         self._done = _thread.allocate_lock()
         self._done.acquire()
+        self._post = post
+        self._flag = np.zeros(8, np.int64)  # [0]: the number of the last slice done
+        self._jobs = 0
         self._job: tuple | None = None
         self._result: tuple | None = None
         threading.Thread(target=self._serve, name="optbound-worker", daemon=True).start()
 
     def _serve(self) -> None:
+        self._go.acquire()
         while True:
-            self._go.acquire()
-            call, start, stop = self._job
+            call, start, stop, number = self._job
             try:
-                self._result = (call(start, stop), None)
+                self._result = (call(start, stop, NO_POSTS), None)
             except BaseException as exc:  # raised again in the caller
                 self._result = (None, exc)
-            self._done.release()
+            self._done.release()  # before the flag: a caller that saw the flag never blocks
+            handoff(self._flag, number, self._post, number + 1, POLLS)
+            self._go.acquire()  # at once if the next slice was posted (its release came first)
 
     def start(self, call: Callable, start: int, stop: int) -> None:
-        self._job = (call, start, stop)
+        """Hand over a slice: now if the worker sleeps, else when the caller's kernel posts."""
+        self._jobs += 1
+        self._job = (call, start, stop, self._jobs)
+        self._post[1] = self._jobs
         self._go.release()
 
     def join(self) -> tuple:
         """``(result, exception or None)`` of the slice, once done; forgets the batch."""
+        wait_for(self._flag, self._jobs, POLLS)
         self._done.acquire()
         outcome, self._job, self._result = self._result, None, None
         return outcome
 
 
-# (owner pid, workers): a forked child inherits the objects but not their threads.
-_POOL: tuple[int, list[_Worker]] | None = None
+# (owner pid, workers, posts): a forked child inherits the objects but not their threads.
+_POOL: tuple[int, list[_Worker], np.ndarray] | None = None
 _POOL_BUSY = threading.Lock()  # one batch at a time on the workers; a concurrent one runs alone
 
 
-def _workers() -> list[_Worker]:
+def _pool() -> tuple[list[_Worker], np.ndarray]:
     global _POOL
     if _POOL is None or _POOL[0] != os.getpid():
         cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None
-        _POOL = (os.getpid(), [_Worker() for _ in range((cores or os.cpu_count() or 1) - 1)])
-    return _POOL[1]
+        posts = np.zeros(((cores or os.cpu_count() or 1) - 1, 8), np.int64)  # a line per row
+        _POOL = (os.getpid(), [_Worker(post) for post in posts], posts)
+    return _POOL[1], _POOL[2]
 
 
 def slice_bounds(n_batch: int, slices: int) -> list[int]:
@@ -81,20 +104,22 @@ def slice_bounds(n_batch: int, slices: int) -> list[int]:
     return [0, *(LEAD + round(share * k) for k in range(1, slices)), n_batch]
 
 
-def run_sliced(call: Callable[[int, int], object], n_batch: int) -> list:
-    """``call(start, stop)`` on contiguous slices covering ``range(n_batch)``, one per core;
-    returns the slices' results in order. The calling thread runs the first slice."""
-    slices = min(len(_workers()) + 1, n_batch // MIN_SLICE)
+def run_sliced(call: Callable[[int, int, np.ndarray], object], n_batch: int) -> list:
+    """``call(start, stop, posts)`` on contiguous slices covering ``range(n_batch)``, one per
+    core (see the module docstring for ``posts``); returns the slices' results in order. The
+    calling thread runs the first slice."""
+    workers, posts = _pool()
+    slices = min(len(workers) + 1, n_batch // MIN_SLICE)
     if slices <= 1 or not _POOL_BUSY.acquire(blocking=False):
-        return [call(0, n_batch)]
+        return [call(0, n_batch, NO_POSTS)]
     try:
         bounds = slice_bounds(n_batch, slices)
         started = []
         try:
-            for k, worker in enumerate(_workers()[: slices - 1], start=1):
+            for k, worker in enumerate(workers[: slices - 1], start=1):
                 worker.start(call, bounds[k], bounds[k + 1])
                 started.append(worker)
-            mine = call(0, bounds[1])
+            mine = call(0, bounds[1], posts[: len(started)])
         finally:  # never leave a worker holding this batch, even if the caller's slice raised
             outcomes = [worker.join() for worker in started]
     finally:

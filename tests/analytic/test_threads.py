@@ -72,24 +72,24 @@ def test_slice_bounds_cover_the_batch_with_the_callers_lead(n_batch, slices):
 
 def test_run_sliced_returns_the_slices_in_order():
     n_batch = 4 * MIN_SLICE + 1
-    slices = run_sliced(lambda start, stop: (start, stop, threading.get_ident()), n_batch)
+    slices = run_sliced(lambda start, stop, posts: (start, stop, threading.get_ident()), n_batch)
     assert slices[0][0] == 0 and slices[-1][1] == n_batch
     assert all(a[1] == b[0] for a, b in itertools.pairwise(slices))
     assert slices[0][2] == threading.get_ident()  # the caller runs the first slice
 
 
 def test_an_error_in_a_worker_is_raised_in_the_caller_and_the_pool_survives():
-    def call(start, stop):
+    def call(start, stop, posts):
         if start > 0:
             raise ArithmeticError(f"slice {start}")
         return stop
 
     n_batch = 2 * MIN_SLICE
-    if len(run_sliced(lambda start, stop: 0, n_batch)) == 1:
+    if len(run_sliced(lambda start, stop, posts: 0, n_batch)) == 1:
         pytest.skip("one core: no worker")
     with pytest.raises(ArithmeticError, match="slice"):
         run_sliced(call, n_batch)
-    assert len(run_sliced(lambda start, stop: stop - start, n_batch)) > 1
+    assert len(run_sliced(lambda start, stop, posts: stop - start, n_batch)) > 1
 
 
 def test_concurrent_batches_agree_with_sequential_ones():
