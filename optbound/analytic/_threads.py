@@ -9,9 +9,9 @@ a flag: a ``ThreadPoolExecutor`` round trip (future, queue, condition variable) 
 the 2-core test machine, as much as 300 strip updates, and most of any handoff through locks
 is the wake-up of a sleeping core. So after each slice a worker polls for the next one for
 ~100 µs before it sleeps, and the calling thread, done with its own slice, polls for the
-workers' results (``_spin``); back-to-back batches then never wait for a wake-up. The calling
-thread's slice is the larger one for small batches (``LEAD``): it starts while the workers
-may still be waking up.
+workers' results (``_spin``); back-to-back batches then never wait for a wake-up, at the cost
+of up to ~100 µs of a polling core after each batch. The calling thread's slice is the larger
+one for small batches (``LEAD``): it starts while the workers may still be waking up.
 
 A kernel run by ``run_sliced`` is called as ``call(start, stop, posts)`` and must call
 ``_spin.post_slices(posts)`` first, once it holds no GIL: that is what tells a polling worker
@@ -97,9 +97,9 @@ def _pool() -> tuple[list[_Worker], np.ndarray]:
 def slice_bounds(n_batch: int, slices: int) -> list[int]:
     """Bounds of ``slices`` contiguous slices of ``range(n_batch)``, as equal as possible but
     for the first, the calling thread's: it is ``LEAD`` instances longer, since the others
-    start only once their workers are awake (~7 µs on the test machine; what that is worth in
-    instances depends on the kernel, so LEAD is a compromise that matters for small batches
-    only)."""
+    start only once their workers have seen the post (or woken up). What that delay is worth
+    in instances depends on the kernel, so LEAD is a compromise; it matters for small batches
+    only."""
     share = (n_batch - LEAD) / slices
     return [0, *(LEAD + round(share * k) for k in range(1, slices)), n_batch]
 
