@@ -10,7 +10,7 @@ import pytest
 
 from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
-from optbound.analytic._threads import LEAD, MIN_SLICE, run_sliced, slice_bounds
+from optbound.analytic._threads import LEAD, MIN_SLICE, _cache_lines, run_sliced, slice_bounds
 
 
 def _instances(count: int):
@@ -107,3 +107,11 @@ def test_concurrent_batches_agree_with_sequential_ones():
     for thread in threads:
         thread.join()
     assert all(np.array_equal(g, expected) for g in got)
+
+
+def test_flags_fill_cache_lines_of_their_own():
+    lines = _cache_lines(3)
+    assert lines.shape == (3, 8) and lines.flags.c_contiguous
+    assert lines.ctypes.data % 64 == 0
+    assert lines.base.ctypes.data + 64 <= lines.ctypes.data  # padding before
+    assert lines.ctypes.data + lines.nbytes <= lines.base.ctypes.data + lines.base.nbytes
