@@ -16,7 +16,8 @@ least 20 ms (a sustained rate):
 - SDP cost: one SDP solve over one analytic call.
 
 ``python -m benchmarks.speed_analytic [--suite quick]`` prints the ratio table, the JIT
-warm-up (a fresh compile in a subprocess with an empty cache) and the margin distribution.
+warm-up (a fresh compile in a subprocess with an empty cache) and the margin distribution;
+``--phases`` the strip rate at B = 1e3 over 20 s (see :func:`phases`).
 """
 
 from __future__ import annotations
@@ -316,12 +317,41 @@ def jit_warmup() -> float:
     return float(res.stdout.strip().splitlines()[-1])
 
 
+def phases(rng: np.random.Generator, seconds: float = 20.0, count: int = 10**3) -> list:
+    """The strip batch rate over time: (seconds since start, ours, reference) in updates/s,
+    one alternating pair of 40 ms samples after another. On a virtual machine the parallel
+    rate of small batches can change in phases of seconds that no median within one run
+    removes (the host's placement of the vCPUs); this shows them, for ours and the reference
+    alike."""
+    from benchmarks import analytic_reference as ref
+    from optbound import analytic
+
+    c, C, a, b = batch_instances(rng, count, DIM)
+    ours, reference = (
+        lambda: analytic.intersect_strip_batch(c, C, a, b),
+        lambda: ref.strip_batch(c, C, a, b),
+    )
+    rows, start = [], time.perf_counter()
+    while time.perf_counter() - start < seconds:
+        t_ours, t_ref = alternating_calls(ours, reference, repeat=1)
+        rows.append((time.perf_counter() - start, count / t_ours, count / t_ref))
+    return rows
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=tuple(BATCHES), default="full")
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument(
+        "--phases", action="store_true", help="only the strip rate at B = 1e3 over 20 s"
+    )
     args = parser.parse_args(argv)
     rng = np.random.default_rng(args.seed)
+    if args.phases:
+        print("t (s) | strip, B = 1e3, ours | reference")
+        for t, ours, ref in phases(rng):
+            print(f"{t:5.1f} | {ours / 1e6:5.1f} M/s | {ref / 1e6:5.1f} M/s")
+        return
     batches = BATCHES[args.suite]
     print(f"JIT warm-up (fresh compile, empty cache): {jit_warmup():.1f} s\n")
     for what, timings in (
