@@ -523,9 +523,9 @@ def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out
     """Steps 1-6 for the m <= W instances of a block (lane k = instance k of the views c, C,
     a, b, lam_in and out, which start at the block), each step a loop over the lanes
     (``_lanes``). Compiled without numba's reference counting (``_nrt=False``): every view
-    (``V[0]``, ``t[EPS]``, ``C[k]``) otherwise increments
-    and decrements its parent's counter atomically, a cache line both threads fight over.
-    Nothing here allocates; the views live no longer than the call."""
+    (``V[0]``, ``t[EPS]``, ``C[k]``) otherwise increments and decrements its parent's counter
+    atomically, a cache line both threads fight over. Nothing here allocates; the views live
+    no longer than the call."""
     n = c.shape[1]
     V, M, t, code, case, scratch, work, wvec = ws
     cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
