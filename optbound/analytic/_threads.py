@@ -92,14 +92,17 @@ class _Worker:
 # (owner pid, workers, posts): a forked child inherits the objects but not their threads.
 _POOL: tuple[int, list[_Worker], np.ndarray] | None = None
 _POOL_BUSY = threading.Lock()  # one batch at a time on the workers; a concurrent one runs alone
+_POOL_MADE = threading.Lock()  # two threads starting their first batch make one pool
 
 
 def _pool() -> tuple[list[_Worker], np.ndarray]:
     global _POOL
     if _POOL is None or _POOL[0] != os.getpid():
-        cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None
-        posts = _cache_lines((cores or os.cpu_count() or 1) - 1)
-        _POOL = (os.getpid(), [_Worker(post) for post in posts], posts)
+        with _POOL_MADE:
+            if _POOL is None or _POOL[0] != os.getpid():
+                cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None
+                posts = _cache_lines((cores or os.cpu_count() or 1) - 1)
+                _POOL = (os.getpid(), [_Worker(post) for post in posts], posts)
     return _POOL[1], _POOL[2]
 
 
