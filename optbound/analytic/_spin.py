@@ -92,7 +92,7 @@ def publish(flag, value):
 def handoff(flag, value, post, expected, polls):
     """:func:`publish` ``flag[0] = value``, then :func:`wait_for` ``post[0] == expected``: a
     worker's end of one slice and its wait for the next, without taking the GIL between."""
-    _store_release(flag, 0, value)
+    publish(flag, value)
     return wait_for(post, expected, polls)
 
 
