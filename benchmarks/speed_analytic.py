@@ -319,10 +319,10 @@ def jit_warmup() -> float:
 
 def phases(rng: np.random.Generator, seconds: float = 20.0, count: int = 10**3) -> list:
     """The strip batch rate over time: (seconds since start, ours, reference) in updates/s,
-    one alternating pair of 40 ms samples after another. On a virtual machine the parallel
-    rate of small batches can change in phases of seconds that no median within one run
-    removes (the host's placement of the vCPUs); this shows them, for ours and the reference
-    alike."""
+    one :func:`alternating_calls` pair (two samples of >= 20 ms) after another. On a virtual
+    machine the parallel rate of small batches can change in phases of seconds that no median
+    within one run removes (the host's placement of the vCPUs); this shows them, for ours and
+    the reference alike."""
     from benchmarks import analytic_reference as ref
     from optbound import analytic
 
