@@ -127,7 +127,9 @@ class Zonotope(ConvexSet):
         from optbound.sets.zonotope_membership import lp_contains
 
         pts, single = v.points("X", X, self.dim)
-        inside = lp_contains(self._c, self._G, np.zeros((0, self.n_generators)), np.zeros(0), pts, tol)
+        inside = lp_contains(
+            self._c, self._G, np.zeros((0, self.n_generators)), np.zeros(0), pts, tol
+        )
         return bool(inside[0]) if single else inside
 
     def tri_contains(self, boxes) -> np.ndarray:

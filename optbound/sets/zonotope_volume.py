@@ -44,8 +44,10 @@ def exact_volume(G: np.ndarray) -> Fraction:
     n, m = G.shape
     cols = [[Fraction(float(x)) for x in G[:, k]] for k in range(m)]
     total = sum(
-        (abs(_det([list(r) for r in zip(*(cols[k] for k in S), strict=True)]))
-         for S in combinations(range(m), n)),
+        (
+            abs(_det([list(r) for r in zip(*(cols[k] for k in S), strict=True)]))
+            for S in combinations(range(m), n)
+        ),
         Fraction(0),
     )
     return total * 2**n
