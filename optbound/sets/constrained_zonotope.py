@@ -280,9 +280,11 @@ class ConstrainedZonotope(ConvexSet):
         Constraint i is solved for ``xi_j = (b_i - sum_{k != j} a_ik xi_k) / a_ij`` and
         substituted [SRMB, Sect. 4.2, Prop. 5]; dropping ``|xi_j| <= 1`` enlarges the set
         unless the implied range of ``xi_j`` lies in [-1, 1]. The pair (i, j) minimises
-        ``||g_j||_2 * max(0, rho_ij - 1)``, ``rho_ij = (|b_i| + sum_{k != j} |a_ik|) / |a_ij|``
-        the range of ``xi_j`` implied by row i alone (0 when the elimination is exact by that
-        row), ties broken by the larger ``|a_ij|``. Substituted data are enclosed as in the
+        ``||(g_j; a_j)||_2 * max(0, rho_ij - 1)``, ``rho_ij = (|b_i| + sum_{k != j} |a_ik|) /
+        |a_ij|`` the range of ``xi_j`` implied by row i alone (the cost is 0 when the
+        elimination is exact by that row) and ``(g_j; a_j)`` the column of the lifted zonotope
+        of :meth:`reduce_order` whose bound is dropped; ties go to the larger ``|a_ij|``.
+        Substituted data are enclosed as in the
         other operations (error and slack generators), so the result contains the input.
         """
         if isinstance(count, bool) or not isinstance(count, int | np.integer) or count < 0:
@@ -297,7 +299,8 @@ class ConstrainedZonotope(ConvexSet):
         return Z
 
     def _pivot(self) -> tuple[int, int] | None:
-        A, b, G = np.abs(self._A), np.abs(self._b), np.linalg.norm(self._G, axis=0)
+        A, b = np.abs(self._A), np.abs(self._b)
+        G = np.linalg.norm(np.vstack([self._G, self._A]), axis=0)
         best, key = None, None
         for i, j in zip(*np.nonzero(A), strict=True):
             rho = (b[i] + A[i].sum() - A[i, j]) / A[i, j]
