@@ -18,12 +18,14 @@ _jit_cache.refresh()  # before any compiled kernel is loaded from numba's cache
 
 from optbound.sets import (  # noqa: E402
     Box,
+    ConstrainedZonotope,
     ConvexSet,
     Ellipsoid,
     Halfspace,
     PseudoEllipsoid,
     QuadraticSet,
     Strip,
+    Zonotope,
 )
 
 __version__ = "0.1.0"
@@ -33,12 +35,14 @@ SUBMODULES = ("analytic", "compare", "interval", "localization", "optimal", "rep
 
 __all__ = [
     "Box",
+    "ConstrainedZonotope",
     "ConvexSet",
     "Ellipsoid",
     "Halfspace",
     "PseudoEllipsoid",
     "QuadraticSet",
     "Strip",
+    "Zonotope",
     "__version__",
 ]
 
