@@ -16,24 +16,31 @@ into the set itself:
 
 Linear programs are solved by HiGHS in floats and then *certified* by weak duality
 (:func:`max_bound`), evaluated in outward-rounded arithmetic, so a bound returned here holds
-for the exact set whatever the solver's accuracy.
+for the exact set whatever the solver's accuracy. The interval package and scipy are
+imported on first use, so that ``import optbound`` stays light.
 """
 
 from __future__ import annotations
 
-import numpy as np
-from scipy.optimize import linprog
+from typing import TYPE_CHECKING
 
-from optbound.interval import Interval
+import numpy as np
+
+if TYPE_CHECKING:
+    from optbound.interval import Interval
 
 
 def point(x) -> Interval:
     """A float array as a point interval."""
+    from optbound.interval import Interval
+
     return Interval(np.asarray(x, dtype=float))
 
 
 def matmul(M, X) -> Interval:
     """Enclosure of the exact product ``M @ X`` of 2-D float arrays or Intervals."""
+    from optbound.interval import Interval
+
     M = M if isinstance(M, Interval) else point(M)
     X = X if isinstance(X, Interval) else point(X)
     p, q = M.shape
@@ -112,6 +119,8 @@ def max_bound(f_iv: Interval, A: np.ndarray, b: np.ndarray) -> float:
     bound is evaluated in outward-rounded arithmetic, so it holds even if the LP answer is
     inaccurate (a poor ``lam`` only loosens the bound). ``-inf`` only if :func:`proven_empty`.
     """
+    from scipy.optimize import linprog
+
     nc = A.shape[0]
     if nc == 0:
         return float(row_sum_up(magnitude(f_iv)[None, :])[0])
@@ -137,6 +146,8 @@ def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
     dual is ``max lam^T b s.t. ||A^T lam||_1 <= 1``) or, if that LP fails, the least-squares
     residual ``b - A A^+ b``. Both sides are evaluated with outward rounding.
     """
+    from scipy.optimize import linprog
+
     nc, m = A.shape
     if nc == 0:
         return False

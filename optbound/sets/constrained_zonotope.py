@@ -17,11 +17,7 @@ LPs certified by weak duality (:func:`~optbound.sets._certified.max_bound`).
 from __future__ import annotations
 
 import numpy as np
-from scipy.linalg import block_diag
-from scipy.optimize import linprog
 
-from optbound.interval import Interval
-from optbound.interval.tribool import Tri
 from optbound.sets import _validate as v
 from optbound.sets._certified import (
     affine_image,
@@ -182,6 +178,8 @@ class ConstrainedZonotope(ConvexSet):
         """Tri values per box (m, n, 2): FALSE when ``box ∩ CZ`` is proven empty (the box's
         bounding-box test, else a Farkas certificate of the generalized intersection);
         TRUE is not proven for constrained zonotopes, so the others are UNKNOWN."""
+        from optbound.interval.tribool import Tri
+
         B = box_array("boxes", boxes, self.dim)
         out = np.full(B.shape[0], Tri.UNKNOWN, dtype=np.int8)
         try:
@@ -212,6 +210,8 @@ class ConstrainedZonotope(ConvexSet):
 
     def minkowski_sum(self, other) -> ConstrainedZonotope:
         """``CZ + Y`` for a ConstrainedZonotope, Zonotope or Box Y [SRMB, Prop. 1, eq. (6)]."""
+        from scipy.linalg import block_diag
+
         Y = _as_cz("other", other, self.dim)
         c, extra = sum_centers(self._c, Y.center)
         k = extra.shape[1]
@@ -229,6 +229,8 @@ class ConstrainedZonotope(ConvexSet):
         arithmetic; a row that rounds gets a slack generator of the rounding's size, so the
         result contains the exact intersection.
         """
+        from optbound.interval import Interval
+
         R = np.eye(self.dim) if R is None else v.finite_matrix("R", R, (None, self.dim))
         Y = _as_cz("Y", Y, R.shape[0])
         RG = matmul(R, self._G)
@@ -250,6 +252,8 @@ class ConstrainedZonotope(ConvexSet):
     def intersect_strip(self, a, lo, hi) -> ConstrainedZonotope:
         """``CZ ∩ {x : lo <= a^T x <= hi}``: the generalized intersection with ``R = a^T``
         and the 1-D zonotope ``<mid, rad>`` of ``[lo, hi]`` (radius rounded up)."""
+        from optbound.interval import Interval
+
         a = v.finite_vector("a", a, self.dim)
         lo, hi = v.finite_scalar("lo", lo), v.finite_scalar("hi", hi)
         if lo > hi:
@@ -372,6 +376,8 @@ class ConstrainedZonotope(ConvexSet):
         return poly
 
     def _support_point(self, d: np.ndarray) -> np.ndarray | None:
+        from scipy.optimize import linprog
+
         res = linprog(
             -(self._G.T @ d),
             A_eq=self._A if self.n_constraints else None,

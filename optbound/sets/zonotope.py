@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.interval import Interval
 from optbound.sets import _validate as v
 from optbound.sets._certified import (
     affine_image,
@@ -101,6 +100,8 @@ class Zonotope(ConvexSet):
             raise TypeError(f"box must be a Box, got {type(box).__name__}")
         if not box.is_bounded:
             raise ValueError("box must be bounded to be a zonotope")
+        from optbound.interval import Interval
+
         c, r = split(Interval(box.lo, box.hi))
         return cls(c, np.diag(r))
 
@@ -149,6 +150,8 @@ class Zonotope(ConvexSet):
 
     def bounding_box(self) -> Box:
         """The interval hull ``c -+ |G| 1``, rounded outward."""
+        from optbound.interval import Interval
+
         rad = row_sum_up(np.abs(self._G))
         hull = point(self._c) + Interval(-rad, rad)
         return Box(hull.lo, hull.hi)
