@@ -194,3 +194,34 @@ def sum_centers(c1: np.ndarray, c2: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     """Float centre of ``c1 + c2`` and the error generators of its rounding."""
     c, r = split(point(c1) + c2)
     return c, error_generators(r)
+
+
+def compact(G: np.ndarray, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Merge parallel axis-aligned columns of the lifted generators ``(G; A)`` (a superset).
+
+    A constrained zonotope is the slice ``{x : (x, 0) in <(c, -b), (G; A)>}`` of its lifted
+    zonotope [Scott et al. 2016, Sect. 4.2], and columns ``r_1 e_i, r_2 e_i, ...`` of the
+    lifted generators along one lifted axis sum to the single segment ``(|r_1| + |r_2| +
+    ...) e_i`` (rounded up): a free rounding generator of a state row, or a slack of a
+    constraint row. All-zero columns contribute nothing and are dropped. This keeps the
+    rounding generators of a recursion from accumulating (a map's errors merge into the next
+    noise box's generators, a strip's rounding slack into its own slack).
+    """
+    L = np.vstack([G, A])
+    nonzero = L != 0
+    counts = nonzero.sum(axis=0)
+    rows = np.argmax(nonzero, axis=0)
+    drop = counts == 0
+    merged = []
+    for i in range(L.shape[0]):
+        cols = np.flatnonzero((counts == 1) & (rows == i))
+        if cols.size >= 2:
+            merged.append((cols[0], float(row_sum_up(np.abs(L[i, cols])[None, :])[0])))
+            drop[cols[1:]] = True
+    if not drop.any():
+        return G, A
+    L = L.copy()
+    for k, radius in merged:
+        L[rows[k], k] = radius
+    L = L[:, ~drop]
+    return L[: G.shape[0]], L[G.shape[0] :]

@@ -21,6 +21,7 @@ import numpy as np
 from optbound.sets import _validate as v
 from optbound.sets._certified import (
     affine_image,
+    compact,
     enclose,
     error_generators,
     matmul,
@@ -86,6 +87,11 @@ class ConstrainedZonotope(ConvexSet):
         self._A, self._b = _constraints(A, b, self._G.shape[1])
         for arr in (self._c, self._G, self._A, self._b):
             arr.setflags(write=False)
+
+    @classmethod
+    def _compacted(cls, c, G, A, b) -> ConstrainedZonotope:
+        """An operation's result, its free axis-aligned generators merged (``compact``)."""
+        return cls(c, *compact(G, A), b)
 
     @classmethod
     def from_zonotope(cls, Z: Zonotope) -> ConstrainedZonotope:
@@ -199,7 +205,7 @@ class ConstrainedZonotope(ConvexSet):
         A = v.finite_matrix("A", A, (None, self.dim))
         t = None if t is None else v.finite_vector("t", t, A.shape[0])
         c, G, extra = affine_image(self._c, self._G, A, t)
-        return ConstrainedZonotope(
+        return ConstrainedZonotope._compacted(
             c, G, np.hstack([self._A, _zeros(self.n_constraints, extra)]), self._b
         )
 
@@ -215,7 +221,7 @@ class ConstrainedZonotope(ConvexSet):
         Y = _as_cz("other", other, self.dim)
         c, extra = sum_centers(self._c, Y.center)
         k = extra.shape[1]
-        return ConstrainedZonotope(
+        return ConstrainedZonotope._compacted(
             c,
             np.hstack([self._G, Y.generators, extra]),
             np.hstack([block_diag(self._A, Y.A), _zeros(self.n_constraints + Y.n_constraints, k)]),
@@ -247,7 +253,7 @@ class ConstrainedZonotope(ConvexSet):
             ]
         )
         G = np.hstack([self._G, _zeros(self.dim, my + k)])
-        return ConstrainedZonotope(self._c, G, A, np.concatenate([self._b, Y.b, b_new]))
+        return ConstrainedZonotope._compacted(self._c, G, A, np.concatenate([self._b, Y.b, b_new]))
 
     def intersect_strip(self, a, lo, hi) -> ConstrainedZonotope:
         """``CZ ∩ {x : lo <= a^T x <= hi}``: the generalized intersection with ``R = a^T``
@@ -276,7 +282,9 @@ class ConstrainedZonotope(ConvexSet):
                 f"(the lifted box), got order={order} -> {budget}; eliminate constraints first"
             )
         lifted = reduce_generators(np.vstack([self._G, self._A]), budget, method)
-        return ConstrainedZonotope(self._c, lifted[: self.dim], lifted[self.dim :], self._b)
+        return ConstrainedZonotope._compacted(
+            self._c, lifted[: self.dim], lifted[self.dim :], self._b
+        )
 
     def eliminate_constraints(self, count: int = 1) -> ConstrainedZonotope:
         """Remove ``count`` constraints (and one generator each), an outer approximation.
@@ -335,7 +343,7 @@ class ConstrainedZonotope(ConvexSet):
         A_new, b_new, E = relax_rows(A_iv, point(self._b[rows]) - fA * b_i)
         gens, slack = error_generators(r), -error_generators(E)
         nr = A_new.shape[0]
-        return ConstrainedZonotope(
+        return ConstrainedZonotope._compacted(
             c,
             np.hstack([G, gens, _zeros(self.dim, slack.shape[1])]),
             np.hstack([A_new, _zeros(nr, gens.shape[1]), slack]),

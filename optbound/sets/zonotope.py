@@ -14,6 +14,7 @@ import numpy as np
 from optbound.sets import _validate as v
 from optbound.sets._certified import (
     affine_image,
+    compact,
     magnitude,
     matmul,
     point,
@@ -93,6 +94,11 @@ class Zonotope(ConvexSet):
 
     # ------------------------------------------------------------- construction
     @classmethod
+    def _compacted(cls, c: np.ndarray, G: np.ndarray) -> Zonotope:
+        """An operation's result, its free axis-aligned generators merged (``compact``)."""
+        return cls(c, compact(G, np.zeros((0, G.shape[1])))[0])
+
+    @classmethod
     def from_box(cls, box: Box) -> Zonotope:
         """The zonotope ``<mid, diag(rad)>`` of a bounded box (radii rounded up: it contains
         the box exactly)."""
@@ -163,7 +169,7 @@ class Zonotope(ConvexSet):
         A = v.finite_matrix("A", A, (None, self.dim))
         t = None if t is None else v.finite_vector("t", t, A.shape[0])
         c, G, _ = affine_image(self._c, self._G, A, t)
-        return Zonotope(c, G)
+        return Zonotope._compacted(c, G)
 
     def project(self, dims) -> Zonotope:
         """Coordinates ``dims`` of the zonotope (exact: rows are selected, nothing rounds)."""
@@ -179,7 +185,7 @@ class Zonotope(ConvexSet):
             return ConstrainedZonotope.from_zonotope(self).minkowski_sum(other)
         other = as_zonotope("other", other, self.dim)
         c, extra = sum_centers(self._c, other.center)
-        return Zonotope(c, np.hstack([self._G, other.generators, extra]))
+        return Zonotope._compacted(c, np.hstack([self._G, other.generators, extra]))
 
     def intersect_strip(self, a, lo, hi):
         """``Z ∩ {x : lo <= a^T x <= hi}`` as a ConstrainedZonotope (see

@@ -321,3 +321,39 @@ def test_plot_and_conversions():
     patches = C.intersect_strip([1.0, 0.0], -0.5, 0.5).plot(ax)
     assert len(patches) == 1
     plt.close(fig)
+
+
+def _exact_step(c, G, A, b, M, W, a, lo, hi):
+    """One exact observer step (M X + W) ∩ {lo <= a^T x <= hi} on Fraction data."""
+    M = X.exact(M)
+    c = [
+        sum(r * x for r, x in zip(row, c, strict=True)) + w
+        for row, w in zip(M, X.exact(W.center), strict=True)
+    ]
+    G = [mg + list(wg) for mg, wg in zip(matmul(M, G), X.exact(W.generators), strict=True)]
+    m = len(G[0])
+    A = [row + [F(0)] * (m - len(row)) for row in A]
+    a = X.exact(a)
+    aG = [sum(ai * G[i][k] for i, ai in enumerate(a)) for k in range(m)]
+    mid, rad = (F(lo) + F(hi)) / 2, (F(hi) - F(lo)) / 2
+    ac = sum(ai * ci for ai, ci in zip(a, c, strict=True))
+    G = [[*row, F(0)] for row in G]
+    A = [[*row, F(0)] for row in A] + [[*aG, -rad]]
+    return c, G, A, [*b, mid - ac]
+
+
+def test_recursion_is_sound_and_rounding_generators_do_not_accumulate():
+    M = np.array([[0.9, 0.3], [-0.2, 0.8]])
+    W = Zonotope([0.01, 0.0], [[0.1, 0.0, 0.05], [0.0, 0.1, 0.05]])
+    Z = Zonotope([0.3, 0.1], np.eye(2))
+    C = ConstrainedZonotope.from_zonotope(Z)
+    c, G, A, b = X.exact(Z.center), X.exact(Z.generators), [], []
+    for lo, hi in ((-0.3, 0.4), (-0.1, 0.5)):
+        C = C.affine_map(M).minkowski_sum(W).intersect_strip([1.0, -0.5], lo, hi)
+        c, G, A, b = _exact_step(c, G, A, b, M, W, [1.0, -0.5], lo, hi)
+    # exact: 2 + 2 * (3 noise + 1 strip) generators; the rounding ones merged into them
+    assert (C.n_generators, C.n_constraints) == (10, 2)
+    assert X.contains_all(C, X.points(c, G, A, b))
+    for _ in range(10):
+        Z = Z.affine_map(M).minkowski_sum(W)
+    assert Z.n_generators == 2 + 10 * 3
