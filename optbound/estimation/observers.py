@@ -68,6 +68,26 @@ def observe(
 ) -> list:
     """The sets ``[X_1, ..., X_N]`` of observer ``method`` (one of :data:`METHODS`).
 
+    Parameters
+    ----------
+    system : LinearSystem
+        The model.
+    X0 : Box, Zonotope or ConstrainedZonotope
+        The set of ``x_0`` (no measurement at k = 0).
+    ys : array_like, shape (N, p) or (N,) when p = 1
+        ``ys[k-1]`` measures ``x_k``.
+    method : str
+        ``"interval"`` (returns Boxes) or ``"constrained_zonotope"`` (module docstring).
+    order, max_constraints
+        The constrained-zonotope observer's budget: at most ``floor(order * n)`` generators
+        and ``max_constraints`` constraints after each step.
+
+    Returns
+    -------
+    list
+        One set per measurement; each contains the exact set ``X_k`` (guaranteed in floating
+        point, see ``optbound.sets.constrained_zonotope``).
+
     Raises
     ------
     EmptySetError
