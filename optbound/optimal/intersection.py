@@ -53,12 +53,13 @@ from optbound.optimal import _cvx, _small
 from optbound.optimal.certify import certify_lmi
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
-from optbound.optimal.lift import Member, check_clip, lift
+from optbound.optimal.lift import check_clip, lift
 from optbound.optimal.lower import sampled_lower_bound
 from optbound.optimal.result import OuterResult, objective_value
 from optbound.optimal.solver import solve
 from optbound.sets import Ellipsoid, QuadraticSet
 from optbound.sets import _validate as v
+from optbound.sets.base import QuadraticallyDescribed
 
 OBJECTIVES = ("volume", "trace", "projection")
 # Eigenvalues of normalized quadratic parts below this count as zero.
@@ -225,7 +226,7 @@ def _check_dims(objective: str, dims, n: int) -> tuple[int, ...] | None:
 
 
 def outer_ellipsoid(
-    intersection: Sequence[Member],
+    intersection: Sequence[QuadraticallyDescribed],
     objective: str = "volume",
     dims: Sequence[int] | None = None,
     clip: str | bool = "intersection",
@@ -238,8 +239,9 @@ def outer_ellipsoid(
 
     Parameters
     ----------
-    intersection : sequence of Ellipsoid, Strip, Halfspace, Box or QuadraticSet
-        The sets whose intersection is bounded (same dimension n).
+    intersection : sequence of Ellipsoid, Strip, Halfspace, Box, QuadraticSet, ...
+        The sets whose intersection is bounded (same dimension n): any type with a quadratic
+        description (``optbound.sets.base.QuadraticallyDescribed``).
     objective : {"volume", "trace", "projection"}
         Minimise the volume, the trace of the shape matrix, or the volume of the projection
         onto ``dims`` (see the module docstring for the projection derivation).
