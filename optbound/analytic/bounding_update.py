@@ -51,6 +51,9 @@ class BoundingUpdate(BoundResult):
     ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
     """
 
+    set_attribute = "ellipsoid"
+    certified = True
+
     ellipsoid: Ellipsoid | None
     lam: float
     margin: float = 0.0

@@ -54,6 +54,7 @@ class LiftedUpdate(BoundResult):
     As a ``BoundResult``, ``set`` is ``bound``."""
 
     set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid | None
     lam: float

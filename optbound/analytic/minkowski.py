@@ -51,6 +51,9 @@ class MinkowskiResult(BoundResult):
     ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
     """
 
+    set_attribute = "ellipsoid"
+    certified = True
+
     ellipsoid: Ellipsoid
     kappa: float
     margin: float = 0.0

@@ -96,6 +96,9 @@ class StripFusion(BoundResult):
         ``optbound.analytic._midrad``); 0 when E itself is returned.
     """
 
+    set_attribute = "ellipsoid"
+    certified = True
+
     ellipsoid: Ellipsoid | None
     lam: float
     case: str

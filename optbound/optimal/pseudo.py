@@ -55,6 +55,7 @@ class PseudoReference(BoundResult):
     """
 
     set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid
     lower: float

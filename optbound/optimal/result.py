@@ -37,6 +37,8 @@ class OuterResult(BoundResult):
         ellipsoids containing the set (so the reference's own gap is known).
     """
 
+    set_attribute = "ellipsoid"
+
     ellipsoid: Ellipsoid
     objective: float
     status: str

@@ -18,24 +18,33 @@ they share, so that code comparing methods reads one set of names whatever produ
     (0 when none was needed); each result type's docstring says of what (shape or semi-axes).
 
 It lives in ``sets`` so that ``analytic`` and ``optimal`` both import it without depending on
-each other. The subclasses are frozen dataclasses; the defaults below are class attributes that
-a subclass overrides with a field or a property of the same name.
+each other. The subclasses are frozen dataclasses, so the base holds no defaults (a dataclass
+would take a base attribute as the default of a field of the same name): each subclass states
+``set_attribute``, ``certified`` and ``margin`` itself, as a field, a class attribute or a
+property, and a subclass that forgets one is refused when it is defined.
 """
 
 from __future__ import annotations
 
 from typing import Any, ClassVar
 
+REQUIRED = ("set_attribute", "certified", "margin")
+
 
 class BoundResult:
     """Base of the results of every bounding method (module docstring)."""
 
     #: Name of the attribute that holds the bound under its method's own name.
-    set_attribute: ClassVar[str] = "ellipsoid"
-    #: Default for methods whose every returned bound is certified.
-    certified: bool = True
-    #: Default for methods that return the computed member unchanged.
-    margin: float = 0.0
+    set_attribute: ClassVar[str]
+    certified: bool
+    margin: float
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        annotated = set().union(*(vars(k).get("__annotations__", {}) for k in cls.__mro__[:-2]))
+        missing = [name for name in REQUIRED if not hasattr(cls, name) and name not in annotated]
+        if missing:
+            raise TypeError(f"{cls.__name__} must define {', '.join(missing)} (BoundResult)")
 
     @property
     def set(self) -> Any:
