@@ -58,7 +58,7 @@ def _describe(member: QuadraticallyDescribed) -> QuadraticDescription:
     """The member's quadratic description, or a ``ValueError`` naming its type.
 
     The protocol is checked by its two methods directly: ``isinstance`` with a runtime
-    ``Protocol`` costs tens of microseconds per call, more than the rest of the lifting.
+    ``Protocol`` inspects the whole protocol on each call and cost more than the lifting.
     """
     describe = getattr(member, "quadratic_description", None)
     if describe is None or not hasattr(member, "enclosing_ellipsoid"):

@@ -23,8 +23,9 @@ Free (defined here from the required methods; override when a type knows better)
 Optional capabilities (a type implements those its users need)
 --------------------------------------------------------------
 Each is a ``typing.Protocol`` below (``isinstance`` works with them; a consumer on a hot path
-may test for the methods directly, as ``isinstance`` with a runtime protocol costs tens of
-microseconds). A consumer refuses a set without the methods it needs by an error naming them:
+may test for the methods directly instead, as ``isinstance`` with a runtime protocol inspects
+every member of the protocol on each call). ``optbound.optimal`` refuses a member without
+the two methods of :class:`QuadraticallyDescribed` by a ``ValueError`` naming them.
 
 :class:`QuadraticallyDescribed` - the SDP layer (``optbound.optimal``)
     ``quadratic_description() -> QuadraticDescription``: the set written *exactly* as
@@ -33,7 +34,8 @@ microseconds). A consumer refuses a set without the methods it needs by an error
     known to contain the set, or None; the SDP layer clips the other members' linear ranges to
     it (raise :class:`EmptySetError` if the set is found empty). With both, the type works in
     ``optimal.outer_ellipsoid`` and everything built on it.
-:class:`BoxProver` - the paver (``interval.sivia``), soundness proofs, ``optimal.pseudo``
+:class:`BoxProver` - soundness proofs (``optimal.optimal_pseudo_ellipsoid``,
+``localization.relative_bearing``) and pavings of the set (``interval.sivia`` on its box test)
     ``tri_contains(boxes) -> ndarray of int8``: for boxes (m, n, 2) of ``[lo, hi]`` rows,
     ``Tri.TRUE`` where the box is proven inside the set, ``Tri.FALSE`` where proven disjoint,
     ``Tri.UNKNOWN`` otherwise; proven with outward-rounded interval arithmetic
