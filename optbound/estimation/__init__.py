@@ -6,7 +6,7 @@ without reduction) and guaranteed observers (:func:`observe` with a method of
 """
 
 from optbound.estimation.exact import exact_sets
-from optbound.estimation.observers import METHODS, EmptySetError, observe
+from optbound.estimation.observers import METHODS, observe
 from optbound.estimation.system import LinearSystem
 
-__all__ = ["METHODS", "EmptySetError", "LinearSystem", "exact_sets", "observe"]
+__all__ = ["METHODS", "LinearSystem", "exact_sets", "observe"]

@@ -18,14 +18,11 @@ import numpy as np
 
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
+from optbound.sets.base import EmptySetError
 from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
 METHODS = ("interval", "constrained_zonotope")
-
-
-class EmptySetError(ValueError):
-    """The measurements are inconsistent with the model: the estimate is proven empty."""
 
 
 def _contract(lo_x: np.ndarray, hi_x: np.ndarray, C: np.ndarray, lo, hi) -> Box:
@@ -90,7 +87,7 @@ def observe(
 
     Raises
     ------
-    EmptySetError
+    optbound.sets.base.EmptySetError
         If an estimate is proven empty (measurements inconsistent with the model).
     """
     if method not in METHODS:

@@ -33,7 +33,7 @@ from optbound.sets._certified import (
     sum_centers,
 )
 from optbound.sets._domain import real_array
-from optbound.sets.base import ConvexSet
+from optbound.sets.base import ConvexSet, EmptySetError
 from optbound.sets.box import Box
 from optbound.sets.lifting import box_array
 from optbound.sets.zonotope import Zonotope, as_zonotope, center_generators
@@ -170,14 +170,14 @@ class ConstrainedZonotope(ConvexSet):
 
         Raises
         ------
-        ValueError
+        EmptySetError
             If the set is proven empty (it has no bounding box).
         """
         eye = np.eye(self.dim)
         hi = self.support(eye)
         lo = -self.support(-eye)
         if np.any(hi == -np.inf) or np.any(lo == np.inf):
-            raise ValueError("the constrained zonotope is empty: it has no bounding box")
+            raise EmptySetError("the constrained zonotope is empty: it has no bounding box")
         return Box(np.minimum(lo, hi), np.maximum(lo, hi))
 
     def tri_contains(self, boxes) -> np.ndarray:
@@ -190,7 +190,7 @@ class ConstrainedZonotope(ConvexSet):
         out = np.full(B.shape[0], Tri.UNKNOWN, dtype=np.int8)
         try:
             hull = self.bounding_box()
-        except ValueError:
+        except EmptySetError:
             return np.full(B.shape[0], Tri.FALSE, dtype=np.int8)
         apart = np.any((B[:, :, 1] < hull.lo) | (B[:, :, 0] > hull.hi), axis=1)
         out[apart] = Tri.FALSE
@@ -394,6 +394,12 @@ class ConstrainedZonotope(ConvexSet):
             method="highs",
         )
         return None if res.status != 0 else self._c + self._G @ res.x
+
+    def boundary(self, resolution: int = 0) -> np.ndarray:
+        """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
+        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon)."""
+        V = self.vertices()
+        return np.vstack([V, V[:1]])
 
     def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
         """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``

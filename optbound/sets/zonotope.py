@@ -201,11 +201,20 @@ class Zonotope(ConvexSet):
         return Zonotope(self._c, reduce_generators(self._G, budget, method))
 
     # --------------------------------------------------------------------- size
-    def volume_bounds(self, max_subsets: int = 20000) -> tuple[float, float]:
+    def volume_bounds(
+        self, eps: float | None = None, max_subsets: int = 5000
+    ) -> tuple[float, float]:
         """Certified bracket ``lo <= volume <= hi`` (see
-        :func:`~optbound.sets.zonotope_volume.volume_bounds`)."""
+        :func:`~optbound.sets.zonotope_volume.volume_bounds`).
+
+        ``eps`` (the ``VolumeBracket`` protocol's resolution) is unused: the bracket is exact
+        to one float each side when at most ``max_subsets`` n-subsets of generators exist,
+        else the stated sub-zonotope / parallelotope bracket.
+        """
         from optbound.sets.zonotope_volume import volume_bounds
 
+        if isinstance(max_subsets, bool) or not isinstance(max_subsets, int) or max_subsets < 1:
+            raise ValueError(f"max_subsets must be a positive integer, got {max_subsets!r}")
         return volume_bounds(self._G, max_subsets)
 
     # ----------------------------------------------------------------- plotting
@@ -224,6 +233,12 @@ class Zonotope(ConvexSet):
         start = self._c - G.sum(axis=1)
         edges = np.hstack([G, -G]) * 2.0
         return start + np.vstack([np.zeros(2), np.cumsum(edges.T, axis=0)[:-1]])
+
+    def boundary(self, resolution: int = 0) -> np.ndarray:
+        """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
+        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon)."""
+        V = self.vertices()
+        return np.vstack([V, V[:1]])
 
     def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
         """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``

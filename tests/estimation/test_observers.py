@@ -12,6 +12,7 @@ import pytest
 
 from optbound import Box, ConstrainedZonotope, Zonotope
 from optbound import estimation as est
+from optbound.sets.base import EmptySetError
 from tests.sets import exact_polytopes as X
 
 F = Fraction
@@ -145,5 +146,5 @@ def test_inconsistent_measurements_are_reported():
     system = est.LinearSystem(np.eye(2), [1.0, 0.0], W, V)
     X0 = Box([0.0, 0.0], [1.0, 1.0])
     for method in est.METHODS:
-        with pytest.raises(est.EmptySetError):
+        with pytest.raises(EmptySetError):
             est.observe(system, X0, [50.0], method=method)

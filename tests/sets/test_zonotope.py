@@ -301,3 +301,18 @@ def test_plot_draws_the_outline():
     patches = Zonotope([0.0, 0.0, 5.0], [[1.0, 0.5], [0.0, 1.0], [3.0, 3.0]]).plot(ax, color="k")
     assert len(patches) == 1 and patches[0].get_xy().shape[0] == 5  # 4 vertices, closed
     plt.close(fig)
+
+
+def test_protocol_capabilities():
+    from optbound.sets.base import BoxProver, Outlined, VolumeBracket
+
+    Z = Zonotope([0.0, 0.0], [[1.0, 0.5], [0.0, 1.0]])
+    C = ConstrainedZonotope.from_zonotope(Z)
+    for S in (Z, C):
+        assert isinstance(S, BoxProver) and isinstance(S, Outlined)
+        ring = S.boundary(100)
+        assert ring.shape == (5, 2) and ring[0].tolist() == ring[-1].tolist()
+    assert isinstance(Z, VolumeBracket)
+    assert Z.volume_bounds(0.01) == Z.volume_bounds() == (4.0, 4.0)
+    with pytest.raises(ValueError, match="max_subsets must be a positive integer"):
+        Z.volume_bounds(max_subsets=0)
