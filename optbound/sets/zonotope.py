@@ -129,14 +129,20 @@ class Zonotope(ConvexSet):
 
     # ----------------------------------------------------------------- membership
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
-        """Float test of ``x in Z`` per row of ``X``: ``min ||xi||_inf s.t. G xi = x - c`` is
-        at most ``1 + tol`` (one LP per point; use :meth:`tri_contains` for a proof)."""
-        from optbound.sets.zonotope_membership import lp_contains
+        """Float test of ``x in Z`` per row of ``X`` (use :meth:`tri_contains` for a proof).
+
+        In 2-D with spanning generators: ``|n_k^T (x - c)| <= (1 + tol) sum_j |n_k^T g_j|``
+        for every generator normal ``n_k`` (the zonotope's facets), vectorized. Otherwise
+        ``min ||xi||_inf s.t. G xi = x - c`` is at most ``1 + tol`` (one LP per point).
+        """
+        from optbound.sets.zonotope_membership import lp_contains, slab_contains
 
         pts, single = v.points("X", X, self.dim)
-        inside = lp_contains(
-            self._c, self._G, np.zeros((0, self.n_generators)), np.zeros(0), pts, tol
-        )
+        inside = slab_contains(self._c, self._G, pts, tol)
+        if inside is None:
+            inside = lp_contains(
+                self._c, self._G, np.zeros((0, self.n_generators)), np.zeros(0), pts, tol
+            )
         return bool(inside[0]) if single else inside
 
     def tri_contains(self, boxes) -> np.ndarray:

@@ -53,6 +53,18 @@ def lp_contains(
     return inside
 
 
+def slab_contains(c: np.ndarray, G: np.ndarray, pts: np.ndarray, tol: float) -> np.ndarray | None:
+    """Float 2-D test on the facet slabs of the generator normals; None unless the zonotope
+    is a full-dimensional 2-D one (where the slabs intersect to exactly the zonotope)."""
+    if G.shape[0] != 2:
+        return None
+    N, spans = _normals_2d(G)
+    if not spans:
+        return None
+    h = np.abs(N @ G).sum(axis=1)
+    return np.all(np.abs((pts - c) @ N.T) <= (1.0 + tol) * h, axis=1)
+
+
 def _abs_sum(p: Interval) -> Interval:
     """Enclosure of ``sum_k |p_k|`` for a 1-D Interval."""
     acc = point(0.0)
@@ -61,17 +73,24 @@ def _abs_sum(p: Interval) -> Interval:
     return acc
 
 
+def _normals_2d(G: np.ndarray) -> tuple[np.ndarray, bool]:
+    """Normals ``(-g_2, g_1)`` of the non-zero generators (exact in floats) and whether the
+    generators span the plane."""
+    G = G[:, np.any(G != 0, axis=0)]
+    spans = G.shape[1] >= 2 and np.linalg.matrix_rank(G) == 2
+    return np.column_stack([-G[1], G[0]]), bool(spans)
+
+
 def _directions(G: np.ndarray) -> tuple[list[np.ndarray], bool]:
     """Slab directions and whether their slabs intersect to exactly the zonotope."""
     n = G.shape[0]
-    G = G[:, np.any(G != 0, axis=0)]
-    dirs = [np.eye(n)[j] for j in range(n)] + [G[:, k] for k in range(G.shape[1])]
+    nonzero = G[:, np.any(G != 0, axis=0)]
+    dirs = [np.eye(n)[j] for j in range(n)] + list(nonzero.T)
     if n == 1:
         return dirs, True
     if n == 2:
-        normals = [np.array([-g[1], g[0]]) for g in G.T]
-        spans = G.shape[1] >= 2 and np.linalg.matrix_rank(G) == 2
-        return dirs + normals, bool(spans)
+        normals, spans = _normals_2d(G)
+        return dirs + list(normals), spans
     return dirs, False
 
 

@@ -316,3 +316,18 @@ def test_protocol_capabilities():
     assert Z.volume_bounds(0.01) == Z.volume_bounds() == (4.0, 4.0)
     with pytest.raises(ValueError, match="max_subsets must be a positive integer"):
         Z.volume_bounds(max_subsets=0)
+
+
+@given(seeds)
+def test_2d_slab_membership_agrees_with_the_lp(seed):
+    from optbound.sets.zonotope_membership import lp_contains, slab_contains
+
+    rng = np.random.default_rng(seed)
+    Z = random_zonotope(rng, m=int(rng.integers(2, 6)))
+    box = Z.bounding_box()
+    pts = rng.uniform(box.lo, box.hi, size=(30, 2))
+    H = X.hull(X.set_points(Z))
+    exact = [X.in_hull(H, tuple(X.exact(p))) for p in pts]
+    no_constraints = (np.zeros((0, Z.n_generators)), np.zeros(0))
+    assert slab_contains(Z.center, Z.generators, pts, 0.0).tolist() == exact
+    assert lp_contains(Z.center, Z.generators, *no_constraints, pts, 1e-7).tolist() == exact
