@@ -101,27 +101,54 @@ def test_exact_sets_match_an_independent_polygon_computation(seed):
 def test_observers_contain_the_exact_set(seed):
     system, X0, polys, ys = box_noise(seed)
     boxes = est.observe(system, X0, ys, method="interval")
+    zonos = est.observe(system, X0, ys, method="zonotope", order=4.0)
     czs = est.observe(system, X0, ys, method="constrained_zonotope", order=4.0, max_constraints=2)
-    for B, Z, P in zip(boxes, czs, polys, strict=True):
+    for B, Z, C, P in zip(boxes, zonos, czs, polys, strict=True):
         assert all(F(B.lo[i]) <= p[i] <= F(B.hi[i]) for p in P for i in (0, 1))
-        assert Z.n_generators <= 8 and Z.n_constraints <= 2
+        assert isinstance(Z, Zonotope) and Z.n_generators <= 8
         assert X.contains_all(Z, P)
+        assert C.n_generators <= 8 and C.n_constraints <= 2
+        assert X.contains_all(C, P)
+
+
+def test_alamo_gain_is_the_f_radius_minimiser():
+    # For one strip, Alamo's gain minimises ||[(I - lam a^T) G, -s lam]||_F; perturbing it
+    # in any direction can only increase that radius.
+    from optbound.estimation.observers import alamo_strip
+
+    rng = np.random.default_rng(3)
+    Z = Zonotope(rng.normal(size=2), rng.normal(size=(2, 4)))
+    a = rng.normal(size=2)
+    out = alamo_strip(Z, a, -0.3 + a @ Z.center, 0.2 + a @ Z.center)
+    G, s = Z.generators, 0.25
+    lam = out.center - Z.center  # = lam * (mid - a^T c) with mid - a^T c = -0.05
+    lam = lam / -0.05
+
+    def radius(g):
+        return np.linalg.norm(np.hstack([(np.eye(2) - np.outer(g, a)) @ G, -s * g[:, None]]))
+
+    assert np.linalg.norm(out.generators) == pytest.approx(radius(lam), rel=1e-9)
+    for d in rng.normal(size=(8, 2)):
+        assert radius(lam + 1e-3 * d) > radius(lam)
 
 
 def test_alamo_example_first_steps():
     system, X0, polys = alamo()
     czs = est.observe(system, X0, ALAMO_YS, order=4.0)
+    zonos = est.observe(system, X0, ALAMO_YS, method="zonotope", order=4.0)
     boxes = est.observe(system, X0, ALAMO_YS, method="interval")
     exact = est.exact_sets(system, X0, ALAMO_YS[:2])
     for k, P in enumerate(polys):
         assert X.contains_all(czs[k], P)
+        assert X.contains_all(zonos[k], P)
         assert all(F(boxes[k].lo[i]) <= p[i] <= F(boxes[k].hi[i]) for p in P for i in (0, 1))
         if k < 2:
             assert X.contains_all(exact[k], P)
-    # Ordered as containment and the methods' strength imply: exact <= CZ observer < boxes.
+    # Ordered as containment and the methods' strength imply: exact <= zonotopic < boxes.
     area = X.area(polys[-1])
-    cz_area = X.area(X.hull(X.set_points(czs[-1])))
-    assert area <= cz_area < F(boxes[-1].volume())
+    for Z in (czs[-1], zonos[-1]):
+        assert area <= X.area(X.hull(X.set_points(Z))) < F(boxes[-1].volume())
+    assert F(zonos[-1].volume_bounds()[0]) <= X.area(X.hull(X.set_points(zonos[-1])))
 
 
 def test_bad_input_is_refused():
