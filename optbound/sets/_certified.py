@@ -95,8 +95,7 @@ def relax_rows(A_iv: Interval, b_iv: Interval) -> tuple[np.ndarray, np.ndarray, 
     ``b' in b_iv`` satisfies ``|(A xi - b)_k| <= E_k``; the caller adds a slack generator
     ``-E_k`` to row k (only where ``E_k > 0``).
     """
-    A, E = enclose(b_iv, A_iv)[1:]
-    b = split(b_iv)[0]
+    b, A, E = enclose(b_iv, A_iv)
     return A, b, E
 
 
