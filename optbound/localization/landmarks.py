@@ -496,3 +496,23 @@ def pose_paving(
             return paving
         X0 = hull
     return paving
+
+
+# --------------------------------------------------------------- the model contract's verbs
+#: The guaranteed bound of one scan (:mod:`optbound.localization` contract): the (x, y) box.
+localize = linear_position_bound
+#: The paving of the exact pose set.
+exact_paving = pose_paving
+
+__all__ = [
+    "GAUSS_SEIDEL_SWEEPS",
+    "REFINE",
+    "SINGULAR_RTOL",
+    "TWO_PI",
+    "exact_paving",
+    "heading_bound",
+    "linear_position",
+    "linear_position_bound",
+    "localize",
+    "pose_paving",
+]

@@ -42,6 +42,11 @@ class LinearizedResult:
     ellipse: Ellipsoid
     rejected: int
 
+    @property
+    def bound(self) -> Ellipsoid:
+        """The final ellipse, under the name every localization result uses."""
+        return self.ellipse
+
 
 def box_ellipse(box: Box) -> Ellipsoid:
     """The smallest ellipse through the corners of a 2-D box (axis-aligned, half-axes h sqrt 2)."""
@@ -112,4 +117,14 @@ def linearized_localize(
     return LinearizedResult(E, rejected)
 
 
-__all__ = ["LinearizedResult", "box_ellipse", "linearized_localize", "linearized_strip"]
+#: The model contract's verb (:mod:`optbound.localization`); *not* a guaranteed bound.
+localize = linearized_localize
+
+__all__ = [
+    "CRITERIA",
+    "LinearizedResult",
+    "box_ellipse",
+    "linearized_localize",
+    "linearized_strip",
+    "localize",
+]

@@ -466,49 +466,26 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
     return EllipseBracket(sdp.ellipsoid, boxes, best, float(sdp.lower_bound))
 
 
-# ------------------------------------------------------------------------------- instances
-#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
-SECT5_PAIRS = ((2, 0), (0, 1), (1, 2))
-
-
-def bearings(x, landmarks, pairs=SECT5_PAIRS) -> np.ndarray:
-    """Noise-free relative bearings [BH, eq. (2)] seen from the point ``x``."""
+# ------------------------------------------------------------------------------ measurement
+def bearings(x, landmarks, pairs) -> np.ndarray:
+    """Noise-free relative bearings [BH, eq. (2)] of the landmark ``pairs`` seen from ``x``."""
     L = np.asarray(landmarks, dtype=float)
     ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
     return wrap_angle([ang[i] - ang[j] for i, j in pairs])
 
 
-def random_instance(rng: np.random.Generator, pairs=SECT5_PAIRS):
-    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
-
-    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
-    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
-    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
-    need the crescent shape.
-    """
-    pairs = [tuple(p) for p in pairs]
-    margin = np.radians(3.0)
-    while True:
-        L = rng.uniform(-3.0, 3.0, (3, 2))
-        x = rng.uniform(-1.0, 1.0, 2)
-        eps = np.radians(rng.uniform(1.0, 8.0))
-        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
-        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
-            np.linalg.norm(L - x, axis=1)
-        )
-        if min(dists) > 0.3 and np.all(
-            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
-        ):
-            return L, pairs, wrap_angle(gam), eps, x
+#: The model contract's measurement verb (:mod:`optbound.localization`).
+measure = bearings
 
 
 __all__ = [
-    "SECT5_PAIRS",
+    "ORDERS",
     "BearingResult",
     "EllipseBracket",
     "Measurements",
     "Ring",
     "Rings",
+    "all_rings",
     "bearings",
     "best_ellipse",
     "bound_ellipse_quadratics",
@@ -521,9 +498,9 @@ __all__ = [
     "lifted_prior",
     "lifting",
     "localize",
+    "measure",
     "measurements",
     "prior_box",
-    "random_instance",
     "ring_rows",
     "rings",
 ]

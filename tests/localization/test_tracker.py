@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from optbound.localization import office
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.tracker import SetTracker
+from optbound.scenarios import office
 from optbound.sets import Ellipsoid
 
 MAP = LandmarkMap([[5.0, 0.0], [0.0, 5.0], [-5.0, 0.0], [0.0, -5.0]], shapes=np.eye(2) * 0.02**2)

@@ -2,8 +2,9 @@
 
 import numpy as np
 
-from optbound.localization import geometry, office
+from optbound.localization import geometry
 from optbound.localization.geometry import wrap_angle
+from optbound.scenarios import office
 
 
 def test_map_has_22_landmarks_and_partitions():
