@@ -360,7 +360,6 @@ def measure(points, obstacles) -> np.ndarray:
 
 __all__ = [
     "MAX_DEPTH",
-    "as_boxes",
     "luvia",
     "measure",
     "odometry",
