@@ -25,6 +25,9 @@ Three functions, from cheapest to exact:
   ``H`` and ``z`` (preconditioned interval Gauss-Seidel);
 - :func:`pose_paving`: the guaranteed (x, y, psi) set by interval set inversion of the bearing
   equations (the error propagation [HS96, Sect. 3] leaves out of scope).
+
+Under the model contract of :mod:`optbound.localization` the last two are also named
+:func:`localize` and :func:`exact_paving`.
 """
 
 from __future__ import annotations

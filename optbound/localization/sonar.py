@@ -12,6 +12,12 @@ The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_i
 one formula for points and boxes. The heading ``theta`` is an angle: an initial box covering
 a whole turn is widened to contain the true circle, and components that meet across the seam
 ``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
+
+A world is an (s, 2, 2) array of oriented segments; :func:`polygon_walls` builds a room's
+walls from its vertices and :func:`clearance_test` is a "centre inside the room" prior. Under
+the model contract of :mod:`optbound.localization`, :func:`localize` is also
+:func:`exact_paving`, :func:`sonar_tests` is :func:`exact_tests` and :func:`simulate_ranges` is
+:func:`measure`.
 """
 
 from __future__ import annotations
