@@ -7,7 +7,8 @@ Algorithm 3). A "visible" measurement is confronted with the inner characterizat
 "not visible" one with the outer E⁺ [GLH12, Props. 15-16], so that a box is discarded only
 when it contains no position consistent with the true environment E (:func:`luvia`,
 Algorithm 2). :func:`track` (Algorithm 1) alternates interval odometry with a compass and
-LUVIA for every robot.
+LUVIA for every robot. :func:`measure` is the noise-free measurement: the true visibility
+matrix of robots at given points.
 """
 
 from __future__ import annotations
