@@ -23,8 +23,9 @@ It **must** define:
 
   ``localize(data..., ...)``
       One batch of measurements -> the model's bound of the feasible set: a set object
-      (``sets.Box``, ``interval.Paving``) or a frozen result whose ``.bound`` is that set (and
-      which carries the by-products). ``landmarks``, ``relative_bearing``, ``sonar``,
+      (``sets.Box``, ``interval.Paving``) or a frozen result deriving from
+      :class:`optbound.sets.result.BoundResult` (``.set`` the bound, ``.certified`` whether it
+      is guaranteed, plus the by-products). ``landmarks``, ``relative_bearing``, ``sonar``,
       ``linearized_bearing`` (not guaranteed).
   ``exact_paving(data..., X0, eps)``
       An :class:`~optbound.interval.Paving` of the exact feasible set,

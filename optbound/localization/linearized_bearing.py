@@ -30,22 +30,25 @@ from optbound import analytic
 from optbound.localization.geometry import bearing_gradient, bearing_residual
 from optbound.localization.relative_bearing import measurements, prior_box
 from optbound.sets import Box, Ellipsoid, Strip
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "trace")
 
 
 @dataclass(frozen=True)
-class LinearizedResult:
+class LinearizedResult(BoundResult):
     """Result of :func:`linearized_localize`: the final ellipse and the measurements whose
-    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)])."""
+    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)]).
+
+    As a ``BoundResult``: ``set`` is ``ellipse``, never certified (the strips are linearized,
+    module docstring), no margin."""
+
+    set_attribute = "ellipse"
+    certified = False
+    margin = 0.0
 
     ellipse: Ellipsoid
     rejected: int
-
-    @property
-    def bound(self) -> Ellipsoid:
-        """The final ellipse, under the name every localization result uses."""
-        return self.ellipse
 
 
 def box_ellipse(box: Box) -> Ellipsoid:

@@ -44,7 +44,7 @@ problem's own size, so the lifted shapes stay well conditioned.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -54,6 +54,7 @@ from optbound.localization.geometry import bearing_residual, bearing_sides, wrap
 from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
+from optbound.sets.result import BoundResult
 
 ORDERS = (1, 2)
 # Relative outward margin of the prior box and of the prior's lifted shape (rounding cover).
@@ -325,14 +326,26 @@ def lifted_prior(lift: PolynomialLifting, box: Box) -> PseudoEllipsoid:
 
 
 @dataclass(frozen=True)
-class BearingResult:
+class BearingResult(BoundResult):
     """Result of :func:`localize`: the final ``bound`` (None if proven empty), ``steps`` (the
-    bound after each pair), the ``prior`` and the ``lams`` of the ring updates."""
+    bound after each pair), the ``prior``, the ``lams`` and certified ``margins`` of the ring
+    updates.
+
+    As a ``BoundResult``: ``set`` is ``bound``, certified; ``margin`` is the largest relative
+    inflation any ring update applied (``analytic.lifted_update``)."""
+
+    set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid | None
     steps: list[PseudoEllipsoid]
     prior: PseudoEllipsoid
     lams: list[float]
+    margins: list[float] = field(default_factory=list)
+
+    @property
+    def margin(self) -> float:
+        return max(self.margins, default=0.0)
 
 
 def localize(
@@ -384,17 +397,18 @@ def localize(
     scale = float(0.5 * np.max(box.hi - box.lo))
     lift = lifting(order, offset, scale)
     prior = lifted_prior(lift, box)
-    P, steps, lams = prior, [], []
+    P, steps, lams, margins = prior, [], [], []
     for pair_rings in ring_list:
         for ring in pair_rings:
             H, z, V, v_center = ring_rows(ring, order, offset, scale)
             update = lifted_update(P, H, z, V, v_center, criterion=criterion)
             lams.append(update.lam)
+            margins.append(update.margin)
             if update.bound is None:
-                return BearingResult(None, steps, prior, lams)
+                return BearingResult(None, steps, prior, lams, margins)
             P = update.bound
         steps.append(P)
-    return BearingResult(P, steps, prior, lams)
+    return BearingResult(P, steps, prior, lams, margins)
 
 
 # ---------------------------------------------------------------------- containment proof

@@ -15,6 +15,7 @@ import optbound
 import optbound.localization as loc
 from optbound.interval import Paving
 from optbound.sets import Box, Ellipsoid, PseudoEllipsoid
+from optbound.sets.result import BoundResult
 
 MODULES = sorted(
     m.name for m in pkgutil.walk_packages(loc.__path__, prefix="optbound.localization.")
@@ -97,8 +98,13 @@ def test_localize_returns_the_bound_and_exact_paving_a_paving():
     assert isinstance(paving, Paving)
 
     data = bh.sect5_instance()[:4]
-    assert isinstance(rb.localize(*data).bound, PseudoEllipsoid)
-    assert isinstance(linearized_bearing.localize(*data).bound, Ellipsoid)
+    bh_result = rb.localize(*data)
+    assert isinstance(bh_result, BoundResult) and bh_result.certified
+    assert bh_result.set is bh_result.bound and isinstance(bh_result.set, PseudoEllipsoid)
+    assert bh_result.margin == max(bh_result.margins) >= 0.0
+    linearized = linearized_bearing.localize(*data)
+    assert isinstance(linearized, BoundResult) and not linearized.certified
+    assert isinstance(linearized.set, Ellipsoid) and linearized.set is linearized.ellipse
     assert isinstance(rb.exact_paving(*data, [[-0.3, 0.3], [-0.3, 0.3]], 0.05), Paving)
 
 
