@@ -39,6 +39,7 @@ SUBMODULES = (
     "localization",
     "optimal",
     "report",
+    "scenarios",
     "sets",
 )
 
