@@ -52,10 +52,14 @@ REFINE = 3
 # ----------------------------------------------------------------------------- validation
 def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
     """Validate an (N, 2) array of finite real landmark positions."""
-    if np.iscomplexobj(np.asarray(value)):
+    try:
+        arr = np.asarray(value)
+    except ValueError:  # ragged nested sequences
+        raise ValueError(f"{name} must be an (N, 2) array, got rows of different lengths") from None
+    if np.iscomplexobj(arr):
         raise ValueError(f"{name} must be real, got complex values")
     try:
-        arr = np.asarray(value, dtype=float)
+        arr = arr.astype(float)
     except (TypeError, ValueError) as err:
         raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
     arr = v.finite_matrix(name, arr, (None, 2))
@@ -501,6 +505,7 @@ def pose_paving(
     delta = as_bound("delta_alpha", delta_alpha)
     shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
     Lx, Ly = _boxed(L, shapes)
+    given = X0 is not None
     if X0 is None and prior is not None:
         X0 = prior.bounding_box()
     elif X0 is None:
@@ -513,6 +518,8 @@ def pose_paving(
         X0 = Box.from_array(X0)
     if X0.dim != 3 or not X0.is_bounded:
         raise ValueError(f"X0 must be a bounded 3-D box of (x, y, psi), got {X0}")
+    if given and not np.all(X0.widths > 0.0):
+        raise ValueError(f"X0 must have a positive width on every axis, got widths {X0.widths}")
     ks = _windows(X0.lo[2], X0.hi[2], a)
     test = [_bearing_test(L, shapes, a, delta, ks)]
     if prior is not None:

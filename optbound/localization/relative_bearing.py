@@ -425,8 +425,15 @@ def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving)
 
     Boxes not proven inside at once (boundary boxes stick out of the exact set by up to their
     width) are bisected, and sub-boxes the exact tests prove disjoint from the set are dropped
-    (``PseudoEllipsoid.prove_covers``).
+    (``PseudoEllipsoid.prove_covers``). Raises ``TypeError`` naming an argument of another type.
     """
+    for name, value, kind in (
+        ("bound", bound, PseudoEllipsoid),
+        ("data", data, Measurements),
+        ("paving", paving, Paving),
+    ):
+        if not isinstance(value, kind):
+            raise TypeError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
     return bound.prove_covers(paving.outer(), exact_test(data))
 
 

@@ -10,6 +10,8 @@ eqs. (19)-(20)] with the compiled outward-rounded interval operations of
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 from numba import njit
 
@@ -21,8 +23,10 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
     """Validate a list of polygons, each a (k, 2) array of k >= 3 finite real vertices.
 
     Raises ``TypeError`` if ``polygons`` is not a list/tuple, ``ValueError`` naming ``name``
-    for a wrong shape, non-finite or complex coordinates, or repeated consecutive vertices.
-    An empty list is valid (an environment without obstacles).
+    for a wrong shape, non-finite or complex coordinates, repeated consecutive vertices, or a
+    polygon that is not simple (:func:`_check_simple`): a solid obstacle needs a boundary
+    that does not cross itself and encloses some area. An empty list is valid (an
+    environment without obstacles).
     """
     if isinstance(polygons, np.ndarray) or not isinstance(polygons, list | tuple):
         raise TypeError(f"{name} must be a list of (k, 2) vertex arrays, got {type(polygons)}")
@@ -35,8 +39,32 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
             raise ValueError(f"{name}[{j}] must be finite")
         if np.any(np.all(arr == np.roll(arr, -1, axis=0), axis=1)):
             raise ValueError(f"{name}[{j}] has a zero-length edge (repeated vertex)")
+        _check_simple(arr, f"{name}[{j}]")
         out.append(arr)
     return out
+
+
+def _check_simple(poly: np.ndarray, name: str) -> None:
+    """Raise unless no two non-adjacent edges meet (certified) and the area is not zero (exact).
+
+    Edges are tested with the compiled interval ``intersect`` [GLH12, eq. (19)]; a pair that
+    rounding cannot separate counts as meeting. The area is the shoelace sum in Fractions.
+    """
+    k = poly.shape[0]
+    a, b = _edge_boxes(poly)
+    lo, _ = intersect_boxes(a, b, a, b)
+    i, j = np.triu_indices(k, 2)
+    keep = (j - i) % k != k - 1  # edges 0 and k - 1 are adjacent too
+    meet = lo[i[keep], j[keep]] <= 0.0
+    if np.any(meet):
+        e1, e2 = i[keep][meet][0], j[keep][meet][0]
+        raise ValueError(
+            f"{name} is self-intersecting: its edges {e1} and {e2} meet (or are too close to "
+            "tell); an obstacle must be a simple polygon"
+        )
+    v = [(Fraction(float(x)), Fraction(float(y))) for x, y in poly]
+    if sum(v[n][0] * v[n - 1][1] - v[n - 1][0] * v[n][1] for n in range(k)) == 0:
+        raise ValueError(f"{name} has zero area (its vertices are collinear)")
 
 
 def pack_polygons(polygons: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
