@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from optbound.interval._compiled import imul, isub
-from optbound.localization.geometry.primitives import real_array
+from optbound.localization.geometry.primitives import intersect, real_array, side
 
 
 def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
@@ -45,26 +45,38 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
 
 
 def _check_simple(poly: np.ndarray, name: str) -> None:
-    """Raise unless no two non-adjacent edges meet (certified) and the area is not zero (exact).
+    """Raise unless no two non-adjacent edges meet and the area is not zero, decided exactly.
 
-    Edges are tested with the compiled interval ``intersect`` [GLH12, eq. (19)]; a pair that
-    rounding cannot separate counts as meeting. The area is the shoelace sum in Fractions.
+    The compiled interval ``intersect`` [GLH12, eq. (19)] clears most edge pairs at once; the
+    pairs it cannot separate (meeting, touching, collinear or close) are decided with
+    :func:`~.primitives.intersect` in Fractions. The area is the shoelace sum in Fractions.
     """
     k = poly.shape[0]
     a, b = _edge_boxes(poly)
     lo, _ = intersect_boxes(a, b, a, b)
     i, j = np.triu_indices(k, 2)
     keep = (j - i) % k != k - 1  # edges 0 and k - 1 are adjacent too
-    meet = lo[i[keep], j[keep]] <= 0.0
-    if np.any(meet):
-        e1, e2 = i[keep][meet][0], j[keep][meet][0]
-        raise ValueError(
-            f"{name} is self-intersecting: its edges {e1} and {e2} meet (or are too close to "
-            "tell); an obstacle must be a simple polygon"
-        )
     v = [(Fraction(float(x)), Fraction(float(y))) for x, y in poly]
+    for e1, e2 in zip(i[keep], j[keep], strict=True):
+        if lo[e1, e2] <= 0.0 and _segments_meet(v[e1], v[(e1 + 1) % k], v[e2], v[(e2 + 1) % k]):
+            raise ValueError(
+                f"{name} is self-intersecting: its edges {e1} and {e2} meet; an obstacle must "
+                "be a simple polygon"
+            )
     if sum(v[n][0] * v[n - 1][1] - v[n - 1][0] * v[n][1] for n in range(k)) == 0:
         raise ValueError(f"{name} has zero area (its vertices are collinear)")
+
+
+def _segments_meet(p1, p2, p3, p4) -> bool:
+    """Do the closed segments meet? Exact for Fraction points (collinear: extents overlap)."""
+    if intersect(p1, p2, p3, p4) > 0:
+        return False
+    if side(p1, p3, p4) == 0 and side(p2, p3, p4) == 0:
+        return all(
+            max(min(p1[c], p2[c]), min(p3[c], p4[c])) <= min(max(p1[c], p2[c]), max(p3[c], p4[c]))
+            for c in (0, 1)
+        )
+    return True
 
 
 def pack_polygons(polygons: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
