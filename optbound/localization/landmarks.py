@@ -248,8 +248,9 @@ def _pair_equations(Lx: Interval, Ly: Interval, alphas: np.ndarray, delta: float
     gamma = Interval(alphas[j]) - Interval(alphas[i]) + err
     sin_g = np.sin(gamma)
     usable = (sin_g.lo > 0.0) | (sin_g.hi < 0.0)
-    i, j, gamma = i[usable], j[usable], gamma[usable]
-    c = _cot(gamma)
+    c = _cot(gamma[usable])
+    finite = np.isfinite(c.lo) & np.isfinite(c.hi)  # sin at an end point may round to 0
+    i, j, c = i[usable][finite], j[usable][finite], c[finite]
     xi, yi, xj, yj = Lx[i], Ly[i], Lx[j], Ly[j]
     u, w = (yi - yj, xj - xi), (xi + xj, yi + yj)
     return c, u, w, xi * xj + yi * yj, xj * yi - yj * xi

@@ -58,7 +58,8 @@ def visibility_test(boxes1, boxes2, obstacles) -> np.ndarray:
         (m, 2, 2) arrays of position boxes, ``[[x_lo, x_hi], [y_lo, y_hi]]`` per row
         (degenerate boxes are points).
     obstacles
-        List of polygons, each a (k, 2) array of vertices (closed solid sets); pass E⁻ or E⁺.
+        List of simple polygons of non-zero area, each a (k, 2) array of vertices (closed
+        solid sets); pass E⁻ or E⁺.
 
     Returns
     -------
