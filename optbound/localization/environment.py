@@ -150,3 +150,6 @@ def _erode(poly: np.ndarray, r: float) -> np.ndarray | None:
     if not np.all(_cross(out) > 0) or not polygon_inside(out, poly):
         return None
     return out
+
+
+__all__ = ["Environment"]

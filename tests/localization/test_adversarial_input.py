@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
-from optbound.localization import arena
 from optbound.localization import relative_bearing as rb
 from optbound.localization import visibility as v
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position, pose_paving
 from optbound.localization.tracker import SetTracker
+from optbound.scenarios import arena
 from optbound.sets import Ellipsoid
 
 L4 = np.array([[4.0, 0.0], [0.0, 4.0], [-4.0, -1.0], [1.0, -5.0]])
