@@ -1,0 +1,204 @@
+"""Does a bound contain a set? ``prove_contains`` answers proven, refuted or undecided.
+
+A proof is never drawn from samples. It is one of
+
+- a closed-form containment checked in exact arithmetic (an ellipsoid or a box inside an
+  ellipsoid or a box, :mod:`optbound.compare.exact`);
+- for a set known through a paving (``inner ⊂ X ⊂ inner ∪ boundary`` [LJMW97, eq. (11)]):
+  every inner and boundary box proven inside the bound by its interval test
+  (:mod:`optbound.compare.tri`). Boxes not proven at once are bisected; a sub-box is dropped
+  when the set's own test (``member``) proves it disjoint from the set, as in
+  ``PseudoEllipsoid.prove_covers``.
+
+A refutation is a **counterexample**: a float point ``x`` that the set's test proves to be in
+the set (``member(x) == TRUE``, or a point of an inner box) and that the bound excludes, in
+exact arithmetic for optbound's set types, by the bound's own ``contains`` for other objects.
+Otherwise the answer is undecided.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from optbound.compare import exact
+from optbound.compare.tri import point_test, tri_contains, tri_test
+from optbound.interval import Interval, Paving, Tri
+from optbound.sets import Box, Ellipsoid, Halfspace, PseudoEllipsoid, Strip
+from optbound.sets.pseudo_ellipsoid import _bisect
+
+#: Bisection rounds spent on boxes not proven inside at once.
+ROUNDS = 8
+#: Stop bisecting (undecided) beyond this many pending boxes.
+MAX_PENDING = 200_000
+#: Candidate points checked exactly for a counterexample (after a float pre-filter).
+MAX_EXACT_CHECKS = 32
+
+OWN_TYPES = (Box, Ellipsoid, Strip, Halfspace, PseudoEllipsoid, Paving)
+STATUSES = ("proven", "refuted", "undecided")
+
+
+@dataclass(frozen=True)
+class Containment:
+    """Outcome of :func:`prove_contains`.
+
+    Attributes
+    ----------
+    status : {"proven", "refuted", "undecided"}
+    counterexample : np.ndarray or None
+        For "refuted": a float point of the set that the bound excludes.
+    method : str
+        How the answer was reached (e.g. "exact", "paving", "points").
+    """
+
+    status: str
+    counterexample: np.ndarray | None
+    method: str
+
+
+def prove_contains(outer, inner, *, member: Callable | None = None) -> Containment:
+    """Prove or refute ``inner ⊂ outer``.
+
+    Parameters
+    ----------
+    outer
+        The bound: an optbound set, a ``Paving`` (its ``inner ∪ boundary``), or an object with
+        ``dim`` and ``tri_contains(boxes)`` and/or a vectorized ``contains(X)``.
+    inner
+        The set: an optbound ``Box`` / ``Ellipsoid`` (closed-form proof), or a ``Paving`` of it.
+    member : callable, optional
+        The set's three-valued test on ``Interval`` coordinates (e.g. ``Problem.test``); with
+        a paving it lets boundary boxes be trimmed and their points serve as counterexamples.
+
+    Returns
+    -------
+    Containment
+
+    Raises
+    ------
+    TypeError
+        If ``inner`` is neither a Box, an Ellipsoid nor a Paving, or ``outer`` has neither
+        an interval test nor ``contains``.
+    ValueError
+        If the dimensions differ.
+    """
+    outer = getattr(outer, "ellipsoid", outer)
+    dim = getattr(outer, "dim", None)
+    if dim != inner.dim:
+        raise ValueError(f"outer has dimension {dim}, inner has {inner.dim}")
+    if isinstance(inner, (Box, Ellipsoid)):
+        if exact.contains_set(outer, inner):
+            return Containment("proven", None, "exact")
+        return Containment("undecided", None, "exact")
+    if not isinstance(inner, Paving):
+        raise TypeError(f"inner must be a Box, an Ellipsoid or a Paving, got {type(inner)}")
+    if inner.is_empty:
+        return Containment("proven", None, "paving")
+    provable = isinstance(outer, OWN_TYPES) or callable(getattr(outer, "tri_contains", None))
+    if not provable and not callable(getattr(outer, "contains", None)):
+        raise TypeError(f"outer has neither tri_contains nor contains: {type(outer).__name__}")
+    leftover = np.empty((0, dim, 2))
+    if provable:
+        found = _cover(outer, inner, member)
+        if isinstance(found, Containment):
+            return found
+        leftover = found
+    x = _counterexample(outer, inner, member, leftover)
+    if x is not None:
+        return Containment("refuted", x, "points")
+    return Containment("undecided", None, "paving" if provable else "points")
+
+
+def _cover(outer, inner: Paving, member) -> Containment | np.ndarray:
+    """Box proof; returns a Containment when decided, else the boxes left undecided."""
+    test = tri_test(outer)
+    boxes = inner.outer()
+    t = tri_contains(outer, boxes)
+    n_inner = inner.inner.shape[0]
+    bad = np.flatnonzero(t[:n_inner] == Tri.FALSE)
+    for i in bad[:MAX_EXACT_CHECKS]:
+        x = _midpoint(inner.inner[i])
+        if _excluded(outer, x[None, :])[0]:
+            return Containment("refuted", x, "paving")
+    pending = boxes[t != Tri.TRUE]
+    for _ in range(ROUNDS):
+        if pending.shape[0] == 0 or member is None or pending.shape[0] > MAX_PENDING:
+            break
+        pending = _bisect(pending)
+        coords = [Interval(pending[:, j, 0], pending[:, j, 1]) for j in range(pending.shape[1])]
+        inside = np.asarray(test(*coords))
+        in_set = np.asarray(member(*coords))
+        for i in np.flatnonzero((in_set == Tri.TRUE) & (inside == Tri.FALSE))[:MAX_EXACT_CHECKS]:
+            x = _midpoint(pending[i])
+            if _is_member(member, x) and _excluded(outer, x[None, :])[0]:
+                return Containment("refuted", x, "paving")
+        pending = pending[(in_set != Tri.FALSE) & (inside != Tri.TRUE)]
+    if pending.shape[0] == 0:
+        return Containment("proven", None, "paving")
+    return pending
+
+
+def _counterexample(outer, inner: Paving, member, leftover: np.ndarray) -> np.ndarray | None:
+    """A point of the set that ``outer`` excludes, among the centres and corners of the inner
+    boxes (points of the set) and the centres of the boxes left undecided (tested by member)."""
+    B = inner.inner
+    candidates = [np.concatenate([0.5 * (B[:, :, 0] + B[:, :, 1]), B[:, :, 0], B[:, :, 1]])]
+    known = candidates[0].shape[0]
+    if member is not None:
+        for boxes in (leftover, inner.boundary):
+            candidates.append(0.5 * (boxes[:, :, 0] + boxes[:, :, 1]))
+    X = np.concatenate(candidates)
+    out = np.flatnonzero(_excluded(outer, X, prefilter_only=True))
+    checked = 0
+    for i in out:
+        if checked >= MAX_EXACT_CHECKS:
+            break
+        x = X[i]
+        if i >= known and not _is_member(member, x):
+            continue
+        checked += 1
+        if _excluded(outer, x[None, :])[0]:
+            return x
+    return None
+
+
+def _is_member(member, x: np.ndarray) -> bool:
+    return bool(point_test(member, x[None, :])[0] == Tri.TRUE)
+
+
+def _excluded(outer, X: np.ndarray, prefilter_only: bool = False) -> np.ndarray:
+    """Whether each point is outside ``outer``: exactly for optbound's types (an interval
+    pre-filter, then rational arithmetic unless ``prefilter_only``), else by ``contains``."""
+    if isinstance(outer, OWN_TYPES):
+        out = point_test(tri_test(outer), X) != Tri.TRUE
+        if prefilter_only:
+            return out
+        return np.array(
+            [bool(o) and not exact.member(outer, x) for o, x in zip(out, X, strict=True)]
+        )
+    if callable(getattr(outer, "contains", None)):
+        return ~checked_contains(outer, X)
+    return point_test(tri_test(outer), X) == Tri.FALSE
+
+
+def checked_contains(S, X: np.ndarray) -> np.ndarray:
+    """``S.contains(X)`` for a user object, checked to be one boolean per point.
+
+    Raises
+    ------
+    ValueError
+        If ``contains`` returns anything but ``m`` booleans (NaN included).
+    """
+    got = np.asarray(S.contains(X))
+    if got.shape != (X.shape[0],) or got.dtype != np.bool_:
+        raise ValueError(
+            f"contains(X) must return {X.shape[0]} booleans for X of shape {X.shape}, got "
+            f"dtype {got.dtype} and shape {got.shape}"
+        )
+    return got
+
+
+def _midpoint(box: np.ndarray) -> np.ndarray:
+    return 0.5 * (box[:, 0] + box[:, 1])
