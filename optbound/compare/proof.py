@@ -31,8 +31,8 @@ from optbound.sets.pseudo_ellipsoid import _bisect
 
 #: Bisection rounds spent on boxes not proven inside at once.
 ROUNDS = 8
-#: Stop bisecting (undecided) beyond this many pending boxes.
-MAX_PENDING = 200_000
+#: Most boxes the bisection tests (beyond, the answer is undecided).
+MAX_TESTED = 100_000
 #: Candidate points checked exactly for a counterexample (after a float pre-filter).
 MAX_EXACT_CHECKS = 32
 
@@ -99,66 +99,72 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
     provable = isinstance(outer, OWN_TYPES) or callable(getattr(outer, "tri_contains", None))
     if not provable and not callable(getattr(outer, "contains", None)):
         raise TypeError(f"outer has neither tri_contains nor contains: {type(outer).__name__}")
-    leftover = np.empty((0, dim, 2))
-    if provable:
-        found = _cover(outer, inner, member)
-        if isinstance(found, Containment):
-            return found
-        leftover = found
-    x = _counterexample(outer, inner, member, leftover)
-    if x is not None:
-        return Containment("refuted", x, "points")
-    return Containment("undecided", None, "paving" if provable else "points")
-
-
-def _cover(outer, inner: Paving, member) -> Containment | np.ndarray:
-    """Box proof; returns a Containment when decided, else the boxes left undecided."""
-    test = tri_test(outer)
+    if not provable:
+        x = _counterexample(outer, inner.inner, inner.boundary, member)
+        return Containment("undecided", None, "points") if x is None else _refuted(x, "points")
     boxes = inner.outer()
     t = tri_contains(outer, boxes)
-    n_inner = inner.inner.shape[0]
-    bad = np.flatnonzero(t[:n_inner] == Tri.FALSE)
-    for i in bad[:MAX_EXACT_CHECKS]:
-        x = _midpoint(inner.inner[i])
-        if _excluded(outer, x[None, :])[0]:
-            return Containment("refuted", x, "paving")
     pending = boxes[t != Tri.TRUE]
+    if pending.shape[0] == 0:
+        return Containment("proven", None, "paving")
+    # Cheap first: points of the set (inner boxes, boundary centres) that the bound excludes.
+    x = _counterexample(outer, inner.inner, inner.boundary, member)
+    if x is not None:
+        return _refuted(x, "points")
+    found = _bisection(outer, pending, member)
+    if isinstance(found, Containment):
+        return found
+    x = _counterexample(outer, found[:0], found, member)
+    return Containment("undecided", None, "paving") if x is None else _refuted(x, "paving")
+
+
+def _refuted(x: np.ndarray, method: str) -> Containment:
+    return Containment("refuted", x, method)
+
+
+def _bisection(outer, pending: np.ndarray, member) -> Containment | np.ndarray:
+    """Bisect the boxes not proven inside ``outer``, dropping sub-boxes ``member`` proves
+    disjoint from the set; a sub-box proven in the set and outside ``outer`` refutes. Returns
+    a Containment when decided, else the boxes left (within :data:`MAX_TESTED` box tests)."""
+    test = tri_test(outer)
+    tested = 0
     for _ in range(ROUNDS):
-        if pending.shape[0] == 0 or member is None or pending.shape[0] > MAX_PENDING:
+        if pending.shape[0] == 0 or member is None or tested + 2 * pending.shape[0] > MAX_TESTED:
             break
         pending = _bisect(pending)
+        tested += pending.shape[0]
         coords = [Interval(pending[:, j, 0], pending[:, j, 1]) for j in range(pending.shape[1])]
         inside = np.asarray(test(*coords))
         in_set = np.asarray(member(*coords))
         for i in np.flatnonzero((in_set == Tri.TRUE) & (inside == Tri.FALSE))[:MAX_EXACT_CHECKS]:
             x = _midpoint(pending[i])
             if _is_member(member, x) and _excluded(outer, x[None, :])[0]:
-                return Containment("refuted", x, "paving")
+                return _refuted(x, "paving")
         pending = pending[(in_set != Tri.FALSE) & (inside != Tri.TRUE)]
     if pending.shape[0] == 0:
         return Containment("proven", None, "paving")
     return pending
 
 
-def _counterexample(outer, inner: Paving, member, leftover: np.ndarray) -> np.ndarray | None:
-    """A point of the set that ``outer`` excludes, among the centres and corners of the inner
-    boxes (points of the set) and the centres of the boxes left undecided (tested by member)."""
-    B = inner.inner
-    candidates = [np.concatenate([0.5 * (B[:, :, 0] + B[:, :, 1]), B[:, :, 0], B[:, :, 1]])]
-    known = candidates[0].shape[0]
+def _counterexample(outer, inner: np.ndarray, other: np.ndarray, member) -> np.ndarray | None:
+    """A point of the set that ``outer`` excludes, or None.
+
+    Candidates: the centres and corners of ``inner`` boxes (proven in the set) and, given
+    ``member``, the centres of ``other`` boxes. A candidate counts only if ``member`` proves
+    it in the set (when given) and ``outer`` excludes it (exactly for optbound's types).
+    """
+    X = np.concatenate(
+        [
+            0.5 * (inner[:, :, 0] + inner[:, :, 1]),
+            inner[:, :, 0],
+            inner[:, :, 1],
+            *([0.5 * (other[:, :, 0] + other[:, :, 1])] if member is not None else []),
+        ]
+    )
+    X = X[_excluded(outer, X, prefilter_only=True)]
     if member is not None:
-        for boxes in (leftover, inner.boundary):
-            candidates.append(0.5 * (boxes[:, :, 0] + boxes[:, :, 1]))
-    X = np.concatenate(candidates)
-    out = np.flatnonzero(_excluded(outer, X, prefilter_only=True))
-    checked = 0
-    for i in out:
-        if checked >= MAX_EXACT_CHECKS:
-            break
-        x = X[i]
-        if i >= known and not _is_member(member, x):
-            continue
-        checked += 1
+        X = X[point_test(member, X) == Tri.TRUE]
+    for x in X[:MAX_EXACT_CHECKS]:
         if _excluded(outer, x[None, :])[0]:
             return x
     return None
