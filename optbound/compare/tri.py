@@ -12,8 +12,8 @@ if the point provably lies in ``S``. One test per set type:
   bounds the quadratic form without trusting a float inverse [BH, eq. (10)]
   (:meth:`~optbound.sets.PseudoEllipsoid.tri_test`);
 - ``PseudoEllipsoid``: its own ``tri_test``;
-- ``Paving``: TRUE for a box inside one inner box, FALSE for a box disjoint from every inner
-  and boundary box;
+- ``Paving`` (as a bound it claims ``inner ∪ boundary``): TRUE for a box inside one of those
+  boxes, FALSE for a box disjoint from all of them;
 - any other object with ``tri_contains(boxes)`` (boxes ``(m, n, 2)``): that method.
 """
 
@@ -29,6 +29,8 @@ from optbound.interval.tribool import as_tri, from_masks
 from optbound.sets import Box, Ellipsoid, Halfspace, PolynomialLifting, PseudoEllipsoid, Strip
 
 Test = Callable[..., np.ndarray]
+#: Box pairs compared at once by the test of a Paving (bounds memory).
+_PAIRS = 2_000_000
 
 
 def tri_test(S) -> Test:
@@ -113,17 +115,24 @@ def _linear_test(a: np.ndarray, b: float, floor: float | None) -> Test:
 
 
 def _paving_test(P: Paving) -> Test:
-    inner, outer = P.inner, P.outer()
+    """As a bound, a paving claims ``inner ∪ boundary``: a box inside one of those boxes is
+    TRUE, a box disjoint from all of them FALSE (compared in chunks to bound memory)."""
+    outer = P.outer()
+    chunk = max(1, _PAIRS // max(1, outer.shape[0]))
 
     def test(*coords) -> np.ndarray:
-        lo = np.stack([np.atleast_1d(x.lo) for x in coords], axis=-1)[:, None, :]
-        hi = np.stack([np.atleast_1d(x.hi) for x in coords], axis=-1)[:, None, :]
-        inside = np.any(
-            np.all((lo >= inner[None, :, :, 0]) & (hi <= inner[None, :, :, 1]), axis=2), axis=1
-        )
-        meets = np.any(
-            np.all((hi >= outer[None, :, :, 0]) & (lo <= outer[None, :, :, 1]), axis=2), axis=1
-        )
+        lo = np.stack([np.atleast_1d(x.lo) for x in coords], axis=-1)
+        hi = np.stack([np.atleast_1d(x.hi) for x in coords], axis=-1)
+        inside = np.zeros(lo.shape[0], dtype=bool)
+        meets = np.zeros(lo.shape[0], dtype=bool)
+        for start in range(0, lo.shape[0], chunk):
+            a, b = lo[start : start + chunk, None, :], hi[start : start + chunk, None, :]
+            inside[start : start + chunk] = np.any(
+                np.all((a >= outer[None, :, :, 0]) & (b <= outer[None, :, :, 1]), axis=2), axis=1
+            )
+            meets[start : start + chunk] = np.any(
+                np.all((b >= outer[None, :, :, 0]) & (a <= outer[None, :, :, 1]), axis=2), axis=1
+            )
         return from_masks(inside, ~meets)
 
     return test

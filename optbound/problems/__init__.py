@@ -18,7 +18,8 @@ Families: ``strip`` (ellipsoid ∩ strip) so far; each family module defines
 from __future__ import annotations
 
 from optbound.problems import strip
-from optbound.problems.evaluate import Evaluation, evaluate
+from optbound.problems.audit import evaluate
+from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
