@@ -25,7 +25,7 @@ from optbound.compare.exact import determinant, fractions
 from optbound.compare.tri import tri_test
 from optbound.interval import Paving, pave
 from optbound.interval.paving import box_volumes
-from optbound.sets import Box, Ellipsoid, PseudoEllipsoid
+from optbound.sets import Box, Ellipsoid, PseudoEllipsoid, Strip
 
 #: Unit roundoff of float64.
 _U = np.finfo(float).eps / 2
@@ -112,26 +112,86 @@ def paving_volume_bracket(P: Paving) -> tuple[float, float]:
 
 
 def ellipsoid_volume_bracket(E: Ellipsoid) -> tuple[float, float]:
-    """``vol(B_n) sqrt(det C)`` with ``det C`` exact and the rest in mpmath interval arithmetic.
+    """``vol(B_n) sqrt(det C)`` with ``det C`` exact and the rest in mpmath interval arithmetic."""
+    return _floats(_ball_volume(E.dim) * _iv_sqrt(determinant(fractions(E.shape))))
 
-    ``vol(B_n) = pi^(n/2) / Gamma(n/2 + 1)``: ``pi^k / k!`` for ``n = 2k`` and
-    ``2^n pi^k k! / n!`` for ``n = 2k + 1``.
+
+def ellipsoid_strip_volume_bracket(E: Ellipsoid, S: Strip) -> tuple[float, float]:
+    """Certified volume bracket of ``E ∩ S`` (closed form, no paving).
+
+    With ``x = c + L y`` the ellipsoid is the unit ball and the strip the slab
+    ``u_lo <= w^T y <= u_hi`` (``w`` a unit vector, ``u = (a^T x - a^T c) / sqrt(a^T C a)``).
+    Slicing the ball across ``w`` gives (n-1)-balls of radius ``sqrt(1 - u^2)``, so
+
+        vol(E ∩ S) = sqrt(det C) vol(B_{n-1}) [I_{n-1}(u_hi) - I_{n-1}(u_lo)],
+
+    ``I_m`` an antiderivative of ``(1 - u^2)^(m/2)`` (``u`` clipped to [-1, 1]), by the recursion
+    ``I_m(u) = u (1 - u^2)^(m/2) / (m + 1) + m / (m + 1) I_{m-2}(u)``, ``I_0 = u``,
+    ``I_{-1} = asin u``. ``a^T C a``, ``a^T c`` and ``det C`` are exact rationals; the rest is
+    mpmath interval arithmetic, and ``I_m`` is increasing, so evaluating it on the interval
+    enclosures of ``u_lo`` and ``u_hi`` bounds the difference.
     """
     from mpmath import iv
 
+    if E.dim == 1:
+        raise ValueError("ellipsoid_strip_volume_bracket needs dimension >= 2")
+    a, c = fractions(S.a), fractions(E.center)
+    C = fractions(E.shape)
     n = E.dim
-    det = determinant(fractions(E.shape))
+    aCa = sum(a[i] * C[i][j] * a[j] for i in range(n) for j in range(n))
+    ac = sum(ai * ci for ai, ci in zip(a, c, strict=True))
+    h = _iv_sqrt(aCa)
+    b = Fraction(S.b)
+    u_lo, u_hi = (_iv_rational(b - 1 - ac) / h), (_iv_rational(b + 1 - ac) / h)
+    upper, lower = _antiderivative(n - 1, u_hi), _antiderivative(n - 1, u_lo)
+    width = iv.mpf([max(upper.a - lower.b, 0), max(upper.b - lower.a, 0)])
+    return _floats(_iv_sqrt(determinant(C)) * _ball_volume(n - 1) * width)
+
+
+def _antiderivative(m: int, u):
+    """An enclosure of ``I_m`` (see :func:`ellipsoid_strip_volume_bracket`) over the interval
+    ``u`` clipped to [-1, 1]."""
+    from mpmath import iv
+
+    u = iv.mpf([min(max(u.a, -1), 1), min(max(u.b, -1), 1)])
+    rest = 1 - u * u
+    rest = iv.mpf([max(rest.a, 0), max(rest.b, 0)])
+    root = iv.sqrt(rest)
+    value = u if m % 2 == 0 else iv.atan2(u, root)  # I_0 = u, I_{-1} = asin u
+    power = iv.mpf(1) if m % 2 == 0 else root  # (1 - u^2)^(j/2), j = m % 2 (+2 per step)
+    for j in range(2 - m % 2, m + 1, 2):
+        power = power * rest
+        value = u * power / (j + 1) + iv.mpf(j) / (j + 1) * value
+    return value
+
+
+def _ball_volume(n: int):
+    """``vol(B_n)`` as an mpmath interval: ``pi^k / k!`` (n = 2k), ``2^n pi^k k! / n!`` (2k+1)."""
+    from mpmath import iv
+
     k = n // 2
     ball = Fraction(1, factorial(k)) if n % 2 == 0 else Fraction(2**n * factorial(k), factorial(n))
-    # Interval arithmetic at any working precision encloses the exact value.
-    value = (
-        iv.pi**k
-        * (iv.mpf(ball.numerator) / iv.mpf(ball.denominator))
-        * iv.sqrt(iv.mpf(det.numerator) / iv.mpf(det.denominator))
+    return iv.pi**k * _iv_rational(ball)
+
+
+def _iv_rational(q: Fraction):
+    from mpmath import iv
+
+    return iv.mpf(q.numerator) / iv.mpf(q.denominator)
+
+
+def _iv_sqrt(q: Fraction):
+    from mpmath import iv
+
+    return iv.sqrt(_iv_rational(q))
+
+
+def _floats(value) -> tuple[float, float]:
+    """An mpmath interval as floats; float() rounds to nearest, so one step outward each end."""
+    return (
+        max(float(np.nextafter(float(value.a), -np.inf)), 0.0),
+        float(np.nextafter(float(value.b), np.inf)),
     )
-    lo, hi = float(value.a), float(value.b)
-    # float() rounds to nearest: one step outward makes each end a bound of the exact value.
-    return float(np.nextafter(lo, 0.0)), float(np.nextafter(hi, np.inf))
 
 
 def _domain_box(domain, dim: int) -> Box:

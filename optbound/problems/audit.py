@@ -5,7 +5,8 @@ wrong dimension or NaN is an error row and the run goes on). Its set is then mea
 audited against the exact set of the problem:
 
 - **size**: a certified bracket of its volume (:func:`optbound.compare.size_bracket`),
-  the exact set's bracket (the paving's inner and outer volumes [LJMW97, eq. (11)]), their
+  the exact set's bracket (:meth:`Problem.volume_bracket`: a closed form where the family
+  has one, else the paving's inner and outer volumes [LJMW97, eq. (11)]), their
   ratio bracket ``[size_lo / exact_hi, size_hi / exact_lo]`` and the ratio bracket to each
   reference bound of :meth:`Problem.references`;
 - **soundness**: ``"proven"`` (a closed-form exact proof that the set contains a superset
@@ -26,7 +27,7 @@ import numpy as np
 
 from optbound.compare.metrics import ratio_bracket
 from optbound.compare.proof import OWN_TYPES, prove_contains
-from optbound.compare.size import paving_volume_bracket, size_bracket
+from optbound.compare.size import size_bracket
 from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 from optbound.sets import Box
@@ -143,7 +144,7 @@ def _as_set(answer, dim: int):
 def _audit(S, p: Problem) -> dict:
     """Size brackets, ratio brackets and soundness of ``S`` on ``p``."""
     paving = p.exact()
-    exact = paving_volume_bracket(paving)
+    exact = p.volume_bracket()
     out: dict[str, Any] = {"exact_lo": exact[0], "exact_hi": exact[1]}
     size = _size(S, p)
     if size is not None:

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from optbound.compare.size import paving_volume_bracket
 from optbound.compare.tri import point_test
 from optbound.interval import Paving, pave
 from optbound.sets import Box
@@ -48,6 +49,9 @@ class Problem:
         one of them is proven sound in closed form (e.g. the prior ellipsoid).
     intersection : tuple
         Sets whose intersection is the true set (the SDP reference's input).
+    volume : callable or None
+        ``volume() -> (lo, hi)``: a closed-form certified bracket of the true set's volume,
+        where the family has one (else the exact paving's bracket is used).
     """
 
     family: str
@@ -61,6 +65,7 @@ class Problem:
     eps: float = field(repr=False)
     supersets: tuple = field(default=(), repr=False)
     intersection: tuple = field(default=(), repr=False)
+    volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
 
     def member(self, X) -> np.ndarray:
@@ -85,6 +90,13 @@ class Problem:
         if key not in self._cache:
             self._cache[key] = pave(self.test, self.domain, eps)
         return self._cache[key]
+
+    def volume_bracket(self) -> tuple[float, float]:
+        """Certified ``(lo, hi)`` bracket of the true set's volume: the family's closed form,
+        else the exact paving's inner and outer volumes (rounded outward)."""
+        if self.volume is not None:
+            return self.volume()
+        return paving_volume_bracket(self.exact())
 
     def references(self) -> dict[str, Any]:
         """Reference bounds of the true set, all certified to contain it.

@@ -4,15 +4,18 @@ The instances of the benchmark family of the same name, with its seeds: a random
 (dimension 2-6, condition number 1-1e6) cut by a strip that is narrow, wide, off-centre or
 partial (only one plane cuts: in effect a half-space) [HS96, Sect. 4]. The estimator gets
 ``data = {"ellipsoid": E, "strip": S}``: the prior set and the measurement. The true set is
-``E ∩ S``, described once by the conjunction of the two sets' interval tests.
+``E ∩ S``, described once by the conjunction of the two sets' interval tests; its volume
+has a closed form (:func:`~optbound.compare.size.ellipsoid_strip_volume_bracket`).
 """
 
 from __future__ import annotations
 
 import itertools
+from functools import partial
 
 import numpy as np
 
+from optbound.compare.size import ellipsoid_strip_volume_bracket
 from optbound.compare.tri import as_pseudo_ellipsoid, tri_test
 from optbound.interval import tri_and
 from optbound.problems._random import STRIP_KINDS, random_ellipsoid, random_strip, task_seeds
@@ -71,6 +74,7 @@ def problem(task: dict) -> Problem:
         eps=float(np.max(domain.widths)) * RELATIVE_EPS[E.dim],
         supersets=(E,),
         intersection=(E, S),
+        volume=partial(ellipsoid_strip_volume_bracket, E, S),
     )
 
 

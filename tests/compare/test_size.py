@@ -8,10 +8,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from optbound import Box, Ellipsoid, PseudoEllipsoid
+from optbound import Box, Ellipsoid, PseudoEllipsoid, Strip
 from optbound.compare import size_bracket, tri_contains, volume_ratio, volume_ratio_bracket
-from optbound.compare.tri import as_pseudo_ellipsoid
-from optbound.interval import sivia
+from optbound.compare.size import ellipsoid_strip_volume_bracket
+from optbound.compare.tri import as_pseudo_ellipsoid, tri_test
+from optbound.interval import pave, sivia, tri_and
 from optbound.sets import PolynomialLifting
 from tests.strategies import ellipsoids
 
@@ -98,3 +99,32 @@ def test_ratios_on_mixed_pairs():
     assert p_lo <= volume_ratio(paving, E) <= p_hi
     with pytest.raises(ValueError, match="different dimensions"):
         volume_ratio(box, Ellipsoid([0.0], [[1.0]]))
+
+
+def test_ellipsoid_strip_volume_closed_form():
+    ball = Ellipsoid(np.zeros(3), np.eye(3))
+    # A cap of height 0.5 of the unit ball: pi h^2 (3 - h) / 3 with h = 1/2.
+    lo, hi = ellipsoid_strip_volume_bracket(ball, Strip.from_bounds([0.0, 0.0, 1.0], 0.5, 5.0))
+    assert lo <= np.pi * 0.25 * 2.5 / 3 <= hi and hi - lo < 1e-14
+    disc = Ellipsoid(np.zeros(2), np.eye(2))
+    lo, hi = ellipsoid_strip_volume_bracket(disc, Strip.from_bounds([1.0, 0.0], -2.0, 2.0))
+    assert lo <= np.pi <= hi
+    lo, hi = ellipsoid_strip_volume_bracket(disc, Strip.from_bounds([1.0, 0.0], 3.0, 4.0))
+    assert lo == 0.0 and hi < 1e-15  # a strip missing the disc
+
+
+@given(ellipsoids(min_dim=2, max_dim=4), st.floats(-0.9, 0.5), st.floats(0.1, 1.0))
+def test_ellipsoid_strip_closed_form_lies_in_the_paving_bracket(E, u_lo, width):
+    d = np.ones(E.dim) / np.sqrt(E.dim)
+    lo_x, hi_x = E.extent(d)
+    mid, half = 0.5 * (lo_x + hi_x), 0.5 * (hi_x - lo_x)
+    S = Strip.from_bounds(d, mid + half * u_lo, mid + half * (u_lo + width))
+    tests = (tri_test(E), tri_test(S))
+    paving = pave(
+        lambda *c: tri_and(*(t(*c) for t in tests)),
+        as_pseudo_ellipsoid(E).bounding_box(),
+        float(np.max(E.bounding_box().widths)) / 16,
+    )
+    p_lo, p_hi = size_bracket(paving)
+    lo, hi = ellipsoid_strip_volume_bracket(E, S)
+    assert p_lo <= hi and lo <= p_hi
