@@ -205,6 +205,7 @@ def _draw_brackets(ax, rows: list[dict]) -> None:
         color = {"proven": "C2", "refuted": "C3"}.get(r["soundness"], "0.5")
         hi = r["ratio_hi"] if np.isfinite(r["ratio_hi"]) else 10 * max(r["ratio_lo"], 1.0)
         ax.plot([r["ratio_lo"], hi], [k, k], "-", color=color, linewidth=3)
+        ax.plot([r["ratio_lo"], hi], [k, k], "|", color=color, markersize=8)  # narrow brackets
     ax.axvline(1.0, color="k", linewidth=0.8)
     ax.set_xscale("log")
     ax.set_xlabel("size / exact size (certified bracket)")
