@@ -14,7 +14,14 @@ from typing import Any
 
 import numpy as np
 
-#: Keys of every row, in table order.
+#: Keys of every row, in table order. ``size_*``: certified volume bracket of the returned set
+#: (None for a set known only by ``contains``); ``exact_*``: the true set's
+#: (:meth:`Problem.volume_bracket`); ``ratio_*``: ``[size_lo / exact_hi, size_hi / exact_lo]``,
+#: and the same against each reference bound; ``soundness``: "proven" / "refuted" /
+#: "undecided" (None on error rows); ``counterexample``: list of floats or None; ``method``:
+#: how soundness was decided ("exact", "paving", "points"); ``seconds``: the estimator's call;
+#: ``audit_seconds``: everything else for that problem (the exact paving and the references
+#: are computed once per problem and shared by later estimators); ``error``: None or message.
 COLUMNS = (
     "estimator",
     "family",
