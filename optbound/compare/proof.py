@@ -33,6 +33,8 @@ from optbound.sets.pseudo_ellipsoid import _bisect
 ROUNDS = 8
 #: Most boxes the bisection tests (beyond, the answer is undecided).
 MAX_TESTED = 100_000
+#: Random points drawn in undecided boxes when looking for a counterexample.
+SAMPLES = 4096
 #: Candidate points checked exactly for a counterexample (after a float pre-filter).
 MAX_EXACT_CHECKS = 32
 
@@ -150,17 +152,21 @@ def _counterexample(outer, inner: np.ndarray, other: np.ndarray, member) -> np.n
     """A point of the set that ``outer`` excludes, or None.
 
     Candidates: the centres and corners of ``inner`` boxes (proven in the set) and, given
-    ``member``, the centres of ``other`` boxes. A candidate counts only if ``member`` proves
-    it in the set (when given) and ``outer`` excludes it (exactly for optbound's types).
+    ``member``, the centres of ``other`` boxes and :data:`SAMPLES` seeded random points in
+    them (a refutation may come from samples; a proof never does). A candidate counts only if
+    ``member`` proves it in the set (when given) and ``outer`` excludes it (exactly for
+    optbound's types).
     """
-    X = np.concatenate(
-        [
-            0.5 * (inner[:, :, 0] + inner[:, :, 1]),
-            inner[:, :, 0],
-            inner[:, :, 1],
-            *([0.5 * (other[:, :, 0] + other[:, :, 1])] if member is not None else []),
+    candidates = [0.5 * (inner[:, :, 0] + inner[:, :, 1]), inner[:, :, 0], inner[:, :, 1]]
+    if member is not None and other.shape[0]:
+        rng = np.random.default_rng(0)
+        picked = other[rng.integers(0, other.shape[0], SAMPLES)]
+        u = rng.random(picked.shape[:2])
+        candidates += [
+            0.5 * (other[:, :, 0] + other[:, :, 1]),
+            picked[:, :, 0] + u * (picked[:, :, 1] - picked[:, :, 0]),
         ]
-    )
+    X = np.concatenate(candidates)
     X = X[_excluded(outer, X, prefilter_only=True)]
     if member is not None:
         X = X[point_test(member, X) == Tri.TRUE]
