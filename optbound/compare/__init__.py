@@ -5,6 +5,7 @@ and :func:`prove_contains` proves or refutes (with a counterexample) that a boun
 set. Pure numpy/scipy/mpmath (no cvxpy), so reports can compare bounds without the SDP stack.
 """
 
+from optbound.compare._ellipsoid import bound_set
 from optbound.compare.containment import contains, max_level
 from optbound.compare.metrics import (
     log_volume_ratio,
@@ -20,6 +21,7 @@ from optbound.compare.tri import tri_contains, tri_test
 
 __all__ = [
     "Containment",
+    "bound_set",
     "contains",
     "log_volume_ratio",
     "max_level",

@@ -14,14 +14,14 @@ from math import exp, log
 
 import numpy as np
 
-from optbound.compare._ellipsoid import as_ellipsoid, same_dim
+from optbound.compare._ellipsoid import as_ellipsoid, bound_set, same_dim
 from optbound.compare.size import size_bracket
 from optbound.sets import Box, Ellipsoid
 
 
 def _sized(name: str, S, **paving):
     """``S`` (or its ``.ellipsoid``) and its certified volume bracket."""
-    S = getattr(S, "ellipsoid", S)
+    S = bound_set(S)
     try:
         return S, size_bracket(S, **paving)
     except TypeError as err:
@@ -36,7 +36,7 @@ def _dims_agree(A, B) -> None:
 def log_volume_ratio(A, B, *, eps: float | None = None, domain=None) -> float:
     """``log(vol A / vol B)``: exact formula for ellipsoids and boxes, else the midpoint (in
     log) of :func:`volume_ratio_bracket` (``eps``, ``domain``: its paving's parameters)."""
-    A, B = getattr(A, "ellipsoid", A), getattr(B, "ellipsoid", B)
+    A, B = bound_set(A), bound_set(B)
     closed = (Ellipsoid, Box)
     if isinstance(A, closed) and isinstance(B, closed):
         _dims_agree(A, B)

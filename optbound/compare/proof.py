@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.compare import exact
+from optbound.compare._ellipsoid import bound_set
 from optbound.compare.tri import point_test, tri_contains, tri_test
 from optbound.interval import Interval, Paving, Tri
 from optbound.sets import Box, Ellipsoid, Halfspace, PseudoEllipsoid, Strip
@@ -86,7 +87,7 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
     ValueError
         If the dimensions differ.
     """
-    outer = getattr(outer, "ellipsoid", outer)
+    outer = bound_set(outer)
     dim = getattr(outer, "dim", None)
     if dim != inner.dim:
         raise ValueError(f"outer has dimension {dim}, inner has {inner.dim}")

@@ -21,6 +21,7 @@ from math import factorial
 
 import numpy as np
 
+from optbound.compare._ellipsoid import bound_set
 from optbound.compare.exact import determinant, fractions
 from optbound.compare.tri import tri_test
 from optbound.interval import Paving, pave
@@ -56,7 +57,7 @@ def size_bracket(S, *, eps: float | None = None, domain=None) -> tuple[float, fl
     ValueError
         If a user object is given without ``domain``, or the domain's dimension differs.
     """
-    S = getattr(S, "ellipsoid", S)
+    S = bound_set(S)
     if isinstance(S, Box):
         return box_volume_bracket(S)
     if isinstance(S, Ellipsoid):

@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from optbound.compare import bound_set
 from optbound.compare.metrics import ratio_bracket
 from optbound.compare.proof import OWN_TYPES, prove_contains
 from optbound.compare.size import size_bracket
@@ -127,9 +128,9 @@ def _as_set(answer, dim: int):
     """The estimator's answer as a set of dimension ``dim``, or an EstimatorError."""
     if answer is None:
         raise EstimatorError("the estimator returned None, not a set")
-    S = getattr(answer, "ellipsoid", answer)
+    S = bound_set(answer)
     if S is None:
-        raise EstimatorError(f"the estimator returned {type(answer).__name__} with ellipsoid None")
+        raise EstimatorError(f"the estimator returned a {type(answer).__name__} holding no set")
     is_set = isinstance(S, OWN_TYPES) or (
         callable(getattr(S, "contains", None)) or callable(getattr(S, "tri_contains", None))
     )

@@ -142,6 +142,18 @@ def test_user_objects_contains_only_and_tri_contains():
     assert tri["size_hi"] < np.inf
 
 
+def test_result_objects_are_read_through_their_set():
+    from optbound import analytic
+
+    def volume_update(p):
+        return analytic.intersect_strip(p.data["ellipsoid"], p.data["strip"], criterion="volume")
+
+    result = problems.evaluate(volume_update, TINY)
+    for r, S in zip(result.rows, result.sets, strict=True):
+        assert r["error"] is None and isinstance(S, Ellipsoid)
+        assert r["soundness"] in ("proven", "undecided")  # sound: never refuted
+
+
 def test_paving_and_pseudo_ellipsoid_answers():
     rows = problems.evaluate(lambda q: q.exact(), TINY[:1]).rows
     assert rows[0]["soundness"] == "proven"
