@@ -9,6 +9,7 @@ The n-dimensional volume (area in 2-D) of any set, read as the exact set its flo
   arithmetic, so the bracket is a few ulps wide;
 - ``PseudoEllipsoid``: its paving's ``volume_bounds`` [BH, eq. (10)];
 - ``Paving``: ``(vol inner, vol inner + vol boundary)`` [LJMW97, eq. (11)], rounded outward;
+- any object with ``volume_bounds(eps)`` (the set protocol's ``VolumeBracket``): that bracket;
 - any object with ``dim`` and ``tri_contains(boxes)``: a SIVIA paving of its indicator over
   ``domain``; if the paving reaches the border of ``domain`` the set may extend beyond it and
   the upper end is ``inf``.
@@ -40,9 +41,9 @@ def size_bracket(S, *, eps: float | None = None, domain=None) -> tuple[float, fl
     Parameters
     ----------
     S
-        An optbound set (``Box``, ``Ellipsoid``, ``PseudoEllipsoid``), a ``Paving``, or an
-        object with ``dim`` and ``tri_contains(boxes)``; a result carrying one of these in
-        ``.ellipsoid`` is accepted too.
+        An optbound set (``Box``, ``Ellipsoid``, ``PseudoEllipsoid``), a ``Paving``, an object
+        with ``volume_bounds(eps)`` or with ``dim`` and ``tri_contains(boxes)``; a result
+        holding one of these (``BoundResult.set`` or ``.ellipsoid``) is accepted too.
     eps : float, optional
         Box width of the paving for the paving-backed types (default: ``1/64`` of the widest
         side of the domain).
@@ -67,6 +68,12 @@ def size_bracket(S, *, eps: float | None = None, domain=None) -> tuple[float, fl
     if isinstance(S, PseudoEllipsoid):
         box = S.bounding_box() if domain is None else _domain_box(domain, S.dim)
         return paving_volume_bracket(S.paving(_eps(eps, box), box))
+    if callable(getattr(S, "volume_bounds", None)):  # the protocol's VolumeBracket
+        if eps is None:
+            if domain is None:
+                raise ValueError(f"eps or domain is required for {type(S).__name__}.volume_bounds")
+            eps = _eps(None, _domain_box(domain, S.dim))
+        return _checked(S.volume_bounds(eps))
     if callable(getattr(S, "tri_contains", None)) and isinstance(getattr(S, "dim", None), int):
         if domain is None:
             raise ValueError("domain is required to pave a set given by tri_contains")
@@ -202,6 +209,17 @@ def _domain_box(domain, dim: int) -> Box:
     if not box.is_bounded:
         raise ValueError(f"domain must be bounded, got {box}")
     return box
+
+
+def _checked(bracket) -> tuple[float, float]:
+    """A user type's ``(lower, upper)``, checked to be two ordered non-negative numbers."""
+    try:
+        lo, hi = (float(v) for v in bracket)
+    except (TypeError, ValueError):
+        raise ValueError(f"volume_bounds must return (lower, upper), got {bracket!r}") from None
+    if not 0.0 <= lo <= hi:
+        raise ValueError(f"volume_bounds must return 0 <= lower <= upper, got ({lo}, {hi})")
+    return lo, hi
 
 
 def _eps(eps: float | None, box: Box) -> float:

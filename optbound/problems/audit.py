@@ -170,7 +170,8 @@ def _audit(S, p: Problem, paving, exact: tuple[float, float], references: dict) 
 
 def _size(S, p: Problem) -> tuple[float, float] | None:
     """Certified size bracket of ``S``; None for an object with only ``contains``."""
-    if not isinstance(S, OWN_TYPES) and not callable(getattr(S, "tri_contains", None)):
+    measured = ("volume_bounds", "tri_contains")
+    if not isinstance(S, OWN_TYPES) and not any(callable(getattr(S, m, None)) for m in measured):
         return None
     domain = None
     if not isinstance(S, OWN_TYPES):  # optbound's own types know their extent

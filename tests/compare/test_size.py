@@ -74,6 +74,26 @@ def test_pseudo_ellipsoid_and_user_objects_are_paved():
         size_bracket(Disc(), domain=[[-1, 1]])
 
 
+def test_volume_bracket_protocol_objects():
+    class Square:
+        dim = 2
+
+        def volume_bounds(self, eps):
+            return (4.0 - eps, 4.0 + eps)
+
+    assert size_bracket(Square(), eps=0.5) == (3.5, 4.5)
+    assert size_bracket(Square(), domain=[[0, 64], [0, 1]]) == (3.0, 5.0)  # eps = 64 / 64
+    with pytest.raises(ValueError, match="eps or domain is required"):
+        size_bracket(Square())
+
+    class Broken(Square):
+        def volume_bounds(self, eps):
+            return (np.nan, 1.0)
+
+    with pytest.raises(ValueError, match="0 <= lower <= upper"):
+        size_bracket(Broken(), eps=0.1)
+
+
 def test_objects_without_a_certified_size_are_refused():
     class OnlyContains:
         dim = 2
