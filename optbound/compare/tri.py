@@ -24,7 +24,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from optbound.interval import Interval, Paving, Tri
+from optbound.interval import Interval, Paving
 from optbound.interval.tribool import as_tri, from_masks
 from optbound.sets import Box, Ellipsoid, Halfspace, PolynomialLifting, PseudoEllipsoid, Strip
 
@@ -154,4 +154,4 @@ def _boxes_test(tri_contains_method) -> Test:
     return test
 
 
-__all__ = ["Tri", "as_pseudo_ellipsoid", "point_test", "tri_contains", "tri_test"]
+__all__ = ["as_pseudo_ellipsoid", "point_test", "tri_contains", "tri_test"]
