@@ -11,11 +11,14 @@ from __future__ import annotations
 
 import itertools
 from fractions import Fraction
+from math import isqrt
 
 import numpy as np
 
 from optbound.interval import Paving
 from optbound.sets import Box, Ellipsoid, Halfspace, PseudoEllipsoid, Strip
+
+_NELDER_MEAD = {"xatol": 1e-15, "fatol": 1e-18, "maxiter": 800}
 
 
 def fractions(values) -> list:
@@ -228,6 +231,99 @@ def ellipsoid_in_box(outer: Box, inner: Ellipsoid) -> bool:
             if gap is not None and (gap < 0 or gap * gap < var):
                 return False
     return True
+
+
+def _rational_sqrt_bounds(q: Fraction, digits: int = 40) -> tuple[Fraction, Fraction]:
+    """Rationals ``lo <= sqrt(q) <= hi`` (q >= 0), ``hi - lo`` about ``10^-digits`` relative."""
+    scale = 10 ** (2 * digits)
+    root = isqrt(q.numerator * scale // q.denominator)
+    lo = Fraction(root, 10**digits)
+    return lo, lo + Fraction(1, 10**digits) * (1 + lo)
+
+
+def _slab_matrix(a: list[Fraction], lo: Fraction, hi: Fraction) -> list[list[Fraction]]:
+    """``(a^T x - lo)(a^T x - hi) <= 0`` as a matrix on ``(x, 1)``."""
+    n = len(a)
+    mid = (lo + hi) / 2
+    return [[a[i] * a[j] for j in range(n)] + [-mid * a[i]] for i in range(n)] + [
+        [*(-mid * aj for aj in a), lo * hi]
+    ]
+
+
+def _clipped_slab(E: Ellipsoid, S) -> list[list[Fraction]]:
+    """The strip or half-space ``S`` clipped to rational bounds of ``E``'s extent along its
+    normal, as a slab matrix. The clipped slab contains ``E ∩ S``, and the S-procedure is
+    tight with it where it is not with a plane beyond the ellipsoid [HS96, Sect. 4]."""
+    a, c, C = fractions(S.a), fractions(E.center), fractions(E.shape)
+    n = len(a)
+    mid = sum(ai * ci for ai, ci in zip(a, c, strict=True))
+    _, half = _rational_sqrt_bounds(sum(a[i] * C[i][j] * a[j] for i in range(n) for j in range(n)))
+    lo, hi = mid - half, mid + half
+    b = Fraction(S.b)
+    if isinstance(S, Strip):
+        lo, hi = max(lo, b - 1), min(hi, b + 1)
+    else:
+        hi = min(hi, b)
+    return _slab_matrix(a, lo, hi)
+
+
+def ellipsoid_contains_intersection(outer: Ellipsoid, E: Ellipsoid, cuts) -> bool:
+    """Proof of ``E ∩ cuts ⊂ outer`` by the S-procedure, checked exactly.
+
+    ``cuts`` are strips and half-spaces, each clipped to ``E``'s extent (a slab containing
+    ``E ∩ cut``). ``E ∩ cuts ⊂ outer`` holds if multipliers ``tau >= 0`` make
+    ``tau_0 A_E + sum_k tau_k A_k - A_out`` positive semidefinite [Boyd et al. 1994,
+    Sect. 2.6.3]. The multipliers are searched in floats (the maximiser of the smallest
+    eigenvalue, Nelder-Mead on their logarithms) and the semidefiniteness is checked in
+    rational arithmetic, so True is a proof; False means no proof was found (a bound that
+    touches the set with no margin is usually not proven this way).
+    """
+    from scipy.optimize import minimize
+
+    mats = [_homogeneous(E), *(_clipped_slab(E, S) for S in cuts)]
+    A_out = _homogeneous(outer)
+    floats = [np.array(M, dtype=float) for M in mats]
+    f_out = np.array(A_out, dtype=float)
+    d = 1.0 / np.sqrt(np.abs(np.diag(f_out)) + np.finfo(float).tiny)
+    scale = np.outer(d, d)
+
+    def worst(z: np.ndarray) -> float:
+        M = sum(np.exp(zk) * Fk for zk, Fk in zip(z, floats, strict=True)) - f_out
+        return -float(np.linalg.eigvalsh(scale * M)[0])
+
+    k = len(mats)
+    starts = [np.zeros(k), *(np.where(np.arange(k) == j, 0.0, -3.0) for j in range(k))]
+    for z0 in starts:
+        found = minimize(worst, z0, method="Nelder-Mead", options=_NELDER_MEAD)
+        if found.fun > 0:
+            continue  # no positive semidefinite point found from this start
+        tau = [Fraction(float(np.exp(zk))) for zk in found.x]
+        M = [
+            [
+                sum(t * Mk[i][j] for t, Mk in zip(tau, mats, strict=True)) - A_out[i][j]
+                for j in range(len(A_out))
+            ]
+            for i in range(len(A_out))
+        ]
+        if is_psd(M):
+            return True
+    return False
+
+
+def contains_intersection(outer, parts) -> bool:
+    """Exact proof that the intersection of the optbound sets ``parts`` (one set alone is
+    accepted) lies in ``outer``: some Box / Ellipsoid part inside ``outer``
+    (:func:`contains_set`), or, for an Ellipsoid ``outer`` and parts made of one Ellipsoid
+    and strips / half-spaces, the S-procedure (:func:`ellipsoid_contains_intersection`).
+    False means no proof was found."""
+    parts = list(parts) if isinstance(parts, (list, tuple)) else [parts]
+    if any(contains_set(outer, part) for part in parts):
+        return True
+    ellipsoids = [part for part in parts if isinstance(part, Ellipsoid)]
+    cuts = [part for part in parts if isinstance(part, (Strip, Halfspace))]
+    if isinstance(outer, Ellipsoid) and len(ellipsoids) == 1 and len(cuts) == len(parts) - 1:
+        return bool(cuts) and ellipsoid_contains_intersection(outer, ellipsoids[0], cuts)
+    return False
 
 
 def contains_set(outer, inner) -> bool:

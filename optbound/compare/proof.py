@@ -3,7 +3,8 @@
 A proof is never drawn from samples. It is one of
 
 - a closed-form containment checked in exact arithmetic (an ellipsoid or a box inside an
-  ellipsoid or a box, :mod:`optbound.compare.exact`);
+  ellipsoid or a box; an ellipsoid cut by strips and half-spaces inside an ellipsoid, by the
+  S-procedure with rational multipliers: :mod:`optbound.compare.exact`);
 - for a set known through a paving (``inner ⊂ X ⊂ inner ∪ boundary`` [LJMW97, eq. (11)]):
   every inner and boundary box proven inside the bound by its interval test
   (:mod:`optbound.compare.tri`). Boxes not proven at once are bisected; a sub-box is dropped
@@ -70,7 +71,9 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
         The bound: an optbound set, a ``Paving`` (its ``inner ∪ boundary``), or an object with
         ``dim`` and ``tri_contains(boxes)`` and/or a vectorized ``contains(X)``.
     inner
-        The set: an optbound ``Box`` / ``Ellipsoid`` (closed-form proof), or a ``Paving`` of it.
+        The set: an optbound ``Box`` / ``Ellipsoid``, a list of sets meaning their intersection
+        (closed-form proofs checked exactly, :func:`optbound.compare.exact.contains_intersection`),
+        or a ``Paving`` of it.
     member : callable, optional
         The set's three-valued test on ``Interval`` coordinates (e.g. ``Problem.test``); with
         a paving it lets boundary boxes be trimmed and their points serve as counterexamples.
@@ -82,19 +85,19 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
     Raises
     ------
     TypeError
-        If ``inner`` is neither a Box, an Ellipsoid nor a Paving, or ``outer`` has neither
-        an interval test nor ``contains``.
+        If ``inner`` is neither a Box, an Ellipsoid, a list of sets nor a Paving, or
+        ``outer`` has neither an interval test nor ``contains``.
     ValueError
         If the dimensions differ.
     """
     outer = bound_set(outer)
     dim = getattr(outer, "dim", None)
-    if dim != inner.dim:
-        raise ValueError(f"outer has dimension {dim}, inner has {inner.dim}")
-    if isinstance(inner, (Box, Ellipsoid)):
-        if exact.contains_set(outer, inner):
-            return Containment("proven", None, "exact")
-        return Containment("undecided", None, "exact")
+    inner_dim = inner[0].dim if isinstance(inner, (list, tuple)) and inner else inner.dim
+    if dim != inner_dim:
+        raise ValueError(f"outer has dimension {dim}, inner has {inner_dim}")
+    if isinstance(inner, (Box, Ellipsoid, list, tuple)):
+        proven = exact.contains_intersection(outer, inner)
+        return Containment("proven" if proven else "undecided", None, "exact")
     if not isinstance(inner, Paving):
         raise TypeError(f"inner must be a Box, an Ellipsoid or a Paving, got {type(inner)}")
     if inner.is_empty:

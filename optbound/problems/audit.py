@@ -9,9 +9,10 @@ audited against the exact set of the problem:
   has one, else the paving's inner and outer volumes [LJMW97, eq. (11)]), their
   ratio bracket ``[size_lo / exact_hi, size_hi / exact_lo]`` and the ratio bracket to each
   reference bound of :meth:`Problem.references`;
-- **soundness**: ``"proven"`` (a closed-form exact proof that the set contains a superset
-  of the true set, e.g. the prior, or every box of the exact paving proven inside by interval
-  arithmetic), ``"refuted"`` with a counterexample (a float point ``x`` with
+- **soundness**: ``"proven"`` (a closed-form exact proof that the set contains the
+  intersection describing the true set, e.g. the prior inside it, or an S-procedure
+  certificate checked in rational arithmetic; or every box of the exact paving proven inside
+  by interval arithmetic), ``"refuted"`` with a counterexample (a float point ``x`` with
   ``p.member(x) == TRUE`` that the set excludes, exactly for optbound's set types, by the
   set's own ``contains`` otherwise) or ``"undecided"``. Never "proven" on samples.
 """
@@ -155,11 +156,7 @@ def _audit(S, p: Problem, paving, exact: tuple[float, float], references: dict) 
         for ref, bound in references.items():
             lo, hi = ratio_bracket(size, size_bracket(bound))
             out[f"ratio_{ref}_lo"], out[f"ratio_{ref}_hi"] = lo, hi
-    verdict = None
-    for superset in p.supersets:
-        verdict = prove_contains(S, superset)
-        if verdict.status == "proven":
-            break
+    verdict = prove_contains(S, p.intersection) if p.intersection else None
     if verdict is None or verdict.status != "proven":
         verdict = prove_contains(S, paving, member=p.test)
     out["soundness"], out["method"] = verdict.status, verdict.method

@@ -44,11 +44,9 @@ class Problem:
         A box proven to contain the true set (where it is paved).
     eps : float
         Default paving resolution of :meth:`exact`.
-    supersets : tuple
-        Optbound sets (Box / Ellipsoid) proven to contain the true set; a bound containing
-        one of them is proven sound in closed form (e.g. the prior ellipsoid).
     intersection : tuple
-        Sets whose intersection is the true set (the SDP reference's input).
+        Optbound sets whose intersection is the true set: the SDP reference's input, and
+        the closed-form soundness proofs' (``compare.prove_contains``).
     volume : callable or None
         ``volume() -> (lo, hi)``: a closed-form certified bracket of the true set's volume,
         where the family has one (else the exact paving's bracket is used).
@@ -63,7 +61,6 @@ class Problem:
     test: Callable[..., np.ndarray] = field(repr=False)
     domain: Box = field(repr=False)
     eps: float = field(repr=False)
-    supersets: tuple = field(default=(), repr=False)
     intersection: tuple = field(default=(), repr=False)
     volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)

@@ -72,7 +72,6 @@ def problem(task: dict) -> Problem:
         test=test,
         domain=domain,
         eps=float(np.max(domain.widths)) * RELATIVE_EPS[E.dim],
-        supersets=(E,),
         intersection=(E, S),
         volume=partial(ellipsoid_strip_volume_bracket, E, S),
     )

@@ -100,3 +100,20 @@ def test_prove_contains_refuses_bad_arguments():
         prove_contains(Box([0.0], [1.0]), paving)
     with pytest.raises(TypeError, match="inner must be"):
         prove_contains(Box([0.0, 0.0], [1.0, 1.0]), Strip([1.0, 0.0], 0.0))
+
+
+def test_s_procedure_proves_the_sdp_optimum_of_a_lens_exactly():
+    from optbound import optimal
+
+    E, S, member, paving = _lens()
+    sdp = optimal.outer_ellipsoid([E, S]).ellipsoid
+    assert exact.contains_intersection(sdp, [E, S])
+    assert prove_contains(sdp, [E, S]) == prove_contains(sdp, (E, S))
+    assert prove_contains(sdp, [E, S]).status == "proven"
+    # 1 % smaller about its centre: no certificate (and the paving refutes it).
+    assert not exact.contains_intersection(sdp.scaled(0.99), [E, S])
+    assert prove_contains(sdp.scaled(0.99), paving, member=member).status == "refuted"
+    # A half-space cut works the same way; a box outer has no S-procedure proof.
+    H = Halfspace(S.a, S.b + 1.0)
+    assert exact.contains_intersection(optimal.outer_ellipsoid([E, H]).ellipsoid, [E, H])
+    assert not exact.contains_intersection(Box([-9.0, -9.0], [0.0, 0.0]), [E, S])

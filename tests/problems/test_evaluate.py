@@ -142,6 +142,16 @@ def test_user_objects_contains_only_and_tri_contains():
     assert tri["size_hi"] < np.inf
 
 
+def test_the_sdp_reference_is_proven_by_its_s_procedure_certificate():
+    def sdp(p):
+        return p.references()["optimal_ellipsoid"]
+
+    result = problems.evaluate(sdp, TINY)
+    assert [(r["soundness"], r["method"]) for r in result.rows] == [("proven", "exact")] * 4
+    for r in result.rows:
+        assert r["ratio_optimal_ellipsoid_lo"] <= 1.0 <= r["ratio_optimal_ellipsoid_hi"]
+
+
 def test_result_objects_are_read_through_their_set():
     from optbound import analytic
 
