@@ -38,6 +38,7 @@ SUBMODULES = (
     "optimal",
     "problems",
     "report",
+    "scenarios",
     "sets",
 )
 #: Functions reachable as attributes, imported from their subpackage on first access.
