@@ -6,7 +6,7 @@ reports our kernels' time as a ratio to these, measured in the same run (same th
 They are compiled with the same options as ours (``error_model="numpy"``: no zero-division
 branch per division). The strip reference runs one instance per loop iteration (LLVM does not
 vectorize across instances there; ours are laid out so that it does, see
-``optbound.analytic._lanes``); the Minkowski reference shares our lane-parallel p solver.
+``optbound.analytic._kernels.lanes``); the Minkowski reference shares our lane-parallel p solver.
 """
 
 from __future__ import annotations
@@ -16,11 +16,11 @@ from functools import partial
 import numpy as np
 from numba import njit
 
-from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
-from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
-from optbound.analytic._spin import post_slices
-from optbound.analytic._strip_lambda import lam_volume
-from optbound.analytic._threads import run_sliced
+from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices, store_matrices
+from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
+from optbound.analytic._kernels.spin import post_slices
+from optbound.analytic._kernels.strip_lambda import lam_volume
+from optbound.analytic._kernels.threads import run_sliced
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
@@ -63,7 +63,7 @@ def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
 
 @njit(cache=True, error_model="numpy", nogil=True)
 def strip_range(c, C, a, b, out_c, out_C, start, stop, posts):
-    """The batch loop on ``start..stop`` (``posts`` as in ``optbound.analytic._threads``)."""
+    """The batch loop on ``start..stop`` (``posts`` as in ``analytic._kernels.threads``)."""
     post_slices(posts)
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
@@ -71,7 +71,7 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop, posts):
 @njit(cache=True, error_model="numpy", nogil=True)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop, posts):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
-    same blocks of W lanes and work space (``optbound.analytic._minkowski_kernel.sum_range``),
+    same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the float
     member."""
     post_slices(posts)

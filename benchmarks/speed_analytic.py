@@ -143,7 +143,7 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
-    from optbound.analytic._threads import NO_POSTS
+    from optbound.analytic._kernels.threads import NO_POSTS
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
@@ -159,7 +159,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
-    from optbound.analytic._threads import NO_POSTS
+    from optbound.analytic._kernels.threads import NO_POSTS
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
@@ -277,7 +277,7 @@ U = 2.0**-53
 
 
 def margin_distribution(seed: int = 0, count: int = 10**4) -> list[tuple]:
-    """Certified margins (relative inflation, see ``optbound.analytic._midrad``) over random
+    """Certified margins (relative inflation, see ``optbound.analytic._kernels.midrad``) over random
     3-D instances per input condition number, next to the output's condition number: storing
     a shape S in floats already costs about ``U cond(S)`` in its thin direction, the floor of
     any certified margin on a float matrix. Rows as in :func:`_margin_row`."""

@@ -1,4 +1,4 @@
-"""Tests of the volume-optimal p solver of ``optbound.analytic._minkowski_kernel``.
+"""Tests of the volume-optimal p solver of ``optbound.analytic._kernels.minkowski_kernel``.
 
 References: the generalized eigenvalues of (C1, C2) from ``scipy.linalg.eigh`` (moderate
 instances) or at 50 digits with mpmath (extreme ones), and the root of
@@ -16,9 +16,9 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from optbound import Ellipsoid, analytic
-from optbound.analytic import _minkowski_kernel as K
-from optbound.analytic._lanes import W, cholesky_lanes
-from optbound.analytic._threads import NO_POSTS
+from optbound.analytic._kernels import minkowski_kernel as K
+from optbound.analytic._kernels.lanes import W, cholesky_lanes
+from optbound.analytic._kernels.threads import NO_POSTS
 
 
 def _spd(rng, n: int, cond: float, scale: float) -> np.ndarray:

@@ -1,10 +1,10 @@
-"""The flags of ``_spin``: what one thread publishes another sees, and polls end."""
+"""The flags of ``spin``: what one thread publishes another sees, and polls end."""
 
 import threading
 
 import numpy as np
 
-from optbound.analytic._spin import handoff, post_slices, publish, wait_for
+from optbound.analytic._kernels.spin import handoff, post_slices, publish, wait_for
 
 
 def test_wait_for_sees_a_published_value_and_gives_up_otherwise():

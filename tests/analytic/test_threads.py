@@ -11,7 +11,13 @@ import pytest
 
 from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
-from optbound.analytic._threads import LEAD, MIN_SLICE, _cache_lines, run_sliced, slice_bounds
+from optbound.analytic._kernels.threads import (
+    LEAD,
+    MIN_SLICE,
+    _cache_lines,
+    run_sliced,
+    slice_bounds,
+)
 
 
 def _instances(count: int):

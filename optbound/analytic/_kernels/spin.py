@@ -3,7 +3,7 @@
 A thread that blocks on a lock sleeps, and waking a sleeping core is slow: on the 2-vCPU test
 machine a batch of 1e3 strip updates split over two threads took ~30 µs longer whenever a
 thread had to be woken (as long as 600 updates). So the threads of a sliced batch
-(``_threads``) first poll flags for a bounded time, and sleep on a lock only if that is not
+(``threads``) first poll flags for a bounded time, and sleep on a lock only if that is not
 enough: a worker polls for its next slice after each one, the caller for the workers' results.
 Every poll runs without the GIL, and a flag is set only where its setter holds no GIL either
 (in a kernel, or together with the next poll), so that the thread that sees it can take the

@@ -9,12 +9,12 @@ a flag: a ``ThreadPoolExecutor`` round trip (future, queue, condition variable) 
 the 2-core test machine, as much as 300 strip updates, and most of any handoff through locks
 is the wake-up of a sleeping core. So after each slice a worker polls for the next one for
 ~100 µs before it sleeps, and the calling thread, done with its own slice, polls for the
-workers' results (``_spin``); back-to-back batches then never wait for a wake-up, at the cost
+workers' results (``spin``); back-to-back batches then never wait for a wake-up, at the cost
 of up to ~100 µs of a polling core after each batch. The calling thread's slice is the larger
 one for small batches (``LEAD``): it starts while the workers may still be waking up.
 
 A kernel run by ``run_sliced`` is called as ``call(start, stop, posts)`` and must call
-``_spin.post_slices(posts)`` first, once it holds no GIL: that is what tells a polling worker
+``spin.post_slices(posts)`` first, once it holds no GIL: that is what tells a polling worker
 that its slice is ready (were it told earlier, it would wait for the GIL, asleep).
 """
 
@@ -27,7 +27,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from optbound.analytic._spin import handoff, wait_for
+from optbound.analytic._kernels.spin import handoff, wait_for
 
 MIN_SLICE = 256  # no slice is smaller (below 2 MIN_SLICE, one thread: waking costs more)
 LEAD = 64  # the calling thread's head start, in instances (see ``slice_bounds``)
