@@ -62,15 +62,61 @@ MIN_REL_WIDTH = 1e-6
 # lambda is capped here (a larger one only gives a bound >= 1e8 times E in some direction).
 LAM_MAX = 1e8
 LAMG_MAX = 1e16
-# The per-lane scalars of a block live in one flat array, row r at offset r W (``workspace``).
-# Constant offsets let LLVM prove that two rows never overlap; rows as views of a 2-D array
-# have a run-time stride, and the run-time overlap checks of ~20 rows in one loop exceed its
-# limit (the loop then stays scalar: measured 8x slower).
-N_ROWS = 47
-(STRIP_B, LAM_IN, EPS, REPS, GS, GT, RG, CONS, MID, HALF, GRAM, GRAM_LO, LAM, GAM, KH, KL, RK, OM,
- ACTIVE, DD, CMAX, AA, WW, TRC, TRINV, LMIN, LREF, RHO, CENTRE, SH, SL, SA, ALPHA, BETA, GAMMA,
- WIDEN, MARGIN, MU, EH, EL, S0, S1, S2, S3, S4, S5, S6,
- ) = (W * r for r in range(N_ROWS))  # fmt: skip
+# Layout of the per-lane scalars of a block: one flat array ``t`` (``workspace``), row r at
+# offset r W, so lane k of row ROW is ``t[ROW + k]``. Constant offsets let LLVM prove that two
+# rows never overlap; rows as views of a 2-D array have a run-time stride, and the run-time
+# overlap checks of ~20 rows in one loop exceed its limit (the loop then stays scalar: measured
+# 8x slower). Rows, in the order the steps write them (step numbers of the module docstring):
+(
+    STRIP_B,  # 1  the strip's b (input)
+    LAM_IN,  # 1  the given lambda (input, GIVEN mode)
+    EPS,  # 2  eps = b - a^T c (Dot2)
+    REPS,  # 2  certified radius of EPS
+    GS,  # 2  a^T C a, high part
+    GT,  # 2  a^T C a, low part
+    RG,  # 2  certified radius of GS + GT
+    CONS,  # 3  consistency [HS96, eq. (29)]
+    MID,  # 3  the fused strip: |a^T (x - c) - MID| <= HALF
+    HALF,  # 3
+    GRAM,  # 3  G = a^T C a as a double-double GRAM + GRAM_LO
+    GRAM_LO,  # 3
+    LAM,  # 4  lambda of the normalized strip [HS96, eq. (24)]
+    GAM,  # 4  gam = lambda / ((1 + lambda Gn) HALF^2)
+    KH,  # 5  the factor K as a double-double KH + KL within RK
+    KL,  # 5
+    RK,  # 5  (-1: 1 - gam G not provably positive)
+    OM,  # 5  1 - gam G
+    ACTIVE,  # 5  1.0 where the member is evaluated, else 0.0
+    DD,  # 5  squared norm of the centre's radii
+    CMAX,  # 5  |centre|_inf
+    AA,  # 5  |a|^2
+    WW,  # 5  |w|^2 (w = C a, high part)
+    TRC,  # 5  tr C
+    TRINV,  # 5  tr C^{-1}
+    LMIN,  # 5  estimate of lambda_min of the member (``_margin_terms``)
+    LREF,  # 5  the reference eigenvalue of the margin
+    RHO,  # 5  Schweppe's rho of the centre term (scale = 1 + rho)
+    CENTRE,  # 5  Schweppe's centre term (1 + 1/rho) DD
+    SH,  # 5  scale K as a double-double SH + SL within its radius
+    SL,  # 5
+    SA,  # 5  bound on |scale K|
+    ALPHA,  # 5  coefficients of the entries' error bound (``_member_shape``)
+    BETA,  # 5
+    GAMMA,  # 5
+    WIDEN,  # 5  the least mu that keeps the output in the domain
+    MARGIN,  # 5-6  certified relative margin (-1: not certified)
+    MU,  # 5  mu of T = scale C* + mu I
+    EH,  # 5  one shape entry before its rounding, EH + EL
+    EL,  # 5
+    S0,  # scratch rows, reused by each step (see where they are written)
+    S1,
+    S2,
+    S3,
+    S4,
+    S5,
+    S6,
+) = (W * r for r in range(47))  # fmt: skip
+N_ROWS = S6 // W + 1
 # What a lane's output is: the certified member, E itself (lambda = 0), or zeros (no ellipsoid).
 OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 
