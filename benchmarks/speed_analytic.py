@@ -78,22 +78,29 @@ def batch_instances(rng: np.random.Generator, count: int, dim: int, cond: float 
     return centers, shapes, a * scale[:, None], b * scale
 
 
-def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
-    t_ours, t_ref = [], []
+def interleaved(*fns, repeat: int = REPEATS) -> list[float]:
+    """Median seconds of each ``fn()``, the functions called in turn ``repeat`` times."""
+    times = [[] for _ in fns]
     for _ in range(repeat):
-        for fn, out in ((ours, t_ours), (reference, t_ref)):
+        for fn, out in zip(fns, times, strict=True):
             start = time.perf_counter()
             fn()
             out.append(time.perf_counter() - start)
-    return float(np.median(t_ours)), float(np.median(t_ref))
+    return [float(np.median(t)) for t in times]
 
 
-def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """As :func:`alternating`, each sample the mean over back-to-back calls filling >= 20 ms
-    (results dropped at once): a sustained rate, not the latency of one call after idling."""
+def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
+    t_ours, t_ref = interleaved(ours, reference, repeat=repeat)
+    return t_ours, t_ref
+
+
+def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
+    """As :func:`interleaved`, each sample the mean over back-to-back calls filling >= 20 ms
+    (results dropped at once; the number of calls set by the first function): a sustained
+    rate, not the latency of one call after idling."""
     number = 1
-    while per_call(ours, repeat=1, min_time=0.0) * number < 0.02:
+    while per_call(fns[0], repeat=1, min_time=0.0) * number < 0.02:
         number *= 2
 
     def looped(fn):
@@ -103,8 +110,35 @@ def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, fl
 
         return run
 
-    t_ours, t_ref = alternating(looped(ours), looped(reference), repeat)
-    return t_ours / number, t_ref / number
+    return [t / number for t in interleaved(*map(looped, fns), repeat=repeat)]
+
+
+def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """:func:`interleaved_calls` of ours and the reference."""
+    t_ours, t_ref = interleaved_calls(ours, reference, repeat=repeat)
+    return t_ours, t_ref
+
+
+def threading_timings(rng: np.random.Generator, batches, repeat: int = 3 * REPEATS) -> list:
+    """Our strip kernel (3-D, volume) with the batch handed to the cores three ways, timed
+    interleaved in one run: the polled handoff of ``analytic._kernels.threads`` (the
+    library's), a ``ThreadPoolExecutor`` and numba's ``prange`` (the threading layer is
+    numba's choice or ``NUMBA_THREADING_LAYER``). Rows (B, handoff s, executor s, prange s);
+    every scheme's outputs are checked bitwise equal first."""
+    from benchmarks import analytic_reference as ref
+
+    schemes = (ref.strip_handoff, ref.strip_executor, ref.strip_prange)
+    c, C, a, b = batch_instances(rng, max(batches), DIM)
+    rows = []
+    for count in batches:
+        args = tuple(x[:count] for x in (c, C, a, b))
+        first, *others = (scheme(*args) for scheme in schemes)
+        assert all(
+            np.array_equal(x, y) for other in others for x, y in zip(first, other, strict=True)
+        )
+        times = interleaved_calls(*(partial(scheme, *args) for scheme in schemes), repeat=repeat)
+        rows.append((count, *times))
+    return rows
 
 
 def _ratio_records(what: str, count: int, ours: float, ref: float) -> list[dict]:
@@ -345,8 +379,25 @@ def main(argv=None) -> None:
     parser.add_argument(
         "--phases", action="store_true", help="only the strip rate at B = 1e3 over 20 s"
     )
+    parser.add_argument(
+        "--threads",
+        action="store_true",
+        help="only the threading schemes compared (strip, B = 1e3, 1e4, 1e5)",
+    )
     args = parser.parse_args(argv)
     rng = np.random.default_rng(args.seed)
+    if args.threads:
+        import numba
+
+        layer = os.environ.get("NUMBA_THREADING_LAYER", "default")
+        print(f"strip kernel, {DIM}-D, volume; time / polled handoff (numba layer: {layer})")
+        print("| B | handoff | executor / handoff | prange / handoff |")
+        print("|---|---|---|---|")
+        for count, hand, pool, par in threading_timings(rng, BATCHES["quick"]):
+            print(f"| {count:.0e} | {count / hand / 1e6:.2f} M/s | {pool / hand:.2f} "
+                  f"| {par / hand:.2f} |")  # fmt: skip
+        print(f"(prange ran on numba's {numba.threading_layer()} layer)")
+        return
     if args.phases:
         print("t (s) | strip, B = 1e3, ours | reference")
         for t, ours, ref in phases(rng):
