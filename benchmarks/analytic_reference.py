@@ -12,12 +12,9 @@ lane-parallel p solver and evaluates the member with the plain formula.
 
 from __future__ import annotations
 
-import os
-from concurrent.futures import ThreadPoolExecutor
 from functools import partial
 from types import FunctionType
 
-import numba
 import numpy as np
 from numba import njit, prange
 
@@ -25,7 +22,6 @@ from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
 from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
-from optbound.analytic._kernels.spin import post_slices
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 _OPTIONS = {"cache": True, "error_model": "numpy", "nogil": True}
@@ -55,19 +51,17 @@ def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def strip_range(c, C, a, b, out_c, out_C, start, stop, posts):
-    """The batch loop on ``start..stop`` (``posts`` as in ``analytic._kernels.threads``)."""
-    post_slices(posts)
+def strip_range(c, C, a, b, out_c, out_C, start, stop):
+    """The batch loop on ``start..stop`` (a slice of ``analytic._kernels.threads``)."""
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop, posts):
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
     member ``reference.minkowski_member``."""
-    post_slices(posts)
     mats, vecs, rows, _, _ = block_work(c1.shape[1], min(W, stop - start))
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
@@ -102,8 +96,8 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
 # ---------------------------------------------------------------- threading schemes compared
 # Our certified strip kernel (volume criterion, clipped) on the same slices, handed to the
-# threads three ways; ``benchmarks.speed_analytic.threading_timings`` times them interleaved.
-# The Python-side validation of ``intersect_strip_batch`` is left out of all three alike.
+# threads two ways; ``benchmarks.speed_analytic.threading_timings`` times them interleaved.
+# The Python-side validation of ``intersect_strip_batch`` is left out of both alike.
 
 
 def _strip_outputs(n_batch: int, n: int) -> tuple:
@@ -113,44 +107,16 @@ def _strip_outputs(n_batch: int, n: int) -> tuple:
 _NO_LAM, _NO_IDX = np.zeros(1), np.zeros(0, np.int64)
 
 
-def strip_handoff(c, C, a, b) -> tuple:
-    """The strip kernel on ``threads.run_sliced`` (polled handoff, the library's scheme)."""
+def strip_sliced(c, C, a, b) -> tuple:
+    """The strip kernel on ``threads.run_sliced`` (a thread pool, the library's scheme)."""
     out = _strip_outputs(*c.shape)
-
-    def call(start, stop, posts):
-        ws = threads.workspace(strip_kernel.workspace, c.shape[1])
-        return strip_kernel.fuse_range(c, C, a, b, False, True, strip_kernel.VOLUME, _NO_LAM,
-                                       _NO_IDX, 10.0, 0.5, out, ws, start, stop, posts)  # fmt: skip
-
-    run_sliced(call, len(c))
-    return out
-
-
-_EXECUTOR: list = []
-
-
-def strip_executor(c, C, a, b) -> tuple:
-    """The same slices on a ``concurrent.futures.ThreadPoolExecutor`` (the caller runs the
-    first slice, as in ``run_sliced``, and waits on the futures of the others)."""
-    out = _strip_outputs(*c.shape)
-    slices = min(_cores(), len(c) // threads.MIN_SLICE)
 
     def call(start, stop):
         ws = threads.workspace(strip_kernel.workspace, c.shape[1])
         return strip_kernel.fuse_range(c, C, a, b, False, True, strip_kernel.VOLUME, _NO_LAM,
-                                       _NO_IDX, 10.0, 0.5, out, ws, start, stop,
-                                       threads.NO_POSTS)  # fmt: skip
+                                       _NO_IDX, 10.0, 0.5, out, ws, start, stop)  # fmt: skip
 
-    if slices <= 1:
-        call(0, len(c))
-        return out
-    if not _EXECUTOR:
-        _EXECUTOR.append(ThreadPoolExecutor(_cores() - 1))
-    bounds = [len(c) * k // slices for k in range(slices + 1)]
-    futures = [_EXECUTOR[0].submit(call, bounds[k], bounds[k + 1]) for k in range(1, slices)]
-    call(0, bounds[1])
-    for future in futures:
-        future.result()
+    run_sliced(call, len(c))
     return out
 
 
@@ -178,7 +144,6 @@ def _fuse_prange(c, C, a, b, lam, idx, out, ws, slices):
             own,
             start,
             stop,
-            np.zeros((0, 8), np.int64),
         )
 
 
@@ -186,16 +151,13 @@ _STACKED: dict = {}
 
 
 def strip_prange(c, C, a, b) -> tuple:
-    """The same slices under ``prange`` (workspaces made once per dimension, as ours)."""
+    """The same slices under numba's ``prange`` (workspaces made once per dimension, as
+    ``threads.workspace``)."""
     out = _strip_outputs(*c.shape)
     n = c.shape[1]
-    slices = max(1, min(numba.get_num_threads(), len(c) // threads.MIN_SLICE))
+    slices = max(1, min(threads.cores(), len(c) // threads.MIN_SLICE))
     if n not in _STACKED:
-        per_slice = [strip_kernel.workspace(n) for _ in range(numba.get_num_threads())]
+        per_slice = [strip_kernel.workspace(n) for _ in range(threads.cores())]
         _STACKED[n] = tuple(np.stack(parts) for parts in zip(*per_slice, strict=True))
     _fuse_prange(c, C, a, b, _NO_LAM, _NO_IDX, out, _STACKED[n], slices)
     return out
-
-
-def _cores() -> int:
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()

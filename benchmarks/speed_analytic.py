@@ -119,25 +119,24 @@ def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, fl
     return t_ours, t_ref
 
 
-def threading_timings(rng: np.random.Generator, batches, repeat: int = 3 * REPEATS) -> list:
-    """Our strip kernel (3-D, volume) with the batch handed to the cores three ways, timed
-    interleaved in one run: the polled handoff of ``analytic._kernels.threads`` (the
-    library's), a ``ThreadPoolExecutor`` and numba's ``prange`` (the threading layer is
-    numba's choice or ``NUMBA_THREADING_LAYER``). Rows (B, handoff s, executor s, prange s);
-    every scheme's outputs are checked bitwise equal first."""
+def threading_timings(rng: np.random.Generator, batches, rounds: int = 3 * REPEATS) -> list:
+    """Our strip kernel (3-D, volume) with the batch handed to the cores two ways: the thread
+    pool of ``analytic._kernels.threads.run_sliced`` (the library's) and numba's ``prange``
+    (the threading layer is numba's choice or ``NUMBA_THREADING_LAYER``). Each round times
+    both interleaved (one :func:`interleaved_calls` sample each), so the load of a shared
+    machine hits them alike; rows (B, pool rate [updates/s], median over rounds of prange /
+    pool time). Both schemes' outputs are checked bitwise equal first."""
     from benchmarks import analytic_reference as ref
 
-    schemes = (ref.strip_handoff, ref.strip_executor, ref.strip_prange)
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     rows = []
     for count in batches:
         args = tuple(x[:count] for x in (c, C, a, b))
-        first, *others = (scheme(*args) for scheme in schemes)
-        assert all(
-            np.array_equal(x, y) for other in others for x, y in zip(first, other, strict=True)
-        )
-        times = interleaved_calls(*(partial(scheme, *args) for scheme in schemes), repeat=repeat)
-        rows.append((count, *times))
+        pool, par = ref.strip_sliced(*args), ref.strip_prange(*args)
+        assert all(np.array_equal(x, y) for x, y in zip(pool, par, strict=True))
+        calls = (partial(ref.strip_sliced, *args), partial(ref.strip_prange, *args))
+        times = np.array([interleaved_calls(*calls, repeat=1) for _ in range(rounds)])
+        rows.append((count, count / np.median(times[:, 0]), np.median(times[:, 1] / times[:, 0])))
     return rows
 
 
@@ -177,14 +176,13 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
-    from optbound.analytic._kernels.threads import NO_POSTS
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.intersect_strip(E, S),
-        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1, NO_POSTS),
+        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
     )
     return _timings(one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches)
 
@@ -193,7 +191,6 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
-    from optbound.analytic._kernels.threads import NO_POSTS
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
@@ -201,7 +198,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.minkowski_sum(E1, E2),
-        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1, NO_POSTS),
+        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
     )
     inputs = (c1, C1, c2, C2)
     return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches)
@@ -382,7 +379,7 @@ def main(argv=None) -> None:
     parser.add_argument(
         "--threads",
         action="store_true",
-        help="only the threading schemes compared (strip, B = 1e3, 1e4, 1e5)",
+        help="only the thread pool vs numba prange (strip, B = 1e3, 1e4, 1e5)",
     )
     args = parser.parse_args(argv)
     rng = np.random.default_rng(args.seed)
@@ -390,12 +387,11 @@ def main(argv=None) -> None:
         import numba
 
         layer = os.environ.get("NUMBA_THREADING_LAYER", "default")
-        print(f"strip kernel, {DIM}-D, volume; time / polled handoff (numba layer: {layer})")
-        print("| B | handoff | executor / handoff | prange / handoff |")
-        print("|---|---|---|---|")
-        for count, hand, pool, par in threading_timings(rng, BATCHES["quick"]):
-            print(f"| {count:.0e} | {count / hand / 1e6:.2f} M/s | {pool / hand:.2f} "
-                  f"| {par / hand:.2f} |")  # fmt: skip
+        print(f"strip kernel, {DIM}-D, volume; median of per-round time ratios (layer: {layer})")
+        print("| B | thread pool (run_sliced) | prange / pool |")
+        print("|---|---|---|")
+        for count, rate, ratio in threading_timings(rng, BATCHES["quick"]):
+            print(f"| {count:.0e} | {rate / 1e6:.2f} M/s | {ratio:.2f} |")
         print(f"(prange ran on numba's {numba.threading_layer()} layer)")
         return
     if args.phases:

@@ -31,7 +31,7 @@ from optbound.analytic._kernels.minkowski_kernel import (
     P_XY_PSI,
     sum_range,
 )
-from optbound.analytic._kernels.threads import NO_POSTS, ellipsoid_outputs, run_sliced
+from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import check_ellipsoid, raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -176,7 +176,7 @@ def minkowski_sum(
     # A batch of one through the batch kernel (bitwise the same results); an Ellipsoid's
     # arrays are read-only, as the batch passes its inputs.
     inputs = (E1.center[None], E1.shape[None], E2.center[None], E2.shape[None])
-    sum_range(*inputs, mode, p, planar, heading, out, 0, 1, NO_POSTS)
+    sum_range(*inputs, mode, p, planar, heading, out, 0, 1)
     (c,), (C,), (code,), (p_used,), (margin,) = out
     if code:
         _raise(int(code), 0, _NAMES_SINGLE, False)
@@ -220,8 +220,8 @@ def minkowski_sum_batch(
     out = ellipsoid_outputs(n_batch, n, np.int8, float, float)
     inputs = [_read_only(x) for x in (c1, C1, c2, C2)]  # the kernel's type (minkowski_sum)
 
-    def add(start: int, stop: int, posts: np.ndarray) -> int:
-        return sum_range(*inputs, mode, p, planar, heading, out, start, stop, posts)
+    def add(start: int, stop: int) -> int:
+        return sum_range(*inputs, mode, p, planar, heading, out, start, stop)
 
     out_c, out_C, code, p_used, margin = out
     bad = [i for i in run_sliced(add, n_batch) if i >= 0]

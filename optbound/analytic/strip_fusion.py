@@ -302,10 +302,10 @@ def intersect_strip_batch(
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
 
-    def fuse(start: int, stop: int, posts: np.ndarray) -> int:
+    def fuse(start: int, stop: int) -> int:
         ws = _threads.workspace(workspace, n)
         return fuse_range(c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out, ws,
-                          start, stop, posts)  # fmt: skip
+                          start, stop)  # fmt: skip
 
     out_c, out_C, code, case, cons, lam_used, empty, margin = out
     bad = [i for i in run_sliced(fuse, n_batch) if i >= 0]

@@ -12,7 +12,7 @@ import pytest
 from benchmarks.speed_analytic import batch_instances
 from optbound.analytic._kernels import strip_kernel as K
 from optbound.analytic._kernels.lanes import W
-from optbound.analytic._kernels.threads import NO_POSTS, ellipsoid_outputs
+from optbound.analytic._kernels.threads import ellipsoid_outputs
 
 MODES = (K.VOLUME, K.GIVEN, K.ROBUST, K.TRACE, K.PROJECTION, K.ROBUST_PROJECTION)
 
@@ -44,7 +44,7 @@ def _batch(c, C, a, b, lam, halfspace, clip, mode, idx):
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
     ws = K.workspace(n)
     first = K.fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, 10.0, 0.5, out, ws, 0,
-                         n_batch, NO_POSTS)  # fmt: skip
+                         n_batch)  # fmt: skip
     bad = np.flatnonzero(out[2])
     assert first == (bad[0] if bad.size else -1)
     return out

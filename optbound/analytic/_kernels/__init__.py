@@ -9,7 +9,7 @@ what makes them fast and certified in floating point:
 - ``strip_kernel``, ``strip_lambda``, ``cubic``: ellipsoid ∩ strip [HS96, eqs. (24)-(30)];
 - ``minkowski_kernel``: the Schweppe family [HS96, eq. (14)] and its volume-optimal p;
 - ``midrad``: midpoint-radius arithmetic and the certified outward margin;
-- ``threads``, ``spin``: a batch sliced over the cores.
+- ``threads``: a batch sliced over the cores.
 
 ``analytic._exact`` (the bounding update in exact rationals) is not here: it is the formula
 evaluated without rounding, not an acceleration.
@@ -45,10 +45,11 @@ is widened by the outward rule ``T = (1 + rho) S + mu I`` of ``midrad.inflate``.
 is chosen (lambda, p) may be approximate; the containment may not. A member that cannot be
 certified falls back to a set that is trivially an outer bound (E itself for the strip).
 
-Threads. ``threads.run_sliced`` calls a kernel entry point ``call(start, stop, posts)`` on
-contiguous slices of the batch, one per core; the entry point first calls
-``spin.post_slices(posts)`` once it holds no GIL. A lane's result never depends on its
-neighbours, its block or its slice, so single calls, batches and any split agree bitwise.
+Threads. ``threads.run_sliced`` calls a kernel entry point ``call(start, stop)`` on
+contiguous slices of the batch, one per core (the caller runs the first, a thread pool the
+others), so an entry point releases the GIL (``nogil=True``) and writes only its slice of the
+outputs. A lane's result never depends on its neighbours, its block or its slice, so single
+calls, batches and any split agree bitwise.
 
 Testing. Each kernel is tested against its plain reference (``analytic.reference``): the
 kernel's centre equals the reference's to a few units in the last place, its shape exceeds the

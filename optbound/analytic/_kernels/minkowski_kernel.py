@@ -58,7 +58,6 @@ from optbound.analytic._kernels.lanes import (
     store_vectors,
 )
 from optbound.analytic._kernels.midrad import U, mr_add, mr_div, mr_mul
-from optbound.analytic._kernels.spin import post_slices
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -532,17 +531,15 @@ def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop, posts):
+def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin), ``posts`` as in
-    ``threads``. The entry point of both :func:`minkowski_sum` (a batch of one: the same
-    compiled code, so single and batched results agree bitwise) and
-    :func:`minkowski_sum_batch`; both pass their inputs read-only, so that numba compiles it
-    once. Returns the first instance with a non-zero code, or -1.
+    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin). The entry point of
+    both :func:`minkowski_sum` (a batch of one: the same compiled code, so single and batched
+    results agree bitwise) and :func:`minkowski_sum_batch`; both pass their inputs read-only,
+    so that numba compiles it once. Returns the first instance with a non-zero code, or -1.
 
     The work space is allocated here, not cached per thread as the strip's: its ~40 arrays
     cost as much to pass through numba's dispatcher (unboxing each) as to allocate."""
-    post_slices(posts)
     wk = block_work(c1.shape[1], min(W, stop - start))
     _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
     return first_error(out[2], start, stop)

@@ -48,7 +48,6 @@ from optbound.analytic._kernels.midrad import (
     segment_scale,
     segment_term,
 )
-from optbound.analytic._kernels.spin import post_slices
 from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
@@ -702,12 +701,10 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop,
-               posts):  # fmt: skip
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
     """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller), ``ws`` the calling thread's ``workspace(n)``, ``posts`` as in ``threads``.
+    caller), ``ws`` the calling thread's ``workspace(n)``.
     ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin). Returns the
     first instance with a non-zero code, or -1."""
-    post_slices(posts)
     _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)
     return first_error(out[2], start, stop)
