@@ -24,7 +24,9 @@ from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
 from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
-_OPTIONS = {"cache": True, "error_model": "numpy", "nogil": True}
+# Not cached on disk: numba would not notice an edit of the reference or of a kernel they call
+# (``optbound._jit_cache`` covers the package's own kernels only); compiling these takes seconds.
+_OPTIONS = {"error_model": "numpy", "nogil": True}
 
 
 def _compiled(function, **callees):
@@ -42,7 +44,7 @@ strip_one = _compiled(
 )
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+@njit(**_OPTIONS, _nrt=False)
 def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
     """The batch loop, with views without reference counting (as ours), so that the ratio
     compares the work per instance only."""
@@ -50,13 +52,13 @@ def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
         strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
+@njit(**_OPTIONS)
 def strip_range(c, C, a, b, out_c, out_C, start, stop):
     """The batch loop on ``start..stop`` (a slice of ``analytic._kernels.threads``)."""
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
+@njit(**_OPTIONS)
 def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
@@ -120,7 +122,7 @@ def strip_sliced(c, C, a, b) -> tuple:
     return out
 
 
-@njit(error_model="numpy", nogil=True, parallel=True)
+@njit(**_OPTIONS, parallel=True)
 def _fuse_prange(c, C, a, b, lam, idx, out, ws, slices):
     """The strip kernel on ``slices`` contiguous slices under numba's ``prange`` (one
     iteration per thread of numba's threading layer), each with its own workspace."""

@@ -21,17 +21,15 @@ import math
 
 import numpy as np
 
+from optbound.analytic.strip_fusion import MIN_REL_WIDTH  # the update's floor of the width
+
 __all__ = [
-    "MIN_REL_WIDTH",
     "intersect_strip_volume",
     "minkowski_member",
     "minkowski_p_volume",
     "strip_lam_volume",
     "strip_member",
 ]
-
-# The fused strip is never thinner than this fraction of E's extent along a (as the kernel).
-MIN_REL_WIDTH = 1e-6
 
 
 def strip_member(c, C, a, eps, half, lam, out_c, out_C, w) -> None:
