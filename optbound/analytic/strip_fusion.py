@@ -61,6 +61,7 @@ from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.result import BoundResult
 from optbound.sets.strip import Halfspace, Strip
 
 CASES = ("no_reduction", "consistent", "partial", "inconsistent")
@@ -76,8 +77,10 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class StripFusion:
+class StripFusion(BoundResult):
     """Result of :func:`intersect_strip`.
+
+    As a ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
 
     Attributes
     ----------
@@ -93,6 +96,9 @@ class StripFusion:
         Certified inflation of the float member, relative (``rho + mu / lambda_min``, see
         ``optbound.analytic._kernels.midrad``); 0 when E itself is returned.
     """
+
+    set_attribute = "ellipsoid"
+    certified = True
 
     ellipsoid: Ellipsoid | None
     lam: float
