@@ -34,7 +34,7 @@ from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
 from optbound.report.tables import markdown_table
 from optbound.sets import Box
-from papers_repro._common import (
+from optbound.papers_repro._common import (
     claim_table,
     draw_ellipse,
     finish_axes,

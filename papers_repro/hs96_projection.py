@@ -23,7 +23,7 @@ import numpy as np
 from optbound import analytic, optimal
 from optbound.report.tables import markdown_table
 from optbound.sets import Ellipsoid, Strip
-from papers_repro._common import (
+from optbound.papers_repro._common import (
     area,
     claim_table,
     draw_ellipse,

@@ -31,7 +31,7 @@ from optbound.localization import rooms
 from optbound.localization.geometry import to_world
 from optbound.localization.sonar import SonarPaving, localize, simulate_ranges
 from optbound.report.tables import markdown_table
-from papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
+from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 
 PAPER = "LJMW97"
 WORLD = rooms.TRIANGLE

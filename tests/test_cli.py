@@ -7,11 +7,11 @@ import json
 
 import pytest
 
-from benchmarks.registry import families
-from benchmarks.runner import run_suite
+from optbound.bench.registry import families
+from optbound.bench.runner import run_suite
 from optbound.cli import main
 from optbound.report import load_results
-from tests.benchmarks.test_family import FULL_ONLY
+from tests.bench.test_family import FULL_ONLY
 
 TIGHTNESS = [f.name for f in families() if f.kind == "tightness"]
 
@@ -117,12 +117,12 @@ def test_report_of_a_corrupt_results_file_fails_clearly(tmp_path, capsys):
 
 def _fails_at_once(argv, capsys, monkeypatch) -> str:
     """Run ``argv``, expect exit code 2 with one line on stderr, and no task run."""
-    import benchmarks.runner
+    import optbound.bench.runner
 
     def no_work(*args, **kwargs):
         raise AssertionError("work started before the arguments were checked")
 
-    monkeypatch.setattr(benchmarks.runner, "run_suite", no_work)
+    monkeypatch.setattr(optbound.bench.runner, "run_suite", no_work)
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith(f"optbound {argv[0]}: error: ")

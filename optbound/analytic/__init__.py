@@ -7,6 +7,8 @@ kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-e
 a leading batch axis and are fully vectorized.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse
 from optbound.analytic.bounding_update import BoundingUpdate, bounding_update
 from optbound.analytic.lifted import LiftedUpdate, lifted_update
@@ -41,3 +43,5 @@ __all__ = [
     "minkowski_sum_batch",
     "parabola_arc_ellipse",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -3,6 +3,7 @@
 Pure numpy/scipy (no cvxpy), so reports can compare bounds without the SDP stack.
 """
 
+from optbound._lazy import attach
 from optbound.compare.containment import contains, max_level
 from optbound.compare.metrics import (
     log_volume_ratio,
@@ -19,3 +20,5 @@ __all__ = [
     "trace_ratio",
     "volume_ratio",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

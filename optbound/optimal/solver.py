@@ -50,7 +50,7 @@ from optbound.optimal.errors import SolverError
 
 SOLVERS = ("CLARABEL", "SCS")
 #: Clarabel's own solve time (its ``solve_time``, seconds) of the last fast-path solve in this
-#: process, or None; ``benchmarks/sdp_cache.py`` divides a whole call's time by it.
+#: process, or None; ``optbound/bench/sdp_cache.py`` divides a whole call's time by it.
 last_clarabel_seconds: float | None = None
 # Clarabel gained PSD cones in 0.5.0; log det needs them together with exponential cones.
 _MIN_CLARABEL = (0, 5, 0)

@@ -5,6 +5,8 @@ are immutable afterwards, so a set that exists is always a valid set. ``PseudoEl
 an ellipsoid in the lifted space of a ``PolynomialLifting`` [BH, eq. (10)].
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.sets.base import ConvexSet
 from optbound.sets.box import Box
 from optbound.sets.ellipsoid import Ellipsoid
@@ -23,3 +25,5 @@ __all__ = [
     "QuadraticSet",
     "Strip",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -6,7 +6,7 @@ from math import gamma, pi
 import numpy as np
 import pytest
 
-from benchmarks import recursive_tightness
+from optbound.bench import recursive_tightness
 from optbound import Box, Ellipsoid, QuadraticSet, Strip
 from optbound.optimal import outer_ellipsoid
 from optbound.optimal.khachiyan import khachiyan_mvee

@@ -2,8 +2,8 @@
 
 import pytest
 
-from benchmarks.family import SUITES, task_seeds
-from benchmarks.registry import families
+from optbound.bench.family import SUITES, task_seeds
+from optbound.bench.registry import families
 
 
 def test_task_seeds_are_reproducible_and_depend_on_seed_and_family():
@@ -35,14 +35,14 @@ def test_suites_grow_from_tiny_to_full():
 
 
 def test_family_kind_is_validated():
-    from benchmarks.family import Family
+    from optbound.bench.family import Family
 
     with pytest.raises(ValueError, match="kind"):
         Family("x", "X", "fancy", (), lambda suite, seed: [], lambda task: {})
 
 
 def test_missing_requirements_are_named():
-    from benchmarks.family import Family
+    from optbound.bench.family import Family
 
     fam = Family("x", "X", "speed", ("optbound:nope", "no_such_module:run"), list, dict)
     assert fam.missing() == ["optbound:nope", "no_such_module:run"]
