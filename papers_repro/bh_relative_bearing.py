@@ -32,8 +32,6 @@ import numpy as np
 from optbound import optimal
 from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
-from optbound.report.tables import markdown_table
-from optbound.sets import Box
 from optbound.papers_repro._common import (
     claim_table,
     draw_ellipse,
@@ -42,6 +40,8 @@ from optbound.papers_repro._common import (
     run_cli,
     save_figure,
 )
+from optbound.report.tables import markdown_table
+from optbound.sets import Box
 
 PAPER = "BH"
 LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])

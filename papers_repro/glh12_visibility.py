@@ -28,8 +28,8 @@ import numpy as np
 
 from optbound.localization import arena
 from optbound.localization.visibility import track
-from optbound.report.tables import markdown_table
 from optbound.papers_repro._common import DEFAULT_OUT, claim_table, pyplot, save_figure
+from optbound.report.tables import markdown_table
 
 PAPER = "GLH12"
 STEPS = 1500

@@ -28,8 +28,8 @@ import numpy as np
 
 from optbound.localization import rooms
 from optbound.localization.sonar import localize, measurement_box, simulate_ranges
-from optbound.report.tables import markdown_table
 from optbound.papers_repro._common import claim_table, pyplot, run_cli, save_figure
+from optbound.report.tables import markdown_table
 
 PAPER = "KJWM00"
 WORLD = rooms.BELT_ROOM

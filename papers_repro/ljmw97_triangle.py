@@ -30,8 +30,8 @@ from matplotlib.patches import Wedge
 from optbound.localization import rooms
 from optbound.localization.geometry import to_world
 from optbound.localization.sonar import SonarPaving, localize, simulate_ranges
-from optbound.report.tables import markdown_table
 from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
+from optbound.report.tables import markdown_table
 
 PAPER = "LJMW97"
 WORLD = rooms.TRIANGLE

@@ -1,7 +1,7 @@
 """Run every reproduction script into one folder and write ``summary.md`` with all tables.
 
-The scripts are found by :func:`optbound.papers_repro._common.scripts` (every module with ``PAPER`` and
-``main``), the same discovery as ``optbound repro``.
+The scripts are found by :func:`optbound.papers_repro._common.scripts` (every module with
+``PAPER`` and ``main``), the same discovery as ``optbound repro``.
 """
 
 from __future__ import annotations

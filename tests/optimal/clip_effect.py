@@ -16,8 +16,8 @@ import time
 
 import numpy as np
 
-from optbound.bench.recursive_tightness import instance
 from optbound import analytic
+from optbound.bench.recursive_tightness import instance
 from optbound.optimal import outer_ellipsoid
 
 DIMS = (2, 3, 4, 5, 6)
