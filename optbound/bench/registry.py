@@ -46,7 +46,10 @@ def _load(name: str, target: str) -> Family:
     try:
         family = getattr(importlib.import_module(module), attr)
     except ModuleNotFoundError as exc:
-        if exc.name not in SOURCE_ONLY:
+        # Absent is the target module or a package above it (e.g. a user's own package named
+        # ``benchmarks`` has no ``speed_analytic``), not something the module imports.
+        absent = exc.name is not None and f"{module}.".startswith(f"{exc.name}.")
+        if not absent or module.partition(".")[0] not in SOURCE_ONLY:
             raise
         return _absent(name, target)
     if family.name != name:
