@@ -14,11 +14,14 @@ SUBPACKAGES = (
     "analytic",
     "bench",
     "compare",
+    "estimation",
     "interval",
     "localization",
     "localization.geometry",
     "optimal",
+    "problems",
     "report",
+    "scenarios",
     "sets",
 )
 

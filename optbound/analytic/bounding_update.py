@@ -32,6 +32,7 @@ from scipy.optimize import brentq
 from optbound.analytic._exact import enclose, matmul, rational, solve, transpose
 from optbound.sets import _validate as v
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "trace")
 GRID_POINTS = 257
@@ -41,13 +42,17 @@ S_TOL = 1e-12
 
 
 @dataclass(frozen=True)
-class BoundingUpdate:
+class BoundingUpdate(BoundResult):
     """Result of :func:`bounding_update`.
 
     ``ellipsoid`` is the outer bound (None if the feasible set is empty); ``lam`` the lambda
     used, or for an empty result the lambda whose s(lambda) < 0 certifies emptiness;
-    ``margin`` the certified relative inflation of the float member (0 for E itself).
+    ``margin`` the certified relative inflation of the float member (0 for E itself). As a
+    ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
     """
+
+    set_attribute = "ellipsoid"
+    certified = True
 
     ellipsoid: Ellipsoid | None
     lam: float
@@ -143,7 +148,7 @@ def bounding_update(
         Guarantee: ``ellipsoid``, its floats read as exact numbers, contains the feasible set
         exactly. The member at the chosen (float) lambda is evaluated in exact rational
         arithmetic, rounded, and inflated by the certified margin of
-        ``optbound.analytic._midrad``. ``ellipsoid`` is None only when the feasible set is
+        ``optbound.analytic._kernels.midrad``. ``ellipsoid`` is None only when the feasible set is
         proven empty (s(lambda) < 0 exactly for some lambda). If s(lambda) = 0 (the set is at
         most one point) or the member leaves the supported domain, lambda = 0 is used: E
         itself, always a valid outer bound.

@@ -44,7 +44,7 @@ problem's own size, so the lifted shapes stay well conditioned.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -54,6 +54,7 @@ from optbound.localization.geometry import bearing_residual, bearing_sides, wrap
 from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
+from optbound.sets.result import BoundResult
 
 ORDERS = (1, 2)
 # Relative outward margin of the prior box and of the prior's lifted shape (rounding cover).
@@ -270,18 +271,31 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
     Order 1: one row ``w - |M|^2`` with the interval noise as a strip [BH, eq. (22)].
     Order 2: rows ``w - |M|^2`` and ``w^2 - |M|^4`` [BH, eqs. (24)-(26)] with the noise ellipse
     of the parabola arc ``eta([lo^2, hi^2])`` (``analytic.parabola_arc_ellipse``).
+
+    The arc's ellipse has axes of order ``r w0`` and ``r^2 / w0`` (``w0``, ``r``: midpoint and
+    half-width of ``[lo^2, hi^2]``), so its condition number grows like ``(w0 / r)^4``; for a
+    ring far larger than its thickness in the filter's frame (``|gamma_hat|`` near
+    ``pi - eps``, where circle 1 becomes a line, or a prior box small against the ring) it is
+    singular in float64. Such a ring contributes only its first row with the strip noise: the
+    same row as order 1, a valid and weaker constraint, so the bound stays guaranteed.
     """
     xm, ym = (ring.center - offset) / scale
     m2 = xm * xm + ym * ym
     s2 = scale * scale
     z_hat = ring.z_hat / s2
+    v_lo, v_hi = (b / s2 for b in ring.noise_interval())
+    strip = [z_hat - m2], [[(0.5 * (v_hi - v_lo)) ** 2]], [0.5 * (v_lo + v_hi)]
     if order == 1:
-        H = np.array([[-2.0 * xm, -2.0 * ym, 1.0, 1.0]])
-        v_lo, v_hi = (b / s2 for b in ring.noise_interval())
-        return H, [z_hat - m2], [[(0.5 * (v_hi - v_lo)) ** 2]], [0.5 * (v_lo + v_hi)]
+        return np.array([[-2.0 * xm, -2.0 * ym, 1.0, 1.0]]), *strip
+    first = [-2.0 * xm, -2.0 * ym, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]
+    arc = parabola_arc_ellipse(ring.lo**2 / s2, ring.hi**2 / s2)
+    try:
+        v.spd_matrix("V", arc.shape)
+    except ValueError:
+        return np.array([first]), *strip
     H = np.array(
         [
-            [-2.0 * xm, -2.0 * ym, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+            first,
             [
                 -4.0 * xm * m2,
                 -4.0 * ym * m2,
@@ -294,7 +308,6 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
             ],
         ]
     )
-    arc = parabola_arc_ellipse(ring.lo**2 / s2, ring.hi**2 / s2)
     eta_hat = np.array([z_hat, z_hat * z_hat])
     # z* = eta(z_hat) - [|M|^2, |M|^4]; v* = eta(z_hat) - eta(w) ranges over the reflected arc.
     return H, eta_hat - np.array([m2, m2 * m2]), arc.shape, eta_hat - arc.center
@@ -325,14 +338,26 @@ def lifted_prior(lift: PolynomialLifting, box: Box) -> PseudoEllipsoid:
 
 
 @dataclass(frozen=True)
-class BearingResult:
+class BearingResult(BoundResult):
     """Result of :func:`localize`: the final ``bound`` (None if proven empty), ``steps`` (the
-    bound after each pair), the ``prior`` and the ``lams`` of the ring updates."""
+    bound after each pair), the ``prior``, the ``lams`` and certified ``margins`` of the ring
+    updates.
+
+    As a ``BoundResult``: ``set`` is ``bound``, certified; ``margin`` is the largest relative
+    inflation any ring update applied (``analytic.lifted_update``)."""
+
+    set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid | None
     steps: list[PseudoEllipsoid]
     prior: PseudoEllipsoid
     lams: list[float]
+    margins: list[float] = field(default_factory=list)
+
+    @property
+    def margin(self) -> float:
+        return max(self.margins, default=0.0)
 
 
 def localize(
@@ -384,17 +409,18 @@ def localize(
     scale = float(0.5 * np.max(box.hi - box.lo))
     lift = lifting(order, offset, scale)
     prior = lifted_prior(lift, box)
-    P, steps, lams = prior, [], []
+    P, steps, lams, margins = prior, [], [], []
     for pair_rings in ring_list:
         for ring in pair_rings:
             H, z, V, v_center = ring_rows(ring, order, offset, scale)
             update = lifted_update(P, H, z, V, v_center, criterion=criterion)
             lams.append(update.lam)
+            margins.append(update.margin)
             if update.bound is None:
-                return BearingResult(None, steps, prior, lams)
+                return BearingResult(None, steps, prior, lams, margins)
             P = update.bound
         steps.append(P)
-    return BearingResult(P, steps, prior, lams)
+    return BearingResult(P, steps, prior, lams, margins)
 
 
 # ---------------------------------------------------------------------- containment proof
@@ -413,8 +439,15 @@ def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving)
 
     Boxes not proven inside at once (boundary boxes stick out of the exact set by up to their
     width) are bisected, and sub-boxes the exact tests prove disjoint from the set are dropped
-    (``PseudoEllipsoid.prove_covers``).
+    (``PseudoEllipsoid.prove_covers``). Raises ``TypeError`` naming an argument of another type.
     """
+    for name, value, kind in (
+        ("bound", bound, PseudoEllipsoid),
+        ("data", data, Measurements),
+        ("paving", paving, Paving),
+    ):
+        if not isinstance(value, kind):
+            raise TypeError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
     return bound.prove_covers(paving.outer(), exact_test(data))
 
 
@@ -466,49 +499,26 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
     return EllipseBracket(sdp.ellipsoid, boxes, best, float(sdp.lower_bound))
 
 
-# ------------------------------------------------------------------------------- instances
-#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
-SECT5_PAIRS = ((2, 0), (0, 1), (1, 2))
-
-
-def bearings(x, landmarks, pairs=SECT5_PAIRS) -> np.ndarray:
-    """Noise-free relative bearings [BH, eq. (2)] seen from the point ``x``."""
+# ------------------------------------------------------------------------------ measurement
+def bearings(x, landmarks, pairs) -> np.ndarray:
+    """Noise-free relative bearings [BH, eq. (2)] of the landmark ``pairs`` seen from ``x``."""
     L = np.asarray(landmarks, dtype=float)
     ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
     return wrap_angle([ang[i] - ang[j] for i, j in pairs])
 
 
-def random_instance(rng: np.random.Generator, pairs=SECT5_PAIRS):
-    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
-
-    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
-    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
-    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
-    need the crescent shape.
-    """
-    pairs = [tuple(p) for p in pairs]
-    margin = np.radians(3.0)
-    while True:
-        L = rng.uniform(-3.0, 3.0, (3, 2))
-        x = rng.uniform(-1.0, 1.0, 2)
-        eps = np.radians(rng.uniform(1.0, 8.0))
-        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
-        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
-            np.linalg.norm(L - x, axis=1)
-        )
-        if min(dists) > 0.3 and np.all(
-            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
-        ):
-            return L, pairs, wrap_angle(gam), eps, x
+#: The model contract's measurement verb (:mod:`optbound.localization`).
+measure = bearings
 
 
 __all__ = [
-    "SECT5_PAIRS",
+    "ORDERS",
     "BearingResult",
     "EllipseBracket",
     "Measurements",
     "Ring",
     "Rings",
+    "all_rings",
     "bearings",
     "best_ellipse",
     "bound_ellipse_quadratics",
@@ -521,9 +531,9 @@ __all__ = [
     "lifted_prior",
     "lifting",
     "localize",
+    "measure",
     "measurements",
     "prior_box",
-    "random_instance",
     "ring_rows",
     "rings",
 ]
