@@ -17,6 +17,7 @@ Families: ``strip`` (ellipsoid ∩ strip) so far; each family module defines
 
 from __future__ import annotations
 
+from optbound._lazy import attach
 from optbound.problems import strip
 from optbound.problems.audit import evaluate
 from optbound.problems.evaluation import Evaluation
@@ -52,3 +53,5 @@ def suite(name: str, families: list[str] | None = None, seed: int = 0) -> list[P
 
 
 __all__ = ["SUITES", "Evaluation", "Problem", "evaluate", "families", "suite"]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -25,7 +25,7 @@ the caches, which slows the next optbound call by about 40 %.) CPU times are rep
 a loaded machine a 3 ms run that is preempted once waits a whole scheduler slice, which
 inflates short wall times far more than long ones.
 
-``python -m benchmarks.sivia_codac`` prints the table.
+``python -m optbound.bench.sivia_codac`` prints the table.
 """
 
 from __future__ import annotations

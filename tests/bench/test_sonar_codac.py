@@ -5,7 +5,7 @@ import importlib.util
 import numpy as np
 import pytest
 
-from benchmarks import sonar_codac as bench
+from optbound.bench import sonar_codac as bench
 from optbound.localization.sonar import simulate_ranges
 
 

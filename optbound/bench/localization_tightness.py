@@ -38,7 +38,7 @@ import time
 
 import numpy as np
 
-from benchmarks.family import Family, task_seeds
+from optbound.bench.family import Family, task_seeds
 from optbound.localization import relative_bearing as rb
 from optbound.localization.linearized_bearing import linearized_localize
 from optbound.scenarios import bh_geometry as bh

@@ -1,6 +1,6 @@
 """SIVIA speed: optbound's vectorised paving vs codac (an optional extra).
 
-The measurement lives in :mod:`benchmarks.sivia_codac` (owned by the interval module); when
+The measurement lives in :mod:`optbound.bench.sivia_codac` (owned by the interval module); when
 codac is not installed it returns a note, and the report prints that note instead of a ratio.
 The task runs in a child process: codac leaves the FPU rounding mode set to upward, which
 would otherwise skew every later float operation of the run (and of a test session).
@@ -8,8 +8,8 @@ would otherwise skew every later float operation of the run (and of a test sessi
 
 from __future__ import annotations
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.timing import speed_record
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import speed_record
 
 NAME = "speed_sivia"
 # (eps values, repeats) per suite.
@@ -22,8 +22,8 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def sivia_records(rows: list[dict], family: str = NAME, what: str = "sivia") -> list[dict]:
-    """Records from rows of :func:`benchmarks.sivia_codac.run` (or of a run with the same keys,
-    e.g. :func:`benchmarks.sonar_codac.run`): codac's time, then ours with the ratio."""
+    """Records from rows of :func:`optbound.bench.sivia_codac.run` (or of a run with the same keys,
+    e.g. :func:`optbound.bench.sonar_codac.run`): codac's time, then ours with the ratio."""
     out = []
     for row in rows:
         extra = {k: v for k, v in row.items() if k not in ("name", "seconds", "codac_seconds")}
@@ -34,7 +34,7 @@ def sivia_records(rows: list[dict], family: str = NAME, what: str = "sivia") -> 
 
 
 def run(task: dict) -> dict:
-    from benchmarks import sivia_codac
+    from optbound.bench import sivia_codac
 
     rows = sivia_codac.run(eps_values=tuple(task["eps"]), repeats=task["repeats"])
     notes = [row["note"] for row in rows if "note" in row]
@@ -45,7 +45,7 @@ FAMILY = Family(
     name=NAME,
     title="Speed: SIVIA vs codac",
     kind="speed",
-    requires=("optbound.interval:sivia", "benchmarks.sivia_codac:run"),
+    requires=("optbound.interval:sivia", "optbound.bench.sivia_codac:run"),
     tasks=tasks,
     run=run,
     parallel=False,

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from benchmarks.instances import (
+from optbound.bench.instances import (
     STRIP_KINDS,
     random_ellipsoid,
     random_strip,

@@ -1,6 +1,6 @@
 """Sonar localization speed: optbound's ``sonar.localize`` vs codac 2 separators (full suite).
 
-The measurement lives in :mod:`benchmarks.sonar_codac` (the LJMW97 triangle, eps = 0.04; codac
+The measurement lives in :mod:`optbound.bench.sonar_codac` (the LJMW97 triangle, eps = 0.04; codac
 runs in a child process of its own). codac takes about 4 minutes, so the family has a task in
 the full suite only; like ``speed_sivia`` it runs isolated in a child process, since codac
 leaves the FPU rounding mode set to upward. Without codac the report prints its note.
@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import math
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.speed_sivia import sivia_records
-from benchmarks.timing import speed_record
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.speed_sivia import sivia_records
+from optbound.bench.timing import speed_record
 
 NAME = "speed_sonar"
 
@@ -22,7 +22,7 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
-    """Records and notes from :func:`benchmarks.sonar_codac.run`'s rows.
+    """Records and notes from :func:`optbound.bench.sonar_codac.run`'s rows.
 
     A row without a finite codac time (codac missing, or stopped at the timeout) gives our
     time alone and its note.
@@ -41,7 +41,7 @@ def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
 
 
 def run(task: dict) -> dict:
-    from benchmarks import sonar_codac
+    from optbound.bench import sonar_codac
 
     records, notes = sonar_records(sonar_codac.run())
     return {"records": records, "notes": notes}
@@ -55,7 +55,7 @@ FAMILY = Family(
     name=NAME,
     title="Speed: sonar localization vs codac",
     kind="speed",
-    requires=("optbound.localization.sonar:localize", "benchmarks.sonar_codac:run"),
+    requires=("optbound.localization.sonar:localize", "optbound.bench.sonar_codac:run"),
     tasks=tasks,
     run=run,
     parallel=False,

@@ -10,7 +10,7 @@ Every ratio is taken between two timings of the same run on the same machine:
 - one 1500-iteration run with 7 robots and 6 obstacles (the issue's budget: 20 s on one core),
   in CPU seconds of this process (the machine is shared: CPU time, not wall time).
 
-Standalone: ``python -m benchmarks.speed_glh12 [--suite tiny|quick|full]`` prints a Markdown
+Standalone: ``python -m optbound.bench.speed_glh12 [--suite tiny|quick|full]`` prints a Markdown
 table. In ``optbound bench`` it is the serial family ``speed_glh12`` (one task).
 """
 
@@ -21,8 +21,8 @@ import time
 
 import numpy as np
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.timing import per_call, speed_record
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import per_call, speed_record
 from optbound.interval import Interval, Tri
 from optbound.localization.geometry import intersect
 from optbound.localization.visibility import luvia, track, visibility_test

@@ -2,9 +2,9 @@
 
 import pytest
 
-from benchmarks import runner
-from benchmarks.executors import executor
-from benchmarks.registry import families
+from optbound.bench import runner
+from optbound.bench.executors import executor
+from optbound.bench.registry import families
 
 
 def _square(x):

@@ -28,11 +28,11 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 import optbound
-from benchmarks.executors import EXECUTORS
-from benchmarks.executors import executor as make_executor
-from benchmarks.family import SUITES, Family
-from benchmarks.progress import Progress
-from benchmarks.registry import families as registered_families
+from optbound.bench.executors import EXECUTORS
+from optbound.bench.executors import executor as make_executor
+from optbound.bench.family import SUITES, Family
+from optbound.bench.progress import Progress
+from optbound.bench.registry import families as registered_families
 from optbound.report.results import SCHEMA
 
 
@@ -57,11 +57,11 @@ def run_suite(
     jobs : int
         Worker processes for the parallel tasks (1 runs them in this process).
     progress : bool
-        Show per-family progress bars on stderr (:mod:`benchmarks.progress`).
+        Show per-family progress bars on stderr (:mod:`optbound.bench.progress`).
     names : list of str, optional
         Run only these registered families (default: all of them).
     executor : {"process", "dask"}
-        Where parallel tasks run (:mod:`benchmarks.executors`); the results are the same.
+        Where parallel tasks run (:mod:`optbound.bench.executors`); the results are the same.
     scheduler : str, optional
         Address of a running Dask scheduler (implies ``executor="dask"``).
     where : callable, optional

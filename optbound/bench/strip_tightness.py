@@ -20,9 +20,9 @@ import itertools
 
 import numpy as np
 
-from benchmarks import records
-from benchmarks.family import Family, task_seeds
-from benchmarks.instances import STRIP_KINDS, random_ellipsoid, random_strip
+from optbound.bench import records
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.instances import STRIP_KINDS, random_ellipsoid, random_strip
 
 NAME = "strip"
 # (dims, condition numbers, repetitions per cell); 10 is in every suite for the 2-D figures.

@@ -6,8 +6,8 @@ import base64
 import numpy as np
 import pytest
 
-from benchmarks import localization_tightness as lt
-from benchmarks.registry import families
+from optbound.bench import localization_tightness as lt
+from optbound.bench.registry import families
 
 FIELDS = {
     "family",

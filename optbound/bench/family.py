@@ -17,8 +17,6 @@ import zlib
 from collections.abc import Callable
 from dataclasses import dataclass
 
-import numpy as np
-
 SUITES = ("tiny", "quick", "full")
 KINDS = ("tightness", "recursive", "speed", "papers")
 
@@ -89,5 +87,7 @@ def task_seeds(seed: int, name: str, count: int) -> list[int]:
     The family name enters the seed sequence, so two families never share instances and
     adding a family does not change the instances of the others.
     """
+    import numpy as np  # here, not at the top: the command line imports this module
+
     state = np.random.SeedSequence([seed, zlib.crc32(name.encode())]).generate_state(count)
     return [int(s) for s in state]

@@ -1,6 +1,6 @@
 """Progress bars: one per family, a total that advances by task cost."""
 
-from benchmarks.progress import Progress
+from optbound.bench.progress import Progress
 
 
 def test_total_advances_by_cost_and_families_by_task(capsys):

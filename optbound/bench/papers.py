@@ -1,6 +1,6 @@
 """The papers' results in the bench: every ``papers_repro`` script, one task each.
 
-The scripts are discovered (:func:`papers_repro._common.scripts`), so a new reproduction
+The scripts are discovered (:func:`optbound.papers_repro._common.scripts`), so a new reproduction
 script appears here without any edit. The quick and tiny suites run each script's
 ``quick=True`` variant, the full suite the full one. A task runs its script in a temporary
 folder and returns the script's Markdown (a ``quantity | paper | optbound`` table with the
@@ -15,7 +15,7 @@ import base64
 import tempfile
 from pathlib import Path
 
-from benchmarks.family import Family, task_seeds
+from optbound.bench.family import Family, task_seeds
 
 NAME = "papers"
 ATTACHMENT_DIR = "papers"
@@ -30,7 +30,7 @@ def tasks(suite: str, seed: int) -> list[dict]:
     only identifies the task; it is derived from the script's name, so adding a script
     changes no other task.
     """
-    from papers_repro._common import scripts
+    from optbound.papers_repro._common import scripts
 
     found = scripts()[:1] if suite == "tiny" else scripts()
     return [
@@ -45,7 +45,7 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def run(task: dict) -> dict:
-    from papers_repro._common import Script
+    from optbound.papers_repro._common import Script
 
     script = Script(task["script"], task["paper"])
     with tempfile.TemporaryDirectory() as tmp:
@@ -75,7 +75,7 @@ FAMILY = Family(
     name=NAME,
     title="The papers' results, reproduced",
     kind="papers",
-    requires=("papers_repro._common:scripts",),
+    requires=("optbound.papers_repro._common:scripts",),
     tasks=tasks,
     run=run,
     cost=cost,

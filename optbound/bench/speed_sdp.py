@@ -1,13 +1,13 @@
 """SDP solve time with the cvxpy problem cached (DPP parameters) vs rebuilt for every solve.
 
-The measurement itself lives in :mod:`benchmarks.sdp_cache` (owned by the SDP module); this
+The measurement itself lives in :mod:`optbound.bench.sdp_cache` (owned by the SDP module); this
 family runs it inside the suite so that its ratio lands in the same report.
 """
 
 from __future__ import annotations
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.timing import speed_record
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import speed_record
 
 NAME = "speed_sdp"
 SOLVES = {"tiny": 3, "quick": 30, "full": 200}
@@ -18,14 +18,14 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def run(task: dict) -> dict:
-    from benchmarks import sdp_cache
+    from optbound.bench import sdp_cache
 
     timings = sdp_cache.run(n_solves=task["n_solves"], seed=task["seed"])
     return {"records": cache_records(timings)}
 
 
 def cache_records(timings: dict) -> list[dict]:
-    """Records from :func:`benchmarks.sdp_cache.run`'s dict of cached/rebuilt timings."""
+    """Records from :func:`optbound.bench.sdp_cache.run`'s dict of cached/rebuilt timings."""
     what = f"{timings['dim']}-D ellipsoid ∩ strip, median of {timings['n_solves']}"
     cached, rebuilt = float(timings["cached_s"]), float(timings["rebuilt_s"])
     return [
@@ -58,7 +58,7 @@ FAMILY = Family(
     name=NAME,
     title="Speed: SDP solve, cached vs rebuilt",
     kind="speed",
-    requires=("benchmarks.sdp_cache:run",),
+    requires=("optbound.bench.sdp_cache:run",),
     tasks=tasks,
     run=run,
     parallel=False,

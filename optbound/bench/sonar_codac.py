@@ -16,13 +16,13 @@ one semantic difference: codac's test treats the strict margins (reflecting side
 the face) as non-strict. That matters only on a set of measure zero.
 
 Importing codac switches the process to round-upward, so codac runs in a **child process**
-(``python -m benchmarks.sonar_codac --child EPS``) that reports its time and boxes as JSON.
+(``python -m optbound.bench.sonar_codac --child EPS``) that reports its time and boxes as JSON.
 optbound runs in this process in round-to-nearest. Timing: median of ``repeats`` runs after a
-warm-up for optbound (``benchmarks.sivia_codac._median_time``). codac gets one timed run: it
+warm-up for optbound (``optbound.bench.sivia_codac._median_time``). codac gets one timed run: it
 takes minutes. Both are wall-clock on the same, possibly loaded, machine, measured in the
 same run; the 1-min load average is reported.
 
-Registration: a standalone script; ``python -m benchmarks.sonar_codac`` prints the table and
+Registration: a standalone script; ``python -m optbound.bench.sonar_codac`` prints the table and
 ``run(eps)`` returns the rows (``ratio`` = codac wall / optbound wall).
 """
 
@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.sivia_codac import _median_time
+from optbound.bench.sivia_codac import _median_time
 from optbound.interval._fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
 from optbound.localization.sonar import D_MAX, localize, measurement_box, simulate_ranges
@@ -177,7 +177,7 @@ def _in_child(args: list[str], timeout: float) -> dict:
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     try:
         done = subprocess.run(
-            [sys.executable, "-m", "benchmarks.sonar_codac", *args],
+            [sys.executable, "-m", "optbound.bench.sonar_codac", *args],
             cwd=ROOT,
             env=env,
             capture_output=True,

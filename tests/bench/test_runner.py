@@ -9,7 +9,7 @@ def test_tasks_run_with_single_threaded_blas():
     in a child, so the test process keeps its own settings)."""
     code = (
         "import scipy.linalg; from threadpoolctl import threadpool_info; "
-        "from benchmarks import runner; from benchmarks.registry import families; "
+        "from optbound.bench import runner; from optbound.bench.registry import families; "
         "fam = next(f for f in families() if f.name == 'minkowski'); "
         "runner._run_task(fam, fam.tasks('tiny', 0)[0]); "
         "blas = [i for i in threadpool_info() if i['user_api'] == 'blas']; "

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from benchmarks import speed_glh12 as bench
+from optbound.bench import speed_glh12 as bench
 from optbound.interval import Tri
 from optbound.localization.visibility import visibility_test
 from optbound.scenarios import arena

@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from benchmarks import speed_glh12, speed_hs96, speed_sonar
-from benchmarks.registry import families
+from optbound.bench import speed_glh12, speed_hs96, speed_sonar
+from optbound.bench.registry import families
 
 
 def test_registered_as_serial_speed_families():

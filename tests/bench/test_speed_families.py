@@ -4,8 +4,8 @@ import time
 
 import pytest
 
-from benchmarks import sivia_codac, speed_sdp, speed_sivia
-from benchmarks.timing import per_call
+from optbound.bench import sivia_codac, speed_sdp, speed_sivia
+from optbound.bench.timing import per_call
 
 
 def test_missing_codac_becomes_a_note_not_a_failure(monkeypatch):
@@ -41,7 +41,7 @@ def test_sdp_cache_ratio_is_rebuilt_over_cached():
 
 
 def test_sdp_cache_measures_clarabels_own_time():
-    from benchmarks import sdp_cache
+    from optbound.bench import sdp_cache
 
     numbers = sdp_cache.run(n_solves=3, seed=1)
     assert 0 < numbers["clarabel_s"] < numbers["cached_s"]

@@ -12,7 +12,7 @@ setup) is measured per call, in two settings: the cached calls of the alternatin
 right after a rebuild (whose compiling evicts the CPU caches), and a run of consecutive cached
 calls on fresh instances of the same shape, as in a sweep over one problem shape.
 
-Run ``python -m benchmarks.sdp_cache`` to print the numbers.
+Run ``python -m optbound.bench.sdp_cache`` to print the numbers.
 """
 
 from __future__ import annotations

@@ -12,10 +12,10 @@ Rows (median over repeats; every ratio is between two timings of this run):
 - the office reproduction, quick variant (target <= ~20 s) and, with ``--full``, the full
   10-lap run (target <= 2 min on 2 cores).
 
-Run: ``python -m benchmarks.speed_hs96 [--full]``. As the family ``speed_hs96`` of
+Run: ``python -m optbound.bench.speed_hs96 [--full]``. As the family ``speed_hs96`` of
 ``optbound bench`` (one task per part, run serially): tiny times ``linear_position`` and
 ``associate``; quick adds the tracker on 10 scans; full the tracker on 40 scans and both
-office reproductions. Every part returns :func:`benchmarks.timing.speed_record` s whose
+office reproductions. Every part returns :func:`optbound.bench.timing.speed_record` s whose
 ``ratio`` is reference time / ours (or target / ours where the target is the reference).
 """
 
@@ -31,9 +31,9 @@ from pathlib import Path
 
 import numpy as np
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.timing import speed_record
 from optbound import analytic
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import speed_record
 from optbound.localization.association import associate
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position
@@ -209,7 +209,7 @@ def bench_tracker(
 
 def bench_repro(full: bool) -> list[dict]:
     """The office reproduction, quick variant, and with ``full`` also the 10-lap run."""
-    from papers_repro import hs96_office
+    from optbound.papers_repro import hs96_office
 
     rows = []
     for quick in (True, False) if full else (True,):

@@ -14,9 +14,9 @@ import itertools
 
 import numpy as np
 
-from benchmarks import records
-from benchmarks.family import Family, task_seeds
-from benchmarks.instances import random_ellipsoid
+from optbound.bench import records
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.instances import random_ellipsoid
 
 NAME = "minkowski"
 SIZES = {
