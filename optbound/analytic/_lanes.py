@@ -22,15 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._midrad import (
-    RADIUS_SAFETY,
-    TINY,
-    U,
-    output_floor,
-    segment_scale,
-    segment_term,
-)
-from optbound.sets._domain import (
+from optbound._core.domain import (
     ASYMMETRIC,
     CENTER_RANGE,
     COND_MAX,
@@ -44,6 +36,14 @@ from optbound.sets._domain import (
     RATIO_MAX,
     SHAPE_RANGE,
     SYMMETRY_RTOL,
+)
+from optbound.analytic._midrad import (
+    RADIUS_SAFETY,
+    TINY,
+    U,
+    output_floor,
+    segment_scale,
+    segment_term,
 )
 
 W = 128  # lanes per block (3-D strip kernel: 32, 64, 128, 256, 512 measured; 128 fastest)

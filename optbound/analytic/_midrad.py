@@ -30,7 +30,7 @@ import numpy as np
 from numba import njit, types
 from numba.extending import intrinsic
 
-from optbound.sets._domain import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
+from optbound._core import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
 
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms

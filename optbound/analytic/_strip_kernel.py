@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound._core import MAG, MAX_DIAG, check_ellipsoid
 from optbound.analytic._lanes import (
     CHECK_ROWS,
     W,
@@ -50,7 +51,6 @@ from optbound.analytic._midrad import (
 )
 from optbound.analytic._spin import post_slices
 from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
-from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 # How lambda is chosen (ROBUST_PROJECTION: [HS96, eq. (30)] with the projection-optimal lambda).

@@ -21,6 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import check_ellipsoid, raise_for
+from optbound._core import validate as v
 from optbound.analytic import _batch
 from optbound.analytic._minkowski_kernel import (
     BAD_KAPPA,
@@ -32,8 +34,6 @@ from optbound.analytic._minkowski_kernel import (
     sum_range,
 )
 from optbound.analytic._threads import NO_POSTS, ellipsoid_outputs, run_sliced
-from optbound.sets import _validate as v
-from optbound.sets._domain import check_ellipsoid, raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 
 CRITERIA = ("volume", "trace", "size_xy_psi")

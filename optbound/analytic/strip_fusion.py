@@ -38,6 +38,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import raise_for
+from optbound._core import validate as v
 from optbound.analytic import _batch, _threads
 from optbound.analytic._strip_kernel import (
     BAD_A,
@@ -57,8 +59,6 @@ from optbound.analytic._strip_kernel import (
     workspace,
 )
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
-from optbound.sets import _validate as v
-from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.strip import Halfspace, Strip
 

@@ -28,9 +28,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.interval.interval import Interval, as_interval
 from optbound.interval.paving import Paving
-from optbound.sets import Box
 
 #: codac's names of the three box lists of a paving, and optbound's.
 PAVING_PARTS = (("inner", "inner"), ("bound", "boundary"), ("outer_complem", "outside"))

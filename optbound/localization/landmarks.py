@@ -34,9 +34,9 @@ import math
 import numpy as np
 from numba import njit
 
+from optbound._core import validate as v
 from optbound.interval import Interval, Paving, Tri, atan2, intersection, pave, sqrt
 from optbound.sets import Box, Ellipsoid
-from optbound.sets import _validate as v
 
 #: Default relative singularity threshold: smallest singular value of H over the size of the
 #: terms that cancel in it (see :func:`linear_position`).
@@ -51,13 +51,7 @@ REFINE = 3
 # ----------------------------------------------------------------------------- validation
 def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
     """Validate an (N, 2) array of finite real landmark positions."""
-    if np.iscomplexobj(np.asarray(value)):
-        raise ValueError(f"{name} must be real, got complex values")
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as err:
-        raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
-    arr = v.finite_matrix(name, arr, (None, 2))
+    arr = v.finite_matrix(name, value, (None, 2))
     if arr.shape[0] < min_count:
         raise ValueError(f"{name} needs at least {min_count} landmarks, got {arr.shape[0]}")
     return arr
@@ -86,10 +80,8 @@ def as_shapes(name: str, value, count: int) -> np.ndarray:
     """
     if value is None:
         return np.zeros((count, 2, 2))
-    arr = np.asarray(value)
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex values")
-    arr = np.broadcast_to(arr.astype(float), (count, 2, 2)) if arr.shape == (2, 2) else arr
+    arr = v.real_array(name, value)
+    arr = np.broadcast_to(arr, (count, 2, 2)) if arr.shape == (2, 2) else arr
     if arr.shape != (count, 2, 2):
         raise ValueError(f"{name} must have shape ({count}, 2, 2) or (2, 2), got {arr.shape}")
     if not np.all(np.isfinite(arr)):

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.sets._domain import check_ellipsoid
+from optbound._core import check_ellipsoid
 
 EPS = np.finfo(float).eps
 

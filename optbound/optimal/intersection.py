@@ -49,6 +49,7 @@ from functools import lru_cache
 import cvxpy as cp
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.optimal import _cvx, _small
 from optbound.optimal.certify import certify_lmi
 from optbound.optimal.emptiness import explain_failure, refuse_empty
@@ -58,7 +59,6 @@ from optbound.optimal.lower import sampled_lower_bound
 from optbound.optimal.result import OuterResult, objective_value
 from optbound.optimal.solver import solve
 from optbound.sets import Ellipsoid, QuadraticSet
-from optbound.sets import _validate as v
 
 OBJECTIVES = ("volume", "trace", "projection")
 # Eigenvalues of normalized quadratic parts below this count as zero.

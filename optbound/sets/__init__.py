@@ -5,8 +5,7 @@ are immutable afterwards, so a set that exists is always a valid set. ``PseudoEl
 an ellipsoid in the lifted space of a ``PolynomialLifting`` [BH, eq. (10)].
 """
 
-from optbound.sets.base import ConvexSet
-from optbound.sets.box import Box
+from optbound._core import Box, ConvexSet
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.lifting import PolynomialLifting
 from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid

@@ -12,11 +12,9 @@ from math import lgamma, log, pi
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._domain import check_ellipsoid, raise_for, real_array
+from optbound._core import Box, ConvexSet, check_ellipsoid, raise_for, real_array
+from optbound._core import validate as v
 from optbound.sets._triangular import lower_inverse
-from optbound.sets.base import ConvexSet
-from optbound.sets.box import Box
 
 
 class Ellipsoid(ConvexSet):

@@ -6,9 +6,8 @@ import math
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._domain import MAG
-from optbound.sets.base import ConvexSet
+from optbound._core import MAG, ConvexSet
+from optbound._core import validate as v
 
 
 def _normal(name: str, a) -> np.ndarray:

@@ -2,7 +2,8 @@
 
 A set knows its dimension, tests membership of many points at once, and evaluates its
 support function ``h(d) = max {d^T x : x in set}``. Everything else (bounding boxes,
-clipping, comparisons) is built on these three.
+clipping, comparisons) is built on these three. It lives in the core because ``Box``, which
+every layer uses, implements it; the set types of ``optbound.sets`` implement it too.
 """
 
 from __future__ import annotations
