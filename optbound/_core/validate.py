@@ -35,14 +35,15 @@ def real_array(name: str, value) -> np.ndarray:
     """
     if type(value) is np.ndarray and value.dtype == np.float64:
         return value  # the common case, without the checks' ~1 us
-    if np.iscomplexobj(value):
-        raise NotRealError(f"{name} must be real, got complex values")
     try:
-        return np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
+        arr = np.asarray(value)
+        if not np.iscomplexobj(arr):
+            return arr.astype(np.float64, copy=False)
+    except (TypeError, ValueError):  # ragged, text, objects that are not numbers
         raise NotRealError(
             f"{name} must be an array of real numbers, got {type(value).__name__}"
         ) from None
+    raise NotRealError(f"{name} must be real, got complex values")
 
 
 def finite_array(name: str, value) -> np.ndarray:
