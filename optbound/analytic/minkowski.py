@@ -93,7 +93,7 @@ def _raise(code: int, index: int, names, batched: bool) -> None:
     if code == OUT_OF_DOMAIN:
         raise ValueError(
             "the sum leaves the supported domain (semi-axes up to 1e60, see "
-            "optbound.sets._domain)" + where
+            "optbound._core.domain)" + where
         )
     raise_for(code % 10, *names[code // 10], where)
 
@@ -137,7 +137,7 @@ def minkowski_sum(
     Guarantee: the returned ellipsoid, its floats read as exact numbers, contains E1 + E2
     exactly (for every criterion and every kappa in (0, 1)): the member is evaluated with
     certified error bounds and inflated by a certified margin (``optbound.analytic._midrad``);
-    near-degenerate results are widened to the output domain (``optbound.sets._domain``).
+    near-degenerate results are widened to the output domain (``optbound._core.domain``).
 
     Parameters
     ----------

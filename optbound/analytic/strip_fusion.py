@@ -19,7 +19,7 @@ Conventions of this module (numerical decisions, all conservative):
   arithmetic) and inflated by a certified margin (``optbound.analytic._midrad``); ``margin``
   reports it. It is about ``U cond(result)`` (each shape entry is rounded once; storing the
   result as floats alone costs that much in its thin direction). Near-degenerate
-  results are widened to the output domain (``optbound.sets._domain``), never refused.
+  results are widened to the output domain (``optbound._core.domain``), never refused.
 - ``clip=True`` first clips each plane to the ellipsoid's (outward) extent: a plane missing the
   ellipsoid moves to the tangent plane. This does not change E ∩ S but shrinks the result a lot
   in the partial case. A half-space is always clipped (its open side ends at E's extent).

@@ -24,7 +24,7 @@ from optbound.optimal.solver import solve
 from optbound.sets import Ellipsoid
 
 # Relative singular value below which a point cloud counts as flat: its enclosing ellipsoid
-# would be (nearly) degenerate, beyond the supported condition number (optbound.sets._domain).
+# would be (nearly) degenerate, beyond the supported condition number (optbound._core.domain).
 _FLAT_RTOL = 10.0 / np.sqrt(COND_MAX)
 
 

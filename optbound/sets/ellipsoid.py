@@ -32,7 +32,7 @@ class Ellipsoid(ConvexSet):
     ValueError
         If either argument is non-finite, the dimensions disagree, ``shape`` is not symmetric
         positive definite, or the ellipsoid lies outside the supported domain (condition
-        number, magnitudes, centre against size: see ``optbound.sets._domain``).
+        number, magnitudes, centre against size: see ``optbound._core.domain``).
     TypeError
         If an argument is complex or not numeric.
     """
