@@ -57,4 +57,3 @@ def test_no_import_cycle_between_the_packages_of_optbound(graph):
                 edges.setdefault(a, set()).add(b)
     assert len(edges) > 5  # the graph is the real one, with its packages and their imports
     graphlib.TopologicalSorter(edges).prepare()  # raises CycleError naming a cycle
-
