@@ -3,7 +3,7 @@
 The product's question asked of localization. Instances: the geometry of [BH, Sect. V]
 (landmarks ``[0, 1]``, ``[1, 1]``, ``[-1, 0]``, vehicle at the origin, the pairs (3, 1), (1, 2),
 (2, 3), noise-free bearings, eps = 4°) and seeded random landmark triples and vehicles
-(``relative_bearing.random_instance``: eps in [1°, 8°], uniform noise). On each, the same
+(``scenarios.bh_geometry.random_instance``: eps in [1°, 8°], uniform noise). On each, the same
 relative-bearing data give:
 
 - ``hs96_linearized``: the ellipsoidal set-membership filter of [HS96, eqs. (18)-(24)] on
@@ -41,12 +41,11 @@ import numpy as np
 from benchmarks.family import Family, task_seeds
 from optbound.localization import relative_bearing as rb
 from optbound.localization.linearized_bearing import linearized_localize
+from optbound.scenarios import bh_geometry as bh
 from optbound.sets import Box
 
 NAME = "localization"
 REFERENCE = "exact area (paving)"
-BH_LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
-BH_EPS_DEG = 4.0
 SAMPLES = 2000  # points of the exact set tested against each bound
 # (random instances, paving width relative to the hull, optimal-reference orders on the BH
 # instance, on the random ones) per suite; the quick suite keeps the family's cost near 10 s.
@@ -77,10 +76,8 @@ def tasks(suite: str, seed: int) -> list[dict]:
 def instance(task: dict):
     """``(landmarks, pairs, gammas, eps, truth)`` of a task, rebuilt from its seed."""
     if task["variant"] == "BH geometry":
-        truth = np.zeros(2)
-        gammas = rb.bearings(truth, BH_LANDMARKS)
-        return BH_LANDMARKS, list(rb.SECT5_PAIRS), gammas, np.radians(BH_EPS_DEG), truth
-    return rb.random_instance(np.random.default_rng(task["seed"]))
+        return bh.sect5_instance()
+    return bh.random_instance(np.random.default_rng(task["seed"]))
 
 
 def exact_set(data: rb.Measurements, relative: float):

@@ -40,8 +40,8 @@ import numpy as np
 from benchmarks.sivia_codac import _median_time
 from optbound.interval._fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
-from optbound.localization import rooms
 from optbound.localization.sonar import D_MAX, localize, measurement_box, simulate_ranges
+from optbound.scenarios import rooms
 
 EPS = 0.04
 REPEATS = 5

@@ -24,9 +24,9 @@ import numpy as np
 from benchmarks.family import Family, task_seeds
 from benchmarks.timing import per_call, speed_record
 from optbound.interval import Interval, Tri
-from optbound.localization import arena
 from optbound.localization.geometry import intersect
 from optbound.localization.visibility import luvia, track, visibility_test
+from optbound.scenarios import arena
 
 NAME = "speed_glh12"
 BUDGET_SECONDS = 20.0

@@ -34,12 +34,12 @@ import numpy as np
 from benchmarks.family import Family, task_seeds
 from benchmarks.timing import speed_record
 from optbound import analytic
-from optbound.localization import office
 from optbound.localization.association import associate
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position
 from optbound.localization.tracker import SetTracker
 from optbound.report.tables import fmt_factor, markdown_table
+from optbound.scenarios import office
 from optbound.sets import Ellipsoid
 
 NAME = "speed_hs96"

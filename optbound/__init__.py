@@ -29,7 +29,16 @@ from optbound.sets import (  # noqa: E402
 __version__ = "0.1.0"
 
 #: Subpackages reachable as attributes, imported on first access.
-SUBMODULES = ("analytic", "compare", "interval", "localization", "optimal", "report", "sets")
+SUBMODULES = (
+    "analytic",
+    "compare",
+    "interval",
+    "localization",
+    "optimal",
+    "report",
+    "scenarios",
+    "sets",
+)
 
 __all__ = [
     "Box",

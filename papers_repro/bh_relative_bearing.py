@@ -33,6 +33,7 @@ from optbound import optimal
 from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
 from optbound.report.tables import markdown_table
+from optbound.scenarios import bh_geometry as bh
 from optbound.sets import Box
 from papers_repro._common import (
     claim_table,
@@ -44,10 +45,7 @@ from papers_repro._common import (
 )
 
 PAPER = "BH"
-LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
-VEHICLE = np.zeros(2)
-PAIRS = [(2, 0), (0, 1), (1, 2)]  # (3, 1), (1, 2), (2, 3) in the paper's 1-based names
-EPS_DEG = 4.0
+LANDMARKS, VEHICLE, PAIRS, EPS_DEG = bh.LANDMARKS, bh.VEHICLE, list(bh.PAIRS), bh.EPS_DEG
 PAVING_EPS = 0.004  # paving width of the exact sets, in metres (the Sect. V set is ~0.1 x 0.2)
 SWEEP_SEED = 2026
 RELATIVE_PAVING = 100  # sweep: paving width relative to the exact set's hull
@@ -221,7 +219,7 @@ def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:
     rng = np.random.default_rng(seed)
     rows = []
     for k in range(n):
-        L, pairs, gam, eps, x = rb.random_instance(rng, PAIRS)
+        L, pairs, gam, eps, x = bh.random_instance(rng, PAIRS)
         data = rb.measurements(L, pairs, gam, eps)
         res = analyse(L, pairs, gam, eps, None, references=False)
         paving_eps = res["paving_eps"]

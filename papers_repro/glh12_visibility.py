@@ -6,7 +6,7 @@ compass, 1 m² initial boxes, 1500 iterations) and sweeps the number of robots w
 are needed for an efficient pose tracking, more than 9 bring no gain; 4 to 8 obstacles work,
 except 7.
 
-**The room is ours, not the paper's**: Fig. 7 is lost, so :mod:`optbound.localization.arena`
+**The room is ours, not the paper's**: Fig. 7 is lost, so :mod:`optbound.scenarios.arena`
 designs 11 obstacles and 11 start positions (fixed before any run, never tuned); the sweep over
 obstacles uses the first n of them. LUVIA's ``eps`` is not given in the paper either (we use
 0.01 m², with at most 2^10 sub-boxes per call). "Efficient" is not defined in the paper; we
@@ -26,9 +26,9 @@ from pathlib import Path
 
 import numpy as np
 
-from optbound.localization import arena
 from optbound.localization.visibility import track
 from optbound.report.tables import markdown_table
+from optbound.scenarios import arena
 from papers_repro._common import DEFAULT_OUT, claim_table, pyplot, save_figure
 
 PAPER = "GLH12"

@@ -4,7 +4,7 @@ The paper drives an omnidirectional robot at 2 m/s for 10 laps of a course throu
 with 22 identical landmarks and partitioning walls (Fig. 4, lost), with 20 goniometer scans per
 second (0.02 deg), landmark position errors dominant and amplitude-bounded, correlated
 odometry errors, and reports an absolute accuracy of "about +-2 cm and +-0.5 deg". The office,
-the course and every error amplitude here are **our design** (``optbound.localization.office``),
+the course and every error amplitude here are **our design** (``optbound.scenarios.office``),
 fixed before the first run and not tuned toward the paper's numbers.
 
 Steps: (1) the association search of Sect. 3 on the first scan from a coarse prior, its pose
@@ -25,11 +25,12 @@ from pathlib import Path
 import numpy as np
 
 from optbound import analytic, optimal
-from optbound.localization import office
 from optbound.localization.association import associate
 from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmarks import pose_paving
+from optbound.localization.tracker import pose_level
 from optbound.report.tables import markdown_table
+from optbound.scenarios import office
 from optbound.sets import Ellipsoid
 from papers_repro._common import claim_table, draw_ellipse, pyplot, run_cli, save_figure
 
@@ -79,7 +80,7 @@ def initialize(data: office.OfficeData) -> dict:
         "seconds": seconds,
         "pave_seconds": pave_seconds,
         "linear_error": float(np.hypot(*(np.array(best.pose[:2]) - start[:2]))),
-        "truth_in_initial": office.pose_level(initial, start) <= 1.0,
+        "truth_in_initial": pose_level(initial, start) <= 1.0,
     }
 
 

@@ -4,7 +4,7 @@
 problem as nonlinear and in a global way and is (extraordinarily) robust to outliers". The
 paper's test cases (Sect. 6) are lost with most of the text (see papers/README.md), so this
 script checks the claim on a scenario of **our own design**:
-:data:`optbound.localization.rooms.BELT_ROOM` (a 10 m × 8 m room with a chamfered corner), a
+:data:`optbound.scenarios.rooms.BELT_ROOM` (a 10 m × 8 m room with a chamfered corner), a
 belt of 16 sonars (±12° cones, 2 % accuracy), random poses at least 0.5 m inside the room,
 readings with random errors inside their bounds, and outliers of three kinds:
 
@@ -26,9 +26,14 @@ from pathlib import Path
 
 import numpy as np
 
-from optbound.localization import rooms
-from optbound.localization.sonar import localize, measurement_box, simulate_ranges
+from optbound.localization.sonar import (
+    clearance_test,
+    localize,
+    measurement_box,
+    simulate_ranges,
+)
 from optbound.report.tables import markdown_table
+from optbound.scenarios import rooms
 from papers_repro._common import claim_table, pyplot, run_cli, save_figure
 
 PAPER = "KJWM00"
@@ -49,7 +54,7 @@ def _partition(rng, pose) -> np.ndarray:
 
 
 def _pose(rng) -> np.ndarray:
-    inside = rooms.clearance_test(WORLD, 0.5)
+    inside = clearance_test(WORLD, 0.5)
     while True:
         p = np.r_[rng.uniform(-5, 5), rng.uniform(-4, 4), rng.uniform(-np.pi, np.pi)]
         if inside(*p) == 2:

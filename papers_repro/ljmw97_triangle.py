@@ -7,7 +7,7 @@ Q2 ⊂ [−3.09, −2.88] × [3.63, 3.81] × [83.08°, 91.67°], with associatio
 h1 = {(T1, S1) (T2, S2) (T3, S2) (T4, S3)} and h2 = {(T1, S2) (T2, S3) (T3, S3) (T4, S1)}.
 
 **The room and the sonar placement are ours**: Fig. 4(a) is lost, so
-:data:`optbound.localization.rooms.TRIANGLE` is a triangle we designed (the first and only
+:data:`optbound.scenarios.rooms.TRIANGLE` is a triangle we designed (the first and only
 one tried) with q* inside, and the four sonars sit on a 0.2 m belt pointing forward, left,
 backward and right. Segment and sonar numbers therefore do not correspond to the paper's;
 only the kind of result (number of components, sizes, hypotheses) is comparable. The readings
@@ -27,10 +27,10 @@ from pathlib import Path
 import numpy as np
 from matplotlib.patches import Wedge
 
-from optbound.localization import rooms
 from optbound.localization.geometry import to_world
-from optbound.localization.sonar import SonarPaving, localize, simulate_ranges
+from optbound.localization.sonar import SonarPaving, clearance_test, localize, simulate_ranges
 from optbound.report.tables import markdown_table
+from optbound.scenarios import rooms
 from papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 
 PAPER = "LJMW97"
@@ -54,7 +54,7 @@ def readings() -> np.ndarray:
 
 def solve(prior: bool, repeats: int = 1) -> tuple[SonarPaving, float]:
     """The paving at eps = 0.04 and the median wall time of ``repeats`` runs (after a warm-up)."""
-    test = rooms.clearance_test(WORLD, CLEARANCE) if prior else None
+    test = clearance_test(WORLD, CLEARANCE) if prior else None
     d = readings()
     paving = localize(WORLD, SONARS, d, X0, EPS, prior=test)
     times = []

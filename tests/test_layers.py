@@ -3,7 +3,7 @@
 The contracts live in ``pyproject.toml`` (``[tool.importlinter]``): the layers ``_core`` <-
 ``interval`` <- ``sets`` <- ``analytic``, ``optimal`` <- ``compare`` <- ``localization`` <- ...
 <- ``cli``, private modules imported only inside their package, cvxpy only under ``optimal``,
-nothing importing the command line, and no import cycle at any depth.
+nothing importing the command line, and no import cycle between packages.
 """
 
 from __future__ import annotations

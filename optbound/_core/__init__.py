@@ -9,7 +9,8 @@ checked by ``lint-imports`` with the contracts in ``pyproject.toml``, are ``_cor
   user input into float64 arrays or raise a ``ValueError`` / ``TypeError`` naming the argument.
 - :mod:`~optbound._core.domain`: the supported domain of ellipsoids and strips (magnitude and
   condition limits) and its compiled check ``check_ellipsoid`` / ``raise_for``.
-- :mod:`~optbound._core.convex`: ``ConvexSet``, the interface every set type implements.
+- :mod:`~optbound._core.convex`: ``ConvexSet`` and ``QuadraticDescription``, the required part
+  of the set protocol (written down in :mod:`optbound.sets.base`).
 - :mod:`~optbound._core.box`: ``Box`` and the validators of boxes (``as_box``, ``box_rows``)
   and of ``(m, n, 2)`` box arrays (``box_array``).
 
@@ -27,7 +28,7 @@ Rules:
 
 from optbound._core import validate
 from optbound._core.box import Box, as_box, box_array, box_rows
-from optbound._core.convex import ConvexSet
+from optbound._core.convex import ConvexSet, QuadraticDescription
 from optbound._core.domain import (
     COND_MAX,
     COND_OUT,
@@ -55,6 +56,7 @@ __all__ = [
     "Box",
     "ConvexSet",
     "NotRealError",
+    "QuadraticDescription",
     "as_box",
     "box_array",
     "box_rows",

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound._core import validate as v
-from optbound._core.convex import ConvexSet
+from optbound._core.convex import ConvexSet, QuadraticDescription
 from optbound._core.validate import real_array
 
 
@@ -104,6 +104,19 @@ class Box(ConvexSet):
             terms = np.where(dirs == 0, 0.0, dirs * corner)
         h = terms.sum(axis=1)
         return float(h[0]) if single else h
+
+    def quadratic_description(self) -> QuadraticDescription:
+        """One range ``lo_i <= x_i <= hi_i`` per coordinate with a finite bound."""
+        eye = np.eye(self.dim)
+        finite = np.isfinite(self._lo) | np.isfinite(self._hi)
+        return QuadraticDescription(
+            ranges=tuple((eye[i], self._lo[i], self._hi[i]) for i in np.flatnonzero(finite))
+        )
+
+    def enclosing_ellipsoid(self) -> None:
+        """None: a box's own bounds enter the SDP layer as ranges, tighter than any ellipsoid
+        around it."""
+        return None
 
     def project(self, dims) -> Box:
         idx = v.dims_index("dims", dims, self.dim)

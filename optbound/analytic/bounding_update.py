@@ -32,6 +32,7 @@ from scipy.optimize import brentq
 from optbound._core import validate as v
 from optbound.analytic._exact import enclose, matmul, rational, solve, transpose
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "trace")
 GRID_POINTS = 257
@@ -41,13 +42,17 @@ S_TOL = 1e-12
 
 
 @dataclass(frozen=True)
-class BoundingUpdate:
+class BoundingUpdate(BoundResult):
     """Result of :func:`bounding_update`.
 
     ``ellipsoid`` is the outer bound (None if the feasible set is empty); ``lam`` the lambda
     used, or for an empty result the lambda whose s(lambda) < 0 certifies emptiness;
-    ``margin`` the certified relative inflation of the float member (0 for E itself).
+    ``margin`` the certified relative inflation of the float member (0 for E itself). As a
+    ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
     """
+
+    set_attribute = "ellipsoid"
+    certified = True
 
     ellipsoid: Ellipsoid | None
     lam: float

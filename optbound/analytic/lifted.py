@@ -38,6 +38,7 @@ from scipy.optimize import minimize_scalar
 from optbound._core import validate as v
 from optbound.analytic.bounding_update import bounding_update
 from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "area")
 AREA_GRID = 17
@@ -47,11 +48,17 @@ AREA_RESOLUTION = 80
 
 
 @dataclass(frozen=True)
-class LiftedUpdate:
-    """Result of :func:`lifted_update`: the bound (None if certified empty) and the lambda used."""
+class LiftedUpdate(BoundResult):
+    """Result of :func:`lifted_update`: the bound (None if certified empty), the lambda used
+    and the certified relative inflation of the lifted member (``BoundingUpdate.margin``).
+    As a ``BoundResult``, ``set`` is ``bound``."""
+
+    set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid | None
     lam: float
+    margin: float = 0.0
 
 
 def lifted_update(
@@ -107,7 +114,7 @@ def lifted_update(
     def update(lam_value):
         result = bounding_update(P.lifted, H, z, V, lam=lam_value)
         bound = None if result.ellipsoid is None else PseudoEllipsoid(P.lift, *_parts(result))
-        return LiftedUpdate(bound, result.lam)
+        return LiftedUpdate(bound, result.lam, result.margin)
 
     if lam is not None or criterion == "volume":
         return update(lam)

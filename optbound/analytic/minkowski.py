@@ -35,18 +35,24 @@ from optbound.analytic._minkowski_kernel import (
 )
 from optbound.analytic._threads import NO_POSTS, ellipsoid_outputs, run_sliced
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "trace", "size_xy_psi")
 DEFAULT_XY_PSI = ((0, 1), (2,))
 
 
 @dataclass(frozen=True)
-class MinkowskiResult:
+class MinkowskiResult(BoundResult):
     """Outer ellipsoid of E1 + E2 and the Schweppe parameter kappa that produced it.
 
     The shape is computed from p = (1 - kappa) / kappa, so it stays accurate even when the
     reported kappa rounds to 0 or 1 (summands differing in size by ~1e16 or more).
+    ``margin`` is the certified relative inflation of the float member. As a
+    ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
     """
+
+    set_attribute = "ellipsoid"
+    certified = True
 
     ellipsoid: Ellipsoid
     kappa: float

@@ -60,6 +60,7 @@ from optbound.analytic._strip_kernel import (
 )
 from optbound.analytic._threads import ellipsoid_outputs, run_sliced
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.result import BoundResult
 from optbound.sets.strip import Halfspace, Strip
 
 CASES = ("no_reduction", "consistent", "partial", "inconsistent")
@@ -75,8 +76,10 @@ __all__ = [
 
 
 @dataclass(frozen=True)
-class StripFusion:
+class StripFusion(BoundResult):
     """Result of :func:`intersect_strip`.
+
+    As a ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
 
     Attributes
     ----------
@@ -92,6 +95,9 @@ class StripFusion:
         Certified inflation of the float member, relative (``rho + mu / lambda_min``, see
         ``optbound.analytic._midrad``); 0 when E itself is returned.
     """
+
+    set_attribute = "ellipsoid"
+    certified = True
 
     ellipsoid: Ellipsoid | None
     lam: float

@@ -1,13 +1,18 @@
-"""Accept an ``Ellipsoid`` or any result object carrying one in ``.ellipsoid``."""
+"""Accept an ``Ellipsoid``, a ``BoundResult`` whose ``set`` is one, or any object carrying one
+in ``.ellipsoid``."""
 
 from __future__ import annotations
 
 from optbound.sets import Ellipsoid
+from optbound.sets.result import BoundResult
 
 
 def as_ellipsoid(name: str, bound) -> Ellipsoid:
     """The ellipsoid of ``bound`` (an Ellipsoid, OuterResult, analytic result ...)."""
-    ellipsoid = getattr(bound, "ellipsoid", bound)
+    if isinstance(bound, BoundResult):
+        ellipsoid = bound.set
+    else:
+        ellipsoid = getattr(bound, "ellipsoid", bound)
     if not isinstance(ellipsoid, Ellipsoid):
         raise ValueError(f"{name} must be an Ellipsoid or carry one in .ellipsoid, got {bound!r}")
     return ellipsoid

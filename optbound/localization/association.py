@@ -312,3 +312,6 @@ def associate(
     out = [Association(f.pairs[inverse], f.pose, f.max_residual) for f in found]
     unpruned = sum((m + 1) ** d for d in range(1, n + 1))
     return AssociationResult(out, V, spurious, search.nodes, unpruned, search.leaves)
+
+
+__all__ = ["SPURIOUS", "Association", "AssociationResult", "associate", "visibility_matrix"]

@@ -116,3 +116,6 @@ def _offset(poly: np.ndarray, d: float) -> np.ndarray | None:
     if d < 0 and not np.all(_cross(out) > 0):
         return None
     return out
+
+
+__all__ = ["Environment"]

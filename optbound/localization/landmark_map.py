@@ -56,3 +56,6 @@ class LandmarkMap:
             return np.ones(np.broadcast(x, self.landmarks[:, 0]).shape, dtype=bool)
         hidden = geometry.occluded((x, y), (self.landmarks[:, 0], self.landmarks[:, 1]), self.walls)
         return ~hidden
+
+
+__all__ = ["LandmarkMap"]

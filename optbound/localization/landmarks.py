@@ -25,6 +25,9 @@ Three functions, from cheapest to exact:
   ``H`` and ``z`` (preconditioned interval Gauss-Seidel);
 - :func:`pose_paving`: the guaranteed (x, y, psi) set by interval set inversion of the bearing
   equations (the error propagation [HS96, Sect. 3] leaves out of scope).
+
+Under the model contract of :mod:`optbound.localization` the last two are also named
+:func:`localize` and :func:`exact_paving`.
 """
 
 from __future__ import annotations
@@ -488,3 +491,23 @@ def pose_paving(
             return paving
         X0 = hull
     return paving
+
+
+# --------------------------------------------------------------- the model contract's verbs
+#: The guaranteed bound of one scan (:mod:`optbound.localization` contract): the (x, y) box.
+localize = linear_position_bound
+#: The paving of the exact pose set.
+exact_paving = pose_paving
+
+__all__ = [
+    "GAUSS_SEIDEL_SWEEPS",
+    "REFINE",
+    "SINGULAR_RTOL",
+    "TWO_PI",
+    "exact_paving",
+    "heading_bound",
+    "linear_position",
+    "linear_position_bound",
+    "localize",
+    "pose_paving",
+]

@@ -30,14 +30,22 @@ from optbound import analytic
 from optbound.localization.geometry import bearing_gradient, bearing_residual
 from optbound.localization.relative_bearing import measurements, prior_box
 from optbound.sets import Box, Ellipsoid, Strip
+from optbound.sets.result import BoundResult
 
 CRITERIA = ("volume", "trace")
 
 
 @dataclass(frozen=True)
-class LinearizedResult:
+class LinearizedResult(BoundResult):
     """Result of :func:`linearized_localize`: the final ellipse and the measurements whose
-    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)])."""
+    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)]).
+
+    As a ``BoundResult``: ``set`` is ``ellipse``, never certified (the strips are linearized,
+    module docstring), no margin."""
+
+    set_attribute = "ellipse"
+    certified = False
+    margin = 0.0
 
     ellipse: Ellipsoid
     rejected: int
@@ -112,4 +120,14 @@ def linearized_localize(
     return LinearizedResult(E, rejected)
 
 
-__all__ = ["LinearizedResult", "box_ellipse", "linearized_localize", "linearized_strip"]
+#: The model contract's verb (:mod:`optbound.localization`); *not* a guaranteed bound.
+localize = linearized_localize
+
+__all__ = [
+    "CRITERIA",
+    "LinearizedResult",
+    "box_ellipse",
+    "linearized_localize",
+    "linearized_strip",
+    "localize",
+]

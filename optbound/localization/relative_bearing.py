@@ -44,7 +44,7 @@ problem's own size, so the lifted shapes stay well conditioned.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -54,6 +54,7 @@ from optbound.interval import Paving, constraint, pave, tri_and
 from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
 from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
 from optbound.sets.pseudo_ellipsoid import CoverProof
+from optbound.sets.result import BoundResult
 
 ORDERS = (1, 2)
 # Relative outward margin of the prior box and of the prior's lifted shape (rounding cover).
@@ -325,14 +326,26 @@ def lifted_prior(lift: PolynomialLifting, box: Box) -> PseudoEllipsoid:
 
 
 @dataclass(frozen=True)
-class BearingResult:
+class BearingResult(BoundResult):
     """Result of :func:`localize`: the final ``bound`` (None if proven empty), ``steps`` (the
-    bound after each pair), the ``prior`` and the ``lams`` of the ring updates."""
+    bound after each pair), the ``prior``, the ``lams`` and certified ``margins`` of the ring
+    updates.
+
+    As a ``BoundResult``: ``set`` is ``bound``, certified; ``margin`` is the largest relative
+    inflation any ring update applied (``analytic.lifted_update``)."""
+
+    set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid | None
     steps: list[PseudoEllipsoid]
     prior: PseudoEllipsoid
     lams: list[float]
+    margins: list[float] = field(default_factory=list)
+
+    @property
+    def margin(self) -> float:
+        return max(self.margins, default=0.0)
 
 
 def localize(
@@ -384,17 +397,18 @@ def localize(
     scale = float(0.5 * np.max(box.hi - box.lo))
     lift = lifting(order, offset, scale)
     prior = lifted_prior(lift, box)
-    P, steps, lams = prior, [], []
+    P, steps, lams, margins = prior, [], [], []
     for pair_rings in ring_list:
         for ring in pair_rings:
             H, z, V, v_center = ring_rows(ring, order, offset, scale)
             update = lifted_update(P, H, z, V, v_center, criterion=criterion)
             lams.append(update.lam)
+            margins.append(update.margin)
             if update.bound is None:
-                return BearingResult(None, steps, prior, lams)
+                return BearingResult(None, steps, prior, lams, margins)
             P = update.bound
         steps.append(P)
-    return BearingResult(P, steps, prior, lams)
+    return BearingResult(P, steps, prior, lams, margins)
 
 
 # ---------------------------------------------------------------------- containment proof
@@ -466,49 +480,26 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
     return EllipseBracket(sdp.ellipsoid, boxes, best, float(sdp.lower_bound))
 
 
-# ------------------------------------------------------------------------------- instances
-#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
-SECT5_PAIRS = ((2, 0), (0, 1), (1, 2))
-
-
-def bearings(x, landmarks, pairs=SECT5_PAIRS) -> np.ndarray:
-    """Noise-free relative bearings [BH, eq. (2)] seen from the point ``x``."""
+# ------------------------------------------------------------------------------ measurement
+def bearings(x, landmarks, pairs) -> np.ndarray:
+    """Noise-free relative bearings [BH, eq. (2)] of the landmark ``pairs`` seen from ``x``."""
     L = np.asarray(landmarks, dtype=float)
     ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
     return wrap_angle([ang[i] - ang[j] for i, j in pairs])
 
 
-def random_instance(rng: np.random.Generator, pairs=SECT5_PAIRS):
-    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
-
-    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
-    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
-    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
-    need the crescent shape.
-    """
-    pairs = [tuple(p) for p in pairs]
-    margin = np.radians(3.0)
-    while True:
-        L = rng.uniform(-3.0, 3.0, (3, 2))
-        x = rng.uniform(-1.0, 1.0, 2)
-        eps = np.radians(rng.uniform(1.0, 8.0))
-        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
-        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
-            np.linalg.norm(L - x, axis=1)
-        )
-        if min(dists) > 0.3 and np.all(
-            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
-        ):
-            return L, pairs, wrap_angle(gam), eps, x
+#: The model contract's measurement verb (:mod:`optbound.localization`).
+measure = bearings
 
 
 __all__ = [
-    "SECT5_PAIRS",
+    "ORDERS",
     "BearingResult",
     "EllipseBracket",
     "Measurements",
     "Ring",
     "Rings",
+    "all_rings",
     "bearings",
     "best_ellipse",
     "bound_ellipse_quadratics",
@@ -521,9 +512,9 @@ __all__ = [
     "lifted_prior",
     "lifting",
     "localize",
+    "measure",
     "measurements",
     "prior_box",
-    "random_instance",
     "ring_rows",
     "rings",
 ]

@@ -12,6 +12,12 @@ The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_i
 one formula for points and boxes. The heading ``theta`` is an angle: an initial box covering
 a whole turn is widened to contain the true circle, and components that meet across the seam
 ``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
+
+A world is an (s, 2, 2) array of oriented segments; :func:`polygon_walls` builds a room's
+walls from its vertices and :func:`clearance_test` is a "centre inside the room" prior. Under
+the model contract of :mod:`optbound.localization`, :func:`localize` is also
+:func:`exact_paving`, :func:`sonar_tests` is :func:`exact_tests` and :func:`simulate_ranges` is
+:func:`measure`.
 """
 
 from __future__ import annotations
@@ -353,7 +359,7 @@ def localize(
     prior
         Optional three-valued test on ``(x, y, theta)`` that every pose must pass, whatever
         ``q`` (prior information [KJWM00, Sect. 2.2], e.g.
-        :func:`optbound.localization.rooms.clearance_test`).
+        :func:`clearance_test`).
 
     Returns
     -------
@@ -381,3 +387,61 @@ def localize(
         paving = pave(relaxed_test(tests, q), box, eps, max_boxes=max_boxes)
     problem = dict(world=world, sonars=belt, Y=measurement_box(belt, ranges), d_max=d_max)
     return SonarPaving(paving, problem, int(q), wraps)
+
+
+# ------------------------------------------------------------------------------ worlds, priors
+def polygon_walls(vertices) -> np.ndarray:
+    """Walls of a polygon given counter-clockwise: (s, 2, 2) segments facing its interior.
+
+    Going counter-clockwise the interior is on the left, which is the reflecting face
+    [KJWM00, eq. (2)].
+    """
+    vertices = np.asarray(vertices, dtype=float)
+    return g.as_segments(np.stack([vertices, np.roll(vertices, -1, axis=0)], axis=1), "vertices")
+
+
+def clearance_test(world, clearance: float):
+    """Prior test: the robot's centre is inside a convex room, at least ``clearance`` from walls.
+
+    For a convex room whose walls face inward this is ``front_distance >= clearance`` for
+    every wall (:func:`geometry.front_distance`): prior knowledge of the robot's body
+    [KJWM00, Sect. 2.2]. Pass it as ``prior`` to :func:`localize`.
+    """
+    world = g.as_segments(world)
+    if not np.isfinite(clearance) or clearance < 0:
+        raise ValueError(f"clearance must be finite and >= 0, got {clearance}")
+    a, b = g.segment_points(world[:, :, :, None])  # (s, 1) columns: one row per wall
+    a, b = g.exact(a), g.exact(b)
+    n_walls = world.shape[0]
+    Y = np.tile([clearance, np.inf], (n_walls, 1))
+
+    def f(x, y, theta):
+        dist = g.front_distance((x, y), a, b)
+        return [dist[j] for j in range(n_walls)]
+
+    return constraint(f, Y)
+
+
+# --------------------------------------------------------------- the model contract's verbs
+#: The noise-free measurement function of the model (:mod:`optbound.localization` contract).
+measure = simulate_ranges
+#: :func:`localize` is already the paving of the exact set [LJMW97, eq. (3)].
+exact_paving = localize
+#: The interval tests whose conjunction is the exact set.
+exact_tests = sonar_tests
+
+__all__ = [
+    "D_MAX",
+    "Sonar",
+    "SonarPaving",
+    "clearance_test",
+    "exact_paving",
+    "exact_tests",
+    "localize",
+    "measure",
+    "measurement_box",
+    "polygon_walls",
+    "range_inclusion",
+    "simulate_ranges",
+    "sonar_tests",
+]

@@ -25,6 +25,7 @@ import numpy as np
 
 from optbound import analytic
 from optbound._core import validate as v
+from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import as_bound
 from optbound.sets import Ellipsoid, Strip
@@ -171,3 +172,35 @@ class SetTracker:
         if fused.ellipsoid is not None:
             self.set = fused.ellipsoid
         return UpdateInfo(fused.case, fused.consistency, fused.lam)
+
+
+def pose_level(E: Ellipsoid, pose) -> float:
+    """``E.level`` of ``pose`` with its heading taken modulo 2 pi nearest to E's centre.
+
+    ``<= 1`` means the pose is in the posture set ``E`` of ``(x, y, psi)``: the test of
+    whether a tracked set still holds the true pose.
+    """
+    pose = v.finite_vector("pose", pose, 3)
+    d = np.array([pose[0], pose[1], float(wrap_angle(pose[2] - E.center[2]))])
+    d[:2] -= E.center[:2]
+    return float(d @ np.linalg.solve(E.shape, d))
+
+
+def nearest_landmark(tracker: SetTracker, alpha: float, gate: float, seen: np.ndarray):
+    """Association during tracking: the landmark of ``seen`` whose predicted bearing is nearest.
+
+    The predicted bearing is taken from the centre of ``tracker.set``. Returns ``None`` when no
+    landmark is within ``gate`` or the runner-up is within twice the gate (ambiguous).
+    """
+    x, y, psi = tracker.set.center
+    lm = tracker.map.landmarks
+    off = np.abs(wrap_angle(np.arctan2(lm[seen, 1] - y, lm[seen, 0] - x) - psi - alpha))
+    if off.size == 0:
+        return None
+    order = np.argsort(off)
+    if off[order[0]] > gate or (off.size > 1 and off[order[1]] < 2 * gate):
+        return None
+    return int(seen[order[0]])
+
+
+__all__ = ["CRITERIA", "SetTracker", "UpdateInfo", "nearest_landmark", "pose_level"]

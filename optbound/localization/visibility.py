@@ -7,7 +7,8 @@ Algorithm 3). A "visible" measurement is confronted with the inner characterizat
 "not visible" one with the outer E⁺ [GLH12, Props. 15-16], so that a box is discarded only
 when it contains no position consistent with the true environment E (:func:`luvia`,
 Algorithm 2). :func:`track` (Algorithm 1) alternates interval odometry with a compass and
-LUVIA for every robot.
+LUVIA for every robot. :func:`measure` is the noise-free measurement: the true visibility
+matrix of robots at given points.
 """
 
 from __future__ import annotations
@@ -15,8 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound._core import box_array
-from optbound.interval import Interval, tri_not
+from optbound._core import box_array, real_array
+from optbound.interval import Interval, Tri, tri_not
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import (
     as_polygons,
@@ -304,3 +305,45 @@ def track(
                 cur[i] = box
         out[k + 1] = cur
     return out
+
+
+def measure(points, obstacles) -> np.ndarray:
+    """(m, m) true visibility of robots at ``points`` through the exact obstacles [GLH12, Def. 1].
+
+    The model's noise-free measurement: ``y_il`` is True when no obstacle meets the segment
+    between robots i and l. Certified on the points; a pair within rounding of grazing an
+    obstacle counts as not visible, which keeps the guarantee of a simulation whose E⁺
+    contains E with a margin and whose E⁻ has one inside E.
+
+    Parameters
+    ----------
+    points
+        (m, 2) robot positions.
+    obstacles
+        As for :func:`visibility_test` (typically ``Environment.exact``).
+
+    Returns
+    -------
+    (m, m) bool array
+        Symmetric, True on the diagonal.
+    """
+    pts = real_array("points", points)
+    if pts.ndim != 2 or pts.shape[1] != 2:
+        raise ValueError(f"points must have shape (m, 2), got {pts.shape}")
+    m = len(pts)
+    i, j = np.triu_indices(m, 1)
+    boxes = np.repeat(pts[:, :, None], 2, axis=2)
+    seen = visibility_test(boxes[i], boxes[j], obstacles) == Tri.TRUE
+    y = np.eye(m, dtype=bool)
+    y[i, j] = y[j, i] = seen
+    return y
+
+
+__all__ = [
+    "MAX_DEPTH",
+    "luvia",
+    "measure",
+    "odometry",
+    "track",
+    "visibility_test",
+]

@@ -14,7 +14,6 @@ numerically; in the latter case a second, small SDP looks for such multipliers.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from functools import lru_cache
 
 import cvxpy as cp
 import numpy as np
@@ -22,17 +21,17 @@ import numpy as np
 from optbound.optimal import _cvx
 from optbound.optimal._small import weighted_sum_eig
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
-from optbound.optimal.solver import solve
+from optbound.optimal.template import Template, cached_template
 
 
-@lru_cache(maxsize=32)
-def emptiness_template(n: int, k: int) -> tuple[cp.Problem, tuple[cp.Parameter, ...], cp.Variable]:
+@cached_template(maxsize=32)
+def emptiness_template(n: int, k: int) -> Template:
     """Find ``tau >= 0`` with ``sum tau_i F_i >= I`` for ``k`` forms in R^n (built once)."""
     forms = tuple(cp.Parameter((n + 1, n + 1), symmetric=True) for _ in range(k))
     tau = cp.Variable(k, nonneg=True)
     S = sum(tau[i] * forms[i] for i in range(k))
     problem = cp.Problem(cp.Minimize(cp.sum(tau)), [_cvx.psd(S - np.eye(n + 1))])
-    return _cvx.require_dpp(problem), forms, tau
+    return Template(problem, forms=forms, tau=tau)
 
 
 def refuse_empty(
@@ -57,12 +56,12 @@ def explain_failure(
 ) -> None:
     """After a failed solve: raise ``EmptyIntersectionError`` if emptiness can be certified,
     else re-raise ``err``."""
-    problem, params, tau = emptiness_template(forms[0].shape[0] - 1, len(forms))
-    for param, F in zip(params, forms, strict=True):
+    template = emptiness_template(forms[0].shape[0] - 1, len(forms))
+    for param, F in zip(template.forms, forms, strict=True):
         param.value = F
     try:
-        solve(problem, solver)
+        template.solve(solver)
     except SolverError:
         raise err from None
-    refuse_empty(forms, errors, tau.value)
+    refuse_empty(forms, errors, template.tau.value)
     raise err

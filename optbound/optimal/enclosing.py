@@ -9,9 +9,6 @@ re-solved by setting the points.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from functools import lru_cache
-
 import cvxpy as cp
 import numpy as np
 
@@ -20,7 +17,7 @@ from optbound._core import validate as v
 from optbound.optimal import _cvx
 from optbound.optimal.certify import certify_points
 from optbound.optimal.result import OuterResult
-from optbound.optimal.solver import solve
+from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid
 
 # Relative singular value below which a point cloud counts as flat: its enclosing ellipsoid
@@ -28,23 +25,15 @@ from optbound.sets import Ellipsoid
 _FLAT_RTOL = 10.0 / np.sqrt(COND_MAX)
 
 
-@dataclass(frozen=True)
-class _Template:
-    problem: cp.Problem
-    points: cp.Parameter
-    A: cp.Variable
-    b: cp.Variable
-
-
-@lru_cache(maxsize=32)
-def mvee_template(m: int, n: int) -> _Template:
+@cached_template(maxsize=32)
+def mvee_template(m: int, n: int) -> Template:
     """The MVEE problem for ``m`` points in R^n (built once per shape)."""
     points = cp.Parameter((n, m))
     A = cp.Variable((n, n), symmetric=True)
     b = cp.Variable(n)
     images = A @ points + _cvx.column(b) @ np.ones((1, m))
     problem = cp.Problem(cp.Maximize(cp.log_det(A)), [cp.norm(images, 2, axis=0) <= 1])
-    return _Template(_cvx.require_dpp(problem), points, A, b)
+    return Template(problem, points=points, A=A, b=b)
 
 
 def validated_points(points) -> np.ndarray:
@@ -101,8 +90,8 @@ def mvee(points, solver: str = "CLARABEL") -> OuterResult:
     center = X.mean(axis=0)
     scale = float(np.max(np.linalg.norm(X - center, axis=1)))
     template = mvee_template(m, n)
-    template.points.value = ((X - center) / scale).T
-    solve_time = solve(template.problem, solver, primal_only=True)
+    template.set(points=((X - center) / scale).T)
+    solve_time = template.solve(solver, primal_only=True)
     A_inv = np.linalg.inv(template.A.value)
     candidate = Ellipsoid(center - scale * A_inv @ template.b.value, scale**2 * A_inv @ A_inv.T)
     ellipsoid, inflation = certify_points(candidate, X)

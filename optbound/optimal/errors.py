@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from optbound.sets.base import EmptySetError
+
 
 class SolverError(RuntimeError):
     """The conic solver did not return an accurate optimum (``status`` says what it returned).
@@ -15,8 +17,10 @@ class SolverError(RuntimeError):
         super().__init__(f"{message}: {detail}" if detail else message)
 
 
-class EmptyIntersectionError(ValueError):
-    """The sets to be bounded have an empty intersection: no outer ellipsoid is defined."""
+class EmptyIntersectionError(EmptySetError):
+    """The sets to be bounded have an empty intersection: no outer ellipsoid is defined.
+
+    A ``ValueError`` (through ``optbound.sets.base.EmptySetError``)."""
 
 
 class CertificationError(RuntimeError):

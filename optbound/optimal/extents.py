@@ -27,16 +27,12 @@ superset are still valid).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from functools import lru_cache
-
 import cvxpy as cp
 import numpy as np
 
-from optbound.optimal import _cvx
 from optbound.optimal._small import rounding_bound
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
-from optbound.optimal.solver import solve
+from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid
 
 _EMPTY = (
@@ -45,18 +41,8 @@ _EMPTY = (
 )
 
 
-@dataclass(frozen=True)
-class _Template:
-    problem: cp.Problem
-    rows: cp.Parameter
-    lo: cp.Parameter
-    hi: cp.Parameter
-    upper: cp.Constraint
-    lower: cp.Constraint
-
-
-@lru_cache(maxsize=128)
-def extents_template(n: int, r: int) -> _Template:
+@cached_template(maxsize=128)
+def extents_template(n: int, r: int) -> Template:
     """Maximise ``a_i^T y`` and ``-a_i^T y`` over ball ∩ polyhedron, all at once."""
     rows = cp.Parameter((r, n))
     lo = cp.Parameter((1, r))
@@ -68,7 +54,7 @@ def extents_template(n: int, r: int) -> _Template:
     lower = values >= ones @ lo
     goal = cp.Maximize(cp.sum(cp.multiply(Y[:r], rows)) - cp.sum(cp.multiply(Y[r:], rows)))
     problem = cp.Problem(goal, [cp.norm(Y, 2, axis=1) <= 1.0, upper, lower])
-    return _Template(_cvx.require_dpp(problem), rows, lo, hi, upper, lower)
+    return Template(problem, rows=rows, lo=lo, hi=hi, upper=upper, lower=lower)
 
 
 def _dual_bounds(
@@ -129,11 +115,9 @@ def clip_to_intersection(
     lo_y = (lo - offset - frame_err) / radius
     hi_y = (hi - offset + frame_err) / radius
     template = extents_template(n, r)
-    template.rows.value = rows
-    template.lo.value = lo_y[None, :]
-    template.hi.value = hi_y[None, :]
+    template.set(rows=rows, lo=lo_y[None, :], hi=hi_y[None, :])
     try:
-        solve(template.problem, "CLARABEL")
+        template.solve("CLARABEL")
         infeasible = False
     except SolverError as err:
         if err.status != cp.INFEASIBLE:

@@ -43,8 +43,6 @@ lossless for one inequality only); ``lower_bound=True`` also returns a lower bou
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
-from functools import lru_cache
 
 import cvxpy as cp
 import numpy as np
@@ -54,31 +52,20 @@ from optbound.optimal import _cvx, _small
 from optbound.optimal.certify import certify_lmi
 from optbound.optimal.emptiness import explain_failure, refuse_empty
 from optbound.optimal.errors import EmptyIntersectionError, SolverError
-from optbound.optimal.lift import Member, check_clip, lift
+from optbound.optimal.lift import check_clip, lift
 from optbound.optimal.lower import sampled_lower_bound
 from optbound.optimal.result import OuterResult, objective_value
-from optbound.optimal.solver import solve
+from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid, QuadraticSet
+from optbound.sets.base import QuadraticallyDescribed
 
 OBJECTIVES = ("volume", "trace", "projection")
 # Eigenvalues of normalized quadratic parts below this count as zero.
 _DEFINITE_RTOL = 1e-12
 
 
-@dataclass(frozen=True)
-class _Template:
-    problem: cp.Problem
-    forms: cp.Parameter
-    weight: cp.Parameter | None
-    M: cp.Variable
-    bt: cp.Variable
-    tau: cp.Variable
-
-
-@lru_cache(maxsize=128)
-def intersection_template(
-    n: int, k: int, objective: str, dims: tuple[int, ...] | None
-) -> _Template:
+@cached_template(maxsize=128)
+def intersection_template(n: int, k: int, objective: str, dims: tuple[int, ...] | None) -> Template:
     """The S-procedure problem for ``k`` inequalities in R^n (built once per shape).
 
     The forms are one parameter, column i the flattened ``F_i``, so that ``S`` is one
@@ -115,8 +102,8 @@ def intersection_template(
         embed = np.eye(n)[:, list(dims)]
         constraints.append(_cvx.psd(M - embed @ T @ embed.T))
         goal = cp.Maximize(cp.log_det(T))
-    problem = _cvx.require_dpp(cp.Problem(goal, constraints))
-    return _Template(problem, forms, weight, M, bt, tau)
+    problem = cp.Problem(goal, constraints)
+    return Template(problem, forms=forms, weight=weight, M=M, bt=bt, tau=tau)
 
 
 def _depth(q: QuadraticSet) -> float:
@@ -225,7 +212,7 @@ def _check_dims(objective: str, dims, n: int) -> tuple[int, ...] | None:
 
 
 def outer_ellipsoid(
-    intersection: Sequence[Member],
+    intersection: Sequence[QuadraticallyDescribed],
     objective: str = "volume",
     dims: Sequence[int] | None = None,
     clip: str | bool = "intersection",
@@ -238,8 +225,9 @@ def outer_ellipsoid(
 
     Parameters
     ----------
-    intersection : sequence of Ellipsoid, Strip, Halfspace, Box or QuadraticSet
-        The sets whose intersection is bounded (same dimension n).
+    intersection : sequence of Ellipsoid, Strip, Halfspace, Box, QuadraticSet, ...
+        The sets whose intersection is bounded (same dimension n): any type with a quadratic
+        description (``optbound.sets.base.QuadraticallyDescribed``).
     objective : {"volume", "trace", "projection"}
         Minimise the volume, the trace of the shape matrix, or the volume of the projection
         onto ``dims`` (see the module docstring for the projection derivation).
@@ -306,11 +294,11 @@ def outer_ellipsoid(
 
     template = intersection_template(n, k, objective, dims_t)
     # Column i is F_hat_i flattened in column-major order (symmetric: the same as row-major).
-    _cvx.set_value(template.forms, normalized.reshape(k, -1).T)
+    template.set(forms=normalized.reshape(k, -1).T)
     if template.weight is not None:
-        template.weight.value = _cvx.trace_weight(W)
+        template.set(weight=_cvx.trace_weight(W))
     try:
-        solve_time = solve(template.problem, solver, primal_only=True)
+        solve_time = template.solve(solver, primal_only=True)
     except SolverError as err:
         if err.status == cp.INFEASIBLE:
             raise SolverError(

@@ -1,8 +1,13 @@
-"""Writing each member of an intersection as one quadratic inequality in ``[x; 1]``.
+"""Writing each member of an intersection as quadratic inequalities in ``[x; 1]``.
 
-Ellipsoids and general ``QuadraticSet`` members are used as they are. Strips and half-spaces are
-first *clipped* to the extent of the bounded members along their normal: a strip
-``lo <= a^T x <= hi`` becomes ``max(lo, l) <= a^T x <= min(hi, u)`` where ``[l, u]`` is the
+Every member describes itself through the set protocol (``optbound.sets.base``):
+``quadratic_description()`` gives its quadratic forms, used as they are, and its linear ranges
+``lo <= a^T x <= hi`` (a strip, a half-space, a box's coordinates); ``enclosing_ellipsoid()``
+gives the ellipsoids the ranges are clipped to. No set type is named here, so a new type plugs
+in by implementing those two methods in its own module.
+
+The linear ranges are first *clipped* to the extent of the bounded members along their normal:
+a strip ``lo <= a^T x <= hi`` becomes ``max(lo, l) <= a^T x <= min(hi, u)`` where ``[l, u]`` is the
 range of ``a^T x`` over each ellipsoid. This does not change the intersection, but the
 S-procedure is not tight for a strip with one plane outside the ellipsoid (HS96's "partial
 consistency", [HS96, Sect. 4]): the far plane then becomes a tangent plane and the bound shrinks
@@ -35,43 +40,50 @@ import numpy as np
 
 from optbound.optimal.errors import EmptyIntersectionError
 from optbound.optimal.extents import clip_to_intersection
-from optbound.sets import Box, Ellipsoid, Halfspace, QuadraticSet, Strip
+from optbound.sets import Ellipsoid, Halfspace, QuadraticSet
+from optbound.sets.base import (
+    EmptySetError,
+    LinearRange,
+    QuadraticallyDescribed,
+    QuadraticDescription,
+)
 
 # Extents are widened by this relative amount so that rounding never clips away a feasible point.
 _EXTENT_RTOL = 1e-12
 
-Member = Ellipsoid | Strip | Halfspace | Box | QuadraticSet
 CLIPS = ("intersection", "ellipsoids", False)
 
 
-def _linear_ranges(member: Strip | Halfspace | Box) -> list[tuple[np.ndarray, float, float]]:
-    """``(a, lo, hi)`` rows with ``lo <= a^T x <= hi`` (infinite ends allowed)."""
-    if isinstance(member, Strip):
-        return [(member.a, member.b - 1.0, member.b + 1.0)]
-    if isinstance(member, Halfspace):
-        return [(member.a, -np.inf, member.b)]
-    eye = np.eye(member.dim)
-    return [
-        (eye[i], member.lo[i], member.hi[i])
-        for i in range(member.dim)
-        if np.isfinite(member.lo[i]) or np.isfinite(member.hi[i])
-    ]
+def _describe(member: QuadraticallyDescribed) -> QuadraticDescription:
+    """The member's quadratic description, or a ``ValueError`` naming its type.
+
+    The protocol is checked by its two methods directly: ``isinstance`` with a runtime
+    ``Protocol`` inspects the whole protocol on each call and cost more than the lifting.
+    """
+    describe = getattr(member, "quadratic_description", None)
+    if describe is None or not hasattr(member, "enclosing_ellipsoid"):
+        raise ValueError(
+            "intersection members must be sets with a quadratic description (Ellipsoid, Strip, "
+            "Halfspace, Box, QuadraticSet, or a type implementing quadratic_description() and "
+            f"enclosing_ellipsoid(), see optbound.sets.base), got {type(member).__name__}"
+        )
+    return describe()
 
 
-def _bounded_ellipsoid(member: Member) -> Ellipsoid | None:
-    """The member as an ellipsoid when it is one (raises if it is an empty quadratic set)."""
-    if isinstance(member, Ellipsoid):
-        return member
-    if isinstance(member, QuadraticSet) and member.is_bounded:
-        ellipsoid = member.as_ellipsoid()
-        if ellipsoid is None:
-            raise EmptyIntersectionError(f"the quadratic set {member!r} is empty")
-        return ellipsoid
-    return None
+def _enclosing(member: QuadraticallyDescribed) -> Ellipsoid | None:
+    """The member's enclosing ellipsoid; an empty member makes the intersection empty."""
+    try:
+        return member.enclosing_ellipsoid()
+    except EmptySetError as err:
+        raise EmptyIntersectionError(str(err)) from err
 
 
 def _clip(
-    member: Member, a: np.ndarray, lo: float, hi: float, bounded: Sequence[Ellipsoid]
+    member: QuadraticallyDescribed,
+    a: np.ndarray,
+    lo: float,
+    hi: float,
+    bounded: Sequence[Ellipsoid],
 ) -> tuple[float, float]:
     """``[lo, hi]`` intersected with each bounded member's range of ``a^T x`` (widened).
 
@@ -106,7 +118,7 @@ def _quadratic(a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
     return QuadraticSet.from_halfspace(Halfspace(-a, -lo))
 
 
-def _pair_products(rows: Sequence[tuple[np.ndarray, float, float]]) -> list[QuadraticSet]:
+def _pair_products(rows: Sequence[LinearRange]) -> list[QuadraticSet]:
     """``g^T [x;1] * h^T [x;1] <= 0`` for ``g >= 0`` a side of row i, ``h <= 0`` one of row j."""
     above = [np.append(a, -lo) for a, lo, _ in rows]  # a^T x - lo >= 0
     below = [np.append(-a, hi) for a, _, hi in rows]  # hi - a^T x >= 0
@@ -130,19 +142,22 @@ def check_clip(clip) -> str | bool:
 
 
 def lift(
-    members: Sequence[Member], clip: str | bool = "intersection", products: bool = False
+    members: Sequence[QuadraticallyDescribed],
+    clip: str | bool = "intersection",
+    products: bool = False,
 ) -> list[QuadraticSet]:
     """Quadratic inequalities whose intersection equals the members' intersection.
 
-    One inequality per member, in order, except a ``Box``, which gives one per coordinate with
-    a finite bound; then, with ``products``, the pair products of the finite ranges. ``clip``
-    is ``"intersection"`` (or ``True``), ``"ellipsoids"`` or ``False`` (module docstring).
+    Per member, in order: its description's forms, then one inequality per linear range (a
+    ``Box`` gives one per coordinate with a finite bound); then, with ``products``, the pair
+    products of the finite ranges. ``clip`` is ``"intersection"`` (or ``True``),
+    ``"ellipsoids"`` or ``False`` (module docstring).
 
     Raises
     ------
     ValueError
-        If ``members`` is empty, has an unsupported type, mixes dimensions, or ``clip`` is not
-        a mode.
+        If ``members`` is empty, has a type without a quadratic description, mixes
+        dimensions, or ``clip`` is not a mode.
     EmptyIntersectionError
         If clipping shows that the intersection is empty.
     """
@@ -150,24 +165,17 @@ def lift(
     members = list(members)
     if not members:
         raise ValueError("intersection must contain at least one set")
-    for member in members:
-        if not isinstance(member, Member):
-            raise ValueError(
-                "intersection members must be Ellipsoid, Strip, Halfspace, Box or QuadraticSet, "
-                f"got {type(member).__name__}"
-            )
+    descriptions = [_describe(member) for member in members]
     dims = {member.dim for member in members}
     if len(dims) != 1:
         raise ValueError(f"intersection members must share one dimension, got {sorted(dims)}")
-    bounded = [e for e in map(_bounded_ellipsoid, members) if e is not None] if clip else []
-    # Linear ranges per member (None for a quadratic member), clipped to the ellipsoids.
+    bounded = [e for e in map(_enclosing, members) if e is not None] if clip else []
+    # Linear ranges per member, clipped to the enclosing ellipsoids.
     ranges = [
-        [(a, *_clip(member, a, lo, hi, bounded)) for a, lo, hi in _linear_ranges(member)]
-        if isinstance(member, Strip | Halfspace | Box)
-        else None
-        for member in members
+        [(a, *_clip(member, a, lo, hi, bounded)) for a, lo, hi in description.ranges]
+        for member, description in zip(members, descriptions, strict=True)
     ]
-    flat = [row for rows in ranges if rows for row in rows]
+    flat = [row for rows in ranges for row in rows]
     # With a single linear row, its range clipped to the ellipsoid already is its exact range
     # over the intersection with that ellipsoid: the extents solve could not shrink it.
     if clip == "intersection" and bounded and len(flat) >= 2:
@@ -176,16 +184,12 @@ def lift(
             bounded[0], A, np.array([r[1] for r in flat]), np.array([r[2] for r in flat])
         )
         clipped = iter(zip(A, lo, hi, strict=True))
-        ranges = [rows if rows is None else [next(clipped) for _ in rows] for rows in ranges]
+        ranges = [[next(clipped) for _ in rows] for rows in ranges]
     quadratics: list[QuadraticSet] = []
-    for member, rows in zip(members, ranges, strict=True):
-        if isinstance(member, Ellipsoid):
-            quadratics.append(QuadraticSet.from_ellipsoid(member))
-        elif isinstance(member, QuadraticSet):
-            quadratics.append(member)
-        else:
-            quadratics.extend(_quadratic(a, lo, hi) for a, lo, hi in rows)
+    for description, rows in zip(descriptions, ranges, strict=True):
+        quadratics.extend(description.forms)
+        quadratics.extend(_quadratic(a, lo, hi) for a, lo, hi in rows)
     if products:
-        finite = [row for rows in ranges if rows for row in rows if np.all(np.isfinite(row[1:]))]
+        finite = [row for rows in ranges for row in rows if np.all(np.isfinite(row[1:]))]
         quadratics.extend(_pair_products(finite))
     return quadratics

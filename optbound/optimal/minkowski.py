@@ -26,32 +26,20 @@ can be slightly above the true minimum.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from functools import lru_cache
-
 import cvxpy as cp
 import numpy as np
 
 from optbound.optimal import _cvx
 from optbound.optimal.certify import certify_lmi
 from optbound.optimal.result import OuterResult, objective_value
-from optbound.optimal.solver import solve
+from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid
 
 OBJECTIVES = ("volume", "trace")
 
 
-@dataclass(frozen=True)
-class _Template:
-    problem: cp.Problem
-    factors: cp.Parameter
-    weight: cp.Parameter | None
-    matrix: cp.Variable
-    tau: cp.Variable
-
-
-@lru_cache(maxsize=32)
-def minkowski_template(n: int, k: int, objective: str) -> _Template:
+@cached_template(maxsize=32)
+def minkowski_template(n: int, k: int, objective: str) -> Template:
     """The joint-space S-procedure for ``k`` summands in R^n (built once per shape)."""
     L = cp.Parameter((n, k * n))
     tau = cp.Variable(k, nonneg=True)
@@ -66,7 +54,7 @@ def minkowski_template(n: int, k: int, objective: str) -> _Template:
         lmi = cp.bmat([[D, L.T], [L, X]])
         goal = cp.Minimize(cp.trace(weight @ X))
     problem = cp.Problem(goal, [_cvx.psd(lmi), cp.sum(tau) <= 1])
-    return _Template(_cvx.require_dpp(problem), L, weight, X, tau)
+    return Template(problem, factors=L, weight=weight, matrix=X, tau=tau)
 
 
 def _gram(X: np.ndarray) -> np.ndarray:
@@ -116,10 +104,10 @@ def minkowski_outer(
     scale = float(np.linalg.norm(L_y, 2))
 
     template = minkowski_template(n, k, objective)
-    template.factors.value = L_y / scale
+    template.set(factors=L_y / scale)
     if template.weight is not None:
-        template.weight.value = _cvx.trace_weight(W)
-    solve_time = solve(template.problem, solver, primal_only=True)
+        template.set(weight=_cvx.trace_weight(W))
+    solve_time = template.solve(solver, primal_only=True)
     X = template.matrix.value
     shape_y = np.linalg.inv(X) if objective == "volume" else X
     center = np.sum([e.center for e in ellipsoids], axis=0)

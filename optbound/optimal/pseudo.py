@@ -31,6 +31,7 @@ from optbound.optimal.enclosing import mvee
 from optbound.optimal.khachiyan import khachiyan_mvee
 from optbound.optimal.lower import volume_lower_bound
 from optbound.sets import Ellipsoid, PolynomialLifting, PseudoEllipsoid
+from optbound.sets.result import BoundResult
 
 # Points passed to the SDP at first (the farthest out in a rough enclosing ellipsoid), and
 # how many rounds may add the points the SDP's ellipsoid still misses.
@@ -43,20 +44,29 @@ BISECTIONS = 8
 
 
 @dataclass(frozen=True)
-class PseudoReference:
+class PseudoReference(BoundResult):
     """Bracket of the optimal pseudo-ellipsoid (lifted volumes) and the certified upper set.
 
     ``bound`` is proven to contain every inner and boundary box; ``lower <= optimum <= upper``
     with ``upper = bound.lifted.volume()``; ``sample_volume`` is the volume of the MVEE of the
     lifted inner-box corners (certified to enclose them); ``inflation`` the factor applied
-    to its semi-axes to make ``bound``.
+    to its semi-axes to make ``bound``. As a ``BoundResult``: ``set`` is ``bound`` and
+    ``margin`` is ``inflation - 1``.
     """
+
+    set_attribute = "bound"
+    certified = True
 
     bound: PseudoEllipsoid
     lower: float
     upper: float
     sample_volume: float
     inflation: float
+
+    @property
+    def margin(self) -> float:
+        """Relative enlargement of the lifted semi-axes, ``inflation - 1``."""
+        return self.inflation - 1.0
 
 
 def _corners(inner: np.ndarray) -> np.ndarray:

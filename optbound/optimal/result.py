@@ -7,11 +7,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.sets import Ellipsoid
+from optbound.sets.result import BoundResult
 
 
 @dataclass(frozen=True)
-class OuterResult:
-    """A certified outer ellipsoid and how it was obtained.
+class OuterResult(BoundResult):
+    """A certified outer ellipsoid and how it was obtained (a ``BoundResult``: ``set`` is
+    ``ellipsoid``, ``margin`` is ``inflation - 1``).
 
     Attributes
     ----------
@@ -35,6 +37,8 @@ class OuterResult:
         ellipsoids containing the set (so the reference's own gap is known).
     """
 
+    set_attribute = "ellipsoid"
+
     ellipsoid: Ellipsoid
     objective: float
     status: str
@@ -43,6 +47,11 @@ class OuterResult:
     certified: bool
     inflation: float
     lower_bound: float | None = None
+
+    @property
+    def margin(self) -> float:
+        """Relative enlargement of the semi-axes, ``inflation - 1``."""
+        return self.inflation - 1.0
 
 
 def objective_value(ellipsoid: Ellipsoid, objective: str, dims: tuple[int, ...] | None) -> float:

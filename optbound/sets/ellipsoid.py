@@ -12,9 +12,10 @@ from math import lgamma, log, pi
 
 import numpy as np
 
-from optbound._core import Box, ConvexSet, check_ellipsoid, raise_for, real_array
+from optbound._core import Box, check_ellipsoid, raise_for, real_array
 from optbound._core import validate as v
 from optbound.sets._triangular import lower_inverse
+from optbound.sets.base import ConvexSet, QuadraticDescription
 
 
 class Ellipsoid(ConvexSet):
@@ -156,6 +157,17 @@ class Ellipsoid(ConvexSet):
         """``extent`` of a finite float64 ``a`` of length ``dim`` (unchecked)."""
         mid, half = float(a @ self._center), float(np.sqrt(a @ self._shape @ a))
         return mid - half, mid + half
+
+    # ------------------------------------------------------------- the SDP protocol
+    def quadratic_description(self) -> QuadraticDescription:
+        """One form, ``(x - c)^T C^{-1} (x - c) - 1 <= 0`` (``QuadraticSet.from_ellipsoid``)."""
+        from optbound.sets.quadratic import QuadraticSet  # quadratic.py imports this module
+
+        return QuadraticDescription(forms=(QuadraticSet.from_ellipsoid(self),))
+
+    def enclosing_ellipsoid(self) -> Ellipsoid:
+        """The ellipsoid itself."""
+        return self
 
     # ---------------------------------------------------------------- operations
     def project(self, dims) -> Ellipsoid:

@@ -16,9 +16,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound._core import ConvexSet
 from optbound._core import validate as v
 from optbound.sets._triangular import lower_inverse
+from optbound.sets.base import ConvexSet, EmptySetError, QuadraticDescription
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.strip import Halfspace, Strip
 
@@ -212,6 +212,26 @@ class QuadraticSet:
                 "the quadratic set is a single point, not a full-dimensional ellipsoid"
             )
         return Ellipsoid(x0, r * np.linalg.inv(self.A))
+
+    # -------------------------------------------------------------- the SDP protocol
+    def quadratic_description(self) -> QuadraticDescription:
+        """The set's own form, used as it is."""
+        return QuadraticDescription(forms=(self,))
+
+    def enclosing_ellipsoid(self) -> Ellipsoid | None:
+        """The set as an ellipsoid when A is positive definite (``as_ellipsoid``), else None.
+
+        Raises
+        ------
+        EmptySetError
+            If A is positive definite and the set is empty.
+        """
+        if not self.is_bounded:
+            return None
+        ellipsoid = self.as_ellipsoid()
+        if ellipsoid is None:
+            raise EmptySetError(f"the quadratic set {self!r} is empty")
+        return ellipsoid
 
     def support(self, d) -> np.ndarray | float:
         """Support function of the set's closed convex hull, ``max {d^T x : q(x) <= 0}``.

@@ -6,8 +6,9 @@ import math
 
 import numpy as np
 
-from optbound._core import MAG, ConvexSet
+from optbound._core import MAG
 from optbound._core import validate as v
+from optbound.sets.base import ConvexSet, QuadraticDescription
 
 
 def _normal(name: str, a) -> np.ndarray:
@@ -47,6 +48,10 @@ class _LinearSet(ConvexSet):
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(a={self._a.tolist()}, b={self._b})"
+
+    def enclosing_ellipsoid(self) -> None:
+        """None: the set is unbounded."""
+        return None
 
     def _along_normal(self, d) -> tuple[np.ndarray, np.ndarray, bool]:
         """Directions as ``s * a``: the factors s, which rows are parallel to a, single flag.
@@ -93,6 +98,10 @@ class Strip(_LinearSet):
         """Euclidean distance between the two boundary planes."""
         return 2.0 / float(np.linalg.norm(self._a))
 
+    def quadratic_description(self) -> QuadraticDescription:
+        """One range, ``b - 1 <= a^T x <= b + 1``."""
+        return QuadraticDescription(ranges=((self._a, self._b - 1.0, self._b + 1.0),))
+
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         pts, single = v.points("X", X, self.dim)
         inside = np.abs(pts @ self._a - self._b) <= 1.0 + tol
@@ -108,6 +117,10 @@ class Strip(_LinearSet):
 
 class Halfspace(_LinearSet):
     """The half-space ``{x : a^T x <= b}``."""
+
+    def quadratic_description(self) -> QuadraticDescription:
+        """One range, ``-inf <= a^T x <= b``."""
+        return QuadraticDescription(ranges=((self._a, -np.inf, self._b),))
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         pts, single = v.points("X", X, self.dim)

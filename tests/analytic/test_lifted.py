@@ -35,6 +35,8 @@ def test_volume_criterion_is_bounding_update_in_the_lifted_space():
     np.testing.assert_array_equal(q.bound.center, ref.ellipsoid.center)
     np.testing.assert_array_equal(q.bound.shape, ref.ellipsoid.shape)
     assert q.lam == ref.lam
+    assert q.margin == ref.margin > 0.0  # the lifted member's certified inflation
+    assert q.set is q.bound and q.certified
 
 
 def test_l4_strip_update_equals_intersect_strip():

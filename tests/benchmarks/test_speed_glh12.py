@@ -4,8 +4,8 @@ import numpy as np
 
 from benchmarks import speed_glh12 as bench
 from optbound.interval import Tri
-from optbound.localization import arena
 from optbound.localization.visibility import visibility_test
+from optbound.scenarios import arena
 
 
 def test_records_and_table():

@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from optbound.localization import office
 from optbound.localization.association import SPURIOUS, associate, visibility_matrix
 from optbound.localization.landmark_map import LandmarkMap
+from optbound.scenarios import office
 from optbound.sets import Ellipsoid
 
 MAP = office.office_map()

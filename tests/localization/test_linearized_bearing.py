@@ -9,11 +9,12 @@ from optbound.localization.linearized_bearing import (
     linearized_localize,
     linearized_strip,
 )
+from optbound.scenarios import bh_geometry as bh
 from optbound.sets import Box
 
-LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])  # [BH, Sect. V]
-EPS = np.radians(4.0)
-GAMMAS = rb.bearings(np.zeros(2), LANDMARKS)
+LANDMARKS, PAIRS = bh.LANDMARKS, bh.PAIRS  # [BH, Sect. V]
+EPS = np.radians(bh.EPS_DEG)
+GAMMAS = rb.bearings(np.zeros(2), LANDMARKS, PAIRS)
 
 
 def test_box_ellipse_passes_through_the_corners():
@@ -28,24 +29,25 @@ def test_strip_is_the_tangent_of_the_bearing():
     li, lj = LANDMARKS[2], LANDMARKS[0]
     about = np.array([0.1, -0.05])
     S = linearized_strip(li, lj, GAMMAS[0], EPS, about)
-    gamma_at = rb.bearings(about, LANDMARKS)[0]
+    gamma_at = rb.bearings(about, LANDMARKS, PAIRS)[0]
     # a^T x - b = (g^T x - g^T c - (gamma_hat - gamma(c))) / eps
     assert S.a @ about - S.b == pytest.approx((gamma_at - GAMMAS[0]) / EPS, rel=1e-12)
     h = 1e-6
     for k in range(2):  # the normal is the bearing's gradient / eps
         step = np.eye(2)[k] * h
-        num = rb.bearings(about + step, LANDMARKS)[0] - rb.bearings(about - step, LANDMARKS)[0]
+        num = (
+            rb.bearings(about + step, LANDMARKS, PAIRS)[0]
+            - rb.bearings(about - step, LANDMARKS, PAIRS)[0]
+        )
         assert S.a[k] * EPS == pytest.approx(num / (2 * h), rel=1e-6)
 
 
 def test_bh_geometry_contains_the_truth_but_not_the_whole_exact_set():
-    res = linearized_localize(LANDMARKS, rb.SECT5_PAIRS, GAMMAS, EPS)
+    res = linearized_localize(LANDMARKS, PAIRS, GAMMAS, EPS)
     assert res.rejected == 0 and res.ellipse.contains(np.zeros(2))
-    paving = rb.exact_paving(
-        LANDMARKS, rb.SECT5_PAIRS, GAMMAS, EPS, [[-0.3, 0.3], [-0.3, 0.3]], 0.01
-    )
+    paving = rb.exact_paving(LANDMARKS, PAIRS, GAMMAS, EPS, [[-0.3, 0.3], [-0.3, 0.3]], 0.01)
     centres = paving.inner.mean(axis=2)
-    assert rb.in_exact_set(rb.measurements(LANDMARKS, rb.SECT5_PAIRS, GAMMAS, EPS), centres).all()
+    assert rb.in_exact_set(rb.measurements(LANDMARKS, PAIRS, GAMMAS, EPS), centres).all()
     assert not np.all(res.ellipse.contains(centres))  # not guaranteed: points of the set missed
 
 
@@ -60,7 +62,7 @@ def test_bh_geometry_contains_the_truth_but_not_the_whole_exact_set():
 )
 def test_bad_arguments(kwargs, match):
     with pytest.raises(ValueError, match=match):
-        linearized_localize(LANDMARKS, rb.SECT5_PAIRS, GAMMAS, EPS, **kwargs)
+        linearized_localize(LANDMARKS, PAIRS, GAMMAS, EPS, **kwargs)
 
 
 def test_linearizing_at_a_landmark_is_refused():

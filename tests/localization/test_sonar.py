@@ -4,17 +4,19 @@ import numpy as np
 import pytest
 
 from optbound.interval import Interval
-from optbound.localization import rooms
 from optbound.localization.sonar import (
     D_MAX,
     Sonar,
+    clearance_test,
     localize,
     measurement_box,
+    polygon_walls,
     range_inclusion,
     simulate_ranges,
 )
+from optbound.scenarios import rooms
 
-SQUARE = rooms.polygon([[-2, -2], [2, -2], [2, 2], [-2, 2]])
+SQUARE = polygon_walls([[-2, -2], [2, -2], [2, 2], [-2, 2]])
 GAMMA = np.deg2rad(12.0)
 CROSS = [Sonar((0.0, 0.0), k * np.pi / 2, GAMMA, 0.02) for k in range(4)]
 
@@ -26,7 +28,7 @@ def random_room(rng, n_walls=None):
     while np.max(np.diff(np.r_[angles, angles[0] + 2 * np.pi])) > 0.9 * np.pi:
         angles = np.sort(rng.uniform(0, 2 * np.pi, n))
     radii = rng.uniform(3.0, 6.0, n)
-    return rooms.polygon(np.column_stack([radii * np.cos(angles), radii * np.sin(angles)]))
+    return polygon_walls(np.column_stack([radii * np.cos(angles), radii * np.sin(angles)]))
 
 
 def random_belt(rng, n):
@@ -42,7 +44,7 @@ def random_belt(rng, n):
 
 
 def inside_pose(rng, world, clearance=0.5):
-    test = rooms.clearance_test(world, clearance)
+    test = clearance_test(world, clearance)
     while True:
         p = np.r_[rng.uniform(-3, 3, 2), rng.uniform(-np.pi, np.pi)]
         if test(*p) == 2:
@@ -194,7 +196,7 @@ def test_localize_square_components_and_hypotheses():
         d,
         [[-3, 3], [-3, 3], [-np.pi, np.pi]],
         0.04,
-        prior=rooms.clearance_test(SQUARE, 0.1),
+        prior=clearance_test(SQUARE, 0.1),
     )
     comps = paving.components()
     [mine] = [c for c in comps if c.contains(truth)]
@@ -220,7 +222,7 @@ def test_heading_seam_keeps_one_component(heading):
         d,
         [[-3, 3], [-3, 3], [-np.pi, np.pi]],
         0.04,
-        prior=rooms.clearance_test(SQUARE, 0.1),
+        prior=clearance_test(SQUARE, 0.1),
     )
     assert paving.X0.hi[2] > np.pi and paving.X0.hi[2] - paving.X0.lo[2] >= 2 * np.pi
     [mine] = [c for c in paving.components() if c.contains(truth)]

@@ -5,9 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from optbound.localization import office
 from optbound.localization.landmark_map import LandmarkMap
-from optbound.localization.tracker import SetTracker
+from optbound.localization.tracker import SetTracker, nearest_landmark, pose_level
 from optbound.sets import Ellipsoid
 
 MAP = LandmarkMap([[5.0, 0.0], [0.0, 5.0], [-5.0, 0.0], [0.0, -5.0]], shapes=np.eye(2) * 0.02**2)
@@ -87,17 +86,6 @@ def test_inconsistent_strip_is_rejected_and_the_set_kept():
     assert t.set is before
 
 
-def test_containment_rate_in_a_seeded_short_office_run():
-    data = office.simulate(laps=0.5, seed=3)
-    start = Ellipsoid(
-        data.poses[0] + [0.01, -0.01, 0.002], np.diag([0.05**2, 0.05**2, math.radians(1) ** 2])
-    )
-    result = office.track(data, start, "projection")
-    rate = float(np.mean(result.levels <= 1.0))
-    assert rate >= 0.95
-    assert result.updates > 1000 and result.wrong_associations == 0
-
-
 @pytest.mark.parametrize(
     ("kwargs", "error"),
     [
@@ -125,3 +113,24 @@ def test_bad_calls():
         t.predict([0.1, 0.0], np.eye(3))
     with pytest.raises(ValueError, match="odometry_shape"):
         t.predict([0.1, 0.0, 0.0], -np.eye(3))
+
+
+def test_pose_level_takes_the_heading_modulo_two_pi():
+    E = Ellipsoid([1.0, 2.0, 0.1], np.diag([0.1**2, 0.2**2, 0.05**2]))
+    assert pose_level(E, [1.0, 2.0, 0.1 + 4 * np.pi]) == pytest.approx(0.0, abs=1e-20)
+    assert pose_level(E, [1.1, 2.0, 0.1 - 2 * np.pi]) == pytest.approx(1.0)
+    assert pose_level(E, [1.0, 2.0, 0.15]) == pytest.approx(1.0)
+    with pytest.raises(ValueError, match="pose"):
+        pose_level(E, [1.0, np.nan, 0.0])
+
+
+def test_nearest_landmark_gates_and_refuses_ambiguity():
+    t = _tracker()  # centre (0.1, -0.1, 0.05): landmark 0 near bearing -psi, landmark 1 near pi/2
+    seen = np.arange(MAP.size)
+    x, y, psi = t.set.center
+    to_1 = math.atan2(5.0 - y, 0.0 - x) - psi
+    assert nearest_landmark(t, to_1 + 0.001, 0.01, seen) == 1
+    assert nearest_landmark(t, to_1 + 0.02, 0.01, seen) is None  # outside the gate
+    assert nearest_landmark(t, to_1, 0.01, np.array([0, 2, 3])) is None  # 1 not visible
+    assert nearest_landmark(t, to_1, 0.01, np.array([], dtype=int)) is None
+    assert nearest_landmark(t, to_1, 1.0, seen) is None  # runner-up within twice the gate

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from optbound.interval import Tri
-from optbound.localization import arena
 from optbound.localization import visibility as v
 from optbound.localization.environment import Environment
+from optbound.scenarios import arena
 from tests.localization import exact_visibility as ex
 
 WALL = np.array([[4.0, 0.0], [6.0, 0.0], [6.0, 10.0], [4.0, 10.0]])
@@ -85,7 +85,7 @@ def test_luvia_keeps_every_truth_and_contracts():
             continue
         boxes = np.stack([truth - rng.uniform(0.05, 0.95, truth.shape), truth], -1)
         boxes[:, :, 1] = boxes[:, :, 0] + 1.0
-        y = arena.measure(truth, env.exact)
+        y = v.measure(truth, env.exact)
         for i in range(len(truth)):
             out = v.luvia(i, y[i], boxes, env, 0.005)
             assert out is not None
@@ -251,3 +251,9 @@ def test_luvia_is_the_hull_of_algorithm_2():
 def test_odometry_rejects_bad_input(distance, heading, error, match):
     with pytest.raises(ValueError, match=match):
         v.odometry(np.array([[[0.0, 1.0], [0.0, 1.0]]]), distance, heading, error)
+
+
+def test_measure_sees_through_free_space_only():
+    pts = np.array([[1.0, 3.0], [4.0, 3.0], [2.5, 1.0]])  # obstacle 0 spans x 2..3, y 2..4.5
+    y = v.measure(pts, arena.environment(1).exact)
+    assert y.tolist() == [[True, False, True], [False, True, True], [True, True, True]]

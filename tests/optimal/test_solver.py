@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from optbound import Ellipsoid
-from optbound.optimal import SolverError, enclosing, intersection, minkowski, mvee, solver
+from optbound.optimal import SolverError, intersection, minkowski, mvee, solver, template
 from optbound.optimal.lift import lift
 from optbound.optimal.solver import check_solver, solve
 from tests.analytic.instances import random_ellipsoid, strip_relative_to
@@ -70,8 +70,8 @@ def solved_problems(monkeypatch):
         problems.append(problem)
         return solver.solve(problem, name, primal_only=primal_only)
 
-    for module in (intersection, minkowski, enclosing):
-        monkeypatch.setattr(module, "solve", recording_solve)
+    # Every cached template solves through ``Template.solve``.
+    monkeypatch.setattr(template, "solve", recording_solve)
     return problems
 
 

@@ -65,3 +65,6 @@ def bearing_gradient(x, y, li, lj):
         r2 = dx * dx + dy * dy
         gx, gy = gx - sign * dy / r2, gy + sign * dx / r2
     return gx, gy
+
+
+__all__ = ["bearing_gradient", "bearing_residual", "bearing_sides", "wrap_angle"]

@@ -127,3 +127,14 @@ def front_distance(p: Point, a: Point, b: Point):
     face inward is at least ``r`` from every wall iff this is ``>= r`` for every wall.
     """
     return -side(p, a, b) / distance(b, a)
+
+
+__all__ = [
+    "cone_candidates",
+    "distance",
+    "dot",
+    "front_distance",
+    "in_cone",
+    "nearest_in_cone",
+    "unit",
+]

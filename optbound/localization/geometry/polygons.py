@@ -306,3 +306,14 @@ def polygon_inside(inner: np.ndarray, outer: np.ndarray) -> bool:
     a2, b2 = _edge_boxes(outer)
     lo, _ = intersect_boxes(a1, b1, a2, b2)  # every edge pair
     return bool(np.all(lo > 0.0) and point_in_polygon(inner[:1], outer)[0] == 2)
+
+
+__all__ = [
+    "as_polygons",
+    "intersect_boxes",
+    "pack_polygons",
+    "point_in_polygon",
+    "polygon_inside",
+    "segment_pair_meets",
+    "segments_meet_polygons",
+]

@@ -111,3 +111,17 @@ def occluded(p: Point, q: Point, world: np.ndarray):
 def _trailing(c):
     """``c`` with a trailing axis for the segments (floats as arrays; intervals as they are)."""
     return (c if isinstance(c, Interval) else np.asarray(c, dtype=float))[..., None]
+
+
+__all__ = [
+    "Point",
+    "as_segments",
+    "crosses",
+    "det",
+    "exact",
+    "intersect",
+    "occluded",
+    "segment_points",
+    "side",
+    "to_world",
+]

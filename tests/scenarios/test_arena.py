@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from optbound.interval import Tri
-from optbound.localization import arena
 from optbound.localization.geometry import point_in_polygon
+from optbound.scenarios import arena
 
 
 def test_obstacles_and_starts_fit_the_room():
@@ -28,12 +28,6 @@ def test_simulate_follows_the_paper_sensing():
     assert 0.0 < run.visibility.mean() < 1.0
     for poly in run.env.exact:  # robots never enter an obstacle
         assert not np.any(point_in_polygon(run.truth.reshape(-1, 2), poly) != Tri.FALSE)
-
-
-def test_measure_sees_through_free_space_only():
-    pts = np.array([[1.0, 3.0], [4.0, 3.0], [2.5, 1.0]])  # obstacle 0 spans x 2..3, y 2..4.5
-    y = arena.measure(pts, arena.environment(1).exact)
-    assert y.tolist() == [[True, False, True], [False, True, True], [True, True, True]]
 
 
 @pytest.mark.parametrize(

@@ -13,7 +13,10 @@ along the wall, 1 cm across: the dominant error); odometry errors proportional t
 distance and turned angle with slowly varying, correlated factors (a constant bias plus a slow
 sinusoid) bounded by ``OdometryBounds``.
 
-Nothing here was tuned to reach the paper's numbers.
+Nothing here was tuned to reach the paper's numbers. The models it drives are
+:class:`optbound.localization.tracker.SetTracker` (with its association gate
+:func:`~optbound.localization.tracker.nearest_landmark`) and the association search of
+:mod:`optbound.localization.association`.
 """
 
 from __future__ import annotations
@@ -23,9 +26,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmark_map import LandmarkMap
-from optbound.localization.tracker import SetTracker
+from optbound.localization.tracker import SetTracker, nearest_landmark, pose_level
 from optbound.sets import Ellipsoid
 
 ROOM = (14.0, 10.0)
@@ -129,6 +131,7 @@ def course_pose(s) -> np.ndarray:
 
 
 def lap_length() -> float:
+    """Length of one lap of the course (m)."""
     x0, y0, x1, y1, r = COURSE
     return 2 * (x1 - x0 - 2 * r) + 2 * (y1 - y0 - 2 * r) + 2 * np.pi * r
 
@@ -194,30 +197,6 @@ def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = 
         noise = rng.uniform(-1.0, 1.0, seen.size) * DELTA_ALPHA
         data.scans.append((np.mod(bearing + noise, 2 * np.pi), seen))
     return data
-
-
-def pose_level(E: Ellipsoid, pose: np.ndarray) -> float:
-    """``E.level`` of ``pose`` with its heading taken modulo 2 pi nearest to E's centre."""
-    d = np.array([pose[0], pose[1], float(wrap_angle(pose[2] - E.center[2]))])
-    d[:2] -= E.center[:2]
-    return float(d @ np.linalg.solve(E.shape, d))
-
-
-def nearest_landmark(tracker: SetTracker, alpha: float, gate: float, seen: np.ndarray):
-    """Association during tracking: the landmark of ``seen`` whose predicted bearing is nearest.
-
-    Returns ``None`` when no landmark is within ``gate`` or the runner-up is within twice the
-    gate (ambiguous).
-    """
-    x, y, psi = tracker.set.center
-    lm = tracker.map.landmarks
-    off = np.abs(wrap_angle(np.arctan2(lm[seen, 1] - y, lm[seen, 0] - x) - psi - alpha))
-    if off.size == 0:
-        return None
-    order = np.argsort(off)
-    if off[order[0]] > gate or (off.size > 1 and off[order[1]] < 2 * gate):
-        return None
-    return int(seen[order[0]])
 
 
 @dataclass
@@ -308,3 +287,25 @@ def dead_reckoning(data: OfficeData, start: np.ndarray) -> np.ndarray:
             [c * step[0] - s * step[1], s * step[0] + c * step[1], step[2]]
         )
     return out
+
+
+__all__ = [
+    "COURSE",
+    "DELTA_ALPHA",
+    "LANDMARK_SIGMA",
+    "N_LANDMARKS",
+    "ROOM",
+    "SCAN_RATE",
+    "SPEED",
+    "WALLS",
+    "WALL_INSET",
+    "OdometryBounds",
+    "OfficeData",
+    "TrackResult",
+    "course_pose",
+    "dead_reckoning",
+    "lap_length",
+    "office_map",
+    "simulate",
+    "track",
+]

@@ -1,4 +1,4 @@
-"""The 10 x 10 m world of [GLH12, Sect. 5] for visibility-only pose tracking.
+"""The 10 x 10 m world of [GLH12, Sect. 5] for visibility-only pose tracking (our design).
 
 [GLH12, Fig. 7] (11 obstacles, 11 initial boxes, the robots' move limits) is lost. This
 module **designs** a substitute, fixed before any result was seen and never tuned to the
@@ -8,7 +8,8 @@ space. Robots wander (10 cm steps, a random-walk heading) anywhere in the room a
 ``CLEARANCE`` away from the obstacles in use; the paper's per-robot move limits are not known
 and are not imitated. The robots' sensing follows the paper: the displacement per step is
 known within ±0.1 cm, the heading within ±2.5° (compass), the initial box is 1 m x 1 m and
-contains the truth at a random offset.
+contains the truth at a random offset. The visibility measurements come from the model's
+:func:`optbound.localization.visibility.measure` on the exact obstacles.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import numpy as np
 
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import segments_meet_polygons
-from optbound.localization.visibility import visibility_test
+from optbound.localization.visibility import measure
 
 SIZE = 10.0
 STEP = 0.10
@@ -81,21 +82,6 @@ def _free(points: np.ndarray, obstacles) -> np.ndarray:
     return inside & (segments_meet_polygons(boxes, boxes, obstacles) == 0)
 
 
-def measure(points: np.ndarray, obstacles) -> np.ndarray:
-    """(m, m) true visibility of the robots at ``points`` through the exact obstacles.
-
-    Certified on the points; a pair within rounding of grazing an obstacle counts as not
-    visible, which keeps the guarantee since E ⊂ E⁺ with a margin and E⁻ has one inside E.
-    """
-    m = len(points)
-    i, j = np.triu_indices(m, 1)
-    pts = np.repeat(points[:, :, None], 2, axis=2)
-    seen = visibility_test(pts[i], pts[j], obstacles) == 2
-    y = np.eye(m, dtype=bool)
-    y[i, j] = y[j, i] = seen
-    return y
-
-
 def simulate(n_robots: int, n_obstacles: int, steps: int, seed: int) -> Run:
     """Seeded run of ``n_robots`` robots among the first ``n_obstacles`` obstacles."""
     if not 1 <= n_robots <= len(STARTS):
@@ -134,3 +120,19 @@ def simulate(n_robots: int, n_obstacles: int, steps: int, seed: int) -> Run:
     vis = vis.reshape(steps, n_robots, n_robots)
     distance = np.array([STEP - STEP_ERROR, STEP + STEP_ERROR])
     return Run(env, truth, boxes0, distance, true_heading + noise, vis)
+
+
+__all__ = [
+    "CLEARANCE",
+    "HEADING_ERROR",
+    "MARGIN",
+    "OBSTACLES",
+    "SIZE",
+    "STARTS",
+    "STEP",
+    "STEP_ERROR",
+    "TURN",
+    "Run",
+    "environment",
+    "simulate",
+]

@@ -1,9 +1,13 @@
 """The office scenario of the HS96 reproduction: map, course, error model."""
 
+import math
+
 import numpy as np
 
-from optbound.localization import geometry, office
+from optbound.localization import geometry
 from optbound.localization.geometry import wrap_angle
+from optbound.scenarios import office
+from optbound.sets import Ellipsoid
 
 
 def test_map_has_22_landmarks_and_partitions():
@@ -67,3 +71,14 @@ def test_dead_reckoning_drifts():
     dr = office.dead_reckoning(data, data.poses[0])
     drift = np.hypot(*(dr[-1, :2] - data.poses[-1, :2]))
     assert drift > 0.05
+
+
+def test_containment_rate_in_a_seeded_short_office_run():
+    data = office.simulate(laps=0.5, seed=3)
+    start = Ellipsoid(
+        data.poses[0] + [0.01, -0.01, 0.002], np.diag([0.05**2, 0.05**2, math.radians(1) ** 2])
+    )
+    result = office.track(data, start, "projection")
+    rate = float(np.mean(result.levels <= 1.0))
+    assert rate >= 0.95
+    assert result.updates > 1000 and result.wrong_associations == 0

@@ -1,0 +1,67 @@
+"""The relative-bearing geometry of [BH, Sect. V] and seeded random instances like it.
+
+[BH, Sect. V]: vehicle at ``[0, 0]``, landmarks ``L1 = [0, 1]``, ``L2 = [1, 1]``,
+``L3 = [-1, 0]``, relative bearings of the pairs (3, 1), (1, 2), (2, 3) (noise-free values
+90°, 45°, -135°). The noise bound eps = 4° is the value of [BH, Fig. 1]; Sect. V does not
+restate it. The paper's figures are lost, so nothing beyond these numbers is reproduced.
+:func:`random_instance` is **our design**: random landmark triples and vehicles with the
+same pairs, for sweeps. The model they feed is :mod:`optbound.localization.relative_bearing`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from optbound.localization.geometry import wrap_angle
+from optbound.localization.relative_bearing import bearings
+
+#: Landmarks ``L1, L2, L3`` of [BH, Sect. V] (0-based rows).
+LANDMARKS = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
+#: The vehicle's true position [BH, Sect. V].
+VEHICLE = np.zeros(2)
+#: The measured pairs of [BH, Sect. V]: (3, 1), (1, 2), (2, 3) in the paper's 1-based names.
+PAIRS = ((2, 0), (0, 1), (1, 2))
+#: Noise bound in degrees ([BH, Fig. 1]; not restated in Sect. V).
+EPS_DEG = 4.0
+
+
+def sect5_instance() -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
+    """The noise-free instance of [BH, Sect. V]: ``(landmarks, pairs, gammas, eps, vehicle)``."""
+    gammas = bearings(VEHICLE, LANDMARKS, PAIRS)
+    return LANDMARKS.copy(), list(PAIRS), gammas, float(np.radians(EPS_DEG)), VEHICLE.copy()
+
+
+def random_instance(
+    rng: np.random.Generator, pairs=PAIRS
+) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
+    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
+
+    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
+    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
+    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
+    need the crescent shape.
+    """
+    pairs = [tuple(p) for p in pairs]
+    margin = np.radians(3.0)
+    while True:
+        L = rng.uniform(-3.0, 3.0, (3, 2))
+        x = rng.uniform(-1.0, 1.0, 2)
+        eps = np.radians(rng.uniform(1.0, 8.0))
+        gam = bearings(x, L, pairs) + rng.uniform(-eps, eps, len(pairs))
+        dists = [np.linalg.norm(L[i] - L[j]) for i, j in pairs] + list(
+            np.linalg.norm(L - x, axis=1)
+        )
+        if min(dists) > 0.3 and np.all(
+            (np.abs(gam) > eps + margin) & (np.abs(gam) < np.pi - eps - margin)
+        ):
+            return L, pairs, wrap_angle(gam), eps, x
+
+
+__all__ = [
+    "EPS_DEG",
+    "LANDMARKS",
+    "PAIRS",
+    "VEHICLE",
+    "random_instance",
+    "sect5_instance",
+]
