@@ -67,6 +67,7 @@ from optbound._core.convex import ConvexSet, LinearRange, QuadraticDescription
 
 if TYPE_CHECKING:
     from optbound.sets.ellipsoid import Ellipsoid
+
 __all__ = [
     "BoxProver",
     "ConvexSet",
