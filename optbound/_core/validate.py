@@ -27,11 +27,12 @@ class NotRealError(TypeError, ValueError):
     """
 
 
-def real_array(name: str, value) -> np.ndarray:
+def real_array(name: str, value, what: str = "an array") -> np.ndarray:
     """``value`` as a float64 array (not copied if it is one); complex input is refused.
 
     Raises :class:`NotRealError` naming ``name`` for complex values (never silently truncated
-    to their real part) and for anything numpy cannot read as real numbers.
+    to their real part) and for anything numpy cannot read as real numbers (ragged rows, text,
+    objects); ``what`` describes the expected array in that message, e.g. ``"an (N, 2) array"``.
     """
     if type(value) is np.ndarray and value.dtype == np.float64:
         return value  # the common case, without the checks' ~1 us
@@ -41,7 +42,7 @@ def real_array(name: str, value) -> np.ndarray:
             return arr.astype(np.float64, copy=False)
     except (TypeError, ValueError):  # ragged, text, objects that are not numbers
         raise NotRealError(
-            f"{name} must be an array of real numbers, got {type(value).__name__}"
+            f"{name} must be {what} of real numbers, got {type(value).__name__}"
         ) from None
     raise NotRealError(f"{name} must be real, got complex values")
 

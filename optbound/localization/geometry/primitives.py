@@ -72,7 +72,7 @@ def as_segments(world, name: str = "world") -> np.ndarray:
     [KJWM00, eq. (2)]. Raises ``ValueError`` naming ``name`` for an empty map, a wrong shape,
     non-finite or complex coordinates, or a segment of zero length.
     """
-    arr = real_array(name, world)
+    arr = real_array(name, world, "an (s, 2, 2) array")
     if arr.ndim != 3 or arr.shape[1:] != (2, 2):
         raise ValueError(f"{name} must have shape (s, 2, 2) (segments [a, b]), got {arr.shape}")
     if arr.shape[0] == 0:
