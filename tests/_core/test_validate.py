@@ -39,3 +39,9 @@ def test_finite_array_keeps_the_shape_and_refuses_non_finite_values():
             v.finite_array("r", bad)
     with pytest.raises(ValueError, match="r must be real"):
         v.finite_array("r", [1j])
+
+
+def test_the_message_describes_the_expected_array():
+    message = r"^L must be an \(N, 2\) array of real numbers, got list$"
+    with pytest.raises(NotRealError, match=message):
+        real_array("L", [[0.0, 1.0], [1.0]], "an (N, 2) array")
