@@ -37,7 +37,7 @@ from optbound._core.domain import (
     SHAPE_RANGE,
     SYMMETRY_RTOL,
 )
-from optbound.analytic._midrad import (
+from optbound.analytic._kernels.midrad import (
     RADIUS_SAFETY,
     TINY,
     U,
@@ -91,7 +91,7 @@ def store_matrices(src, m, dst):
 @njit(cache=True, error_model="numpy", inline="always")
 def cholesky_lanes(A, L, m, pivot, at):
     """Cholesky factors of the lower triangles of A (n, n, W) into L (upper parts zeroed), as
-    ``_domain.cholesky`` per lane: the same operations in the same order, so the same bits.
+    ``_core.domain.cholesky`` per lane: the same operations in the same order, so the same bits.
     ``pivot[at + k]`` receives lane k's smallest pivot, or 0.0 if a pivot is not positive (the
     lane's factor is then meaningless). The sums accumulate in L itself, so that the lane loop
     is always the innermost one."""
@@ -123,7 +123,7 @@ def cholesky_lanes(A, L, m, pivot, at):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def check_ellipsoids(c, C, L, m, code, s):
-    """``_domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
+    """``_core.domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
     (n, n, W); writes the Cholesky factors into L and the error codes (same codes and the same
     precedence as the scalar check) into ``code`` (W,) int. ``s`` is (CHECK_ROWS W,) scratch:
     rows at constant offsets (rows as views of a 2-D array would need run-time overlap checks,
@@ -177,7 +177,7 @@ def check_ellipsoids(c, C, L, m, code, s):
 @njit(cache=True, error_model="numpy", inline="always")
 def trace_inverse_lanes(L, m, total):
     """``tr(A^{-1}) = ||L^{-1}||_F^2`` per lane (A = L L^T, L from :func:`cholesky_lanes`), as
-    ``_midrad.lambda_min_estimate`` (whose reciprocal it is): column j of X = L^{-1} by
+    ``midrad.lambda_min_estimate`` (whose reciprocal it is): column j of X = L^{-1} by
     forward substitution, its strict lower part stored transposed in L's strict upper
     triangle. ``total`` (W,) receives the sums."""
     n = L.shape[0]
@@ -201,11 +201,11 @@ def trace_inverse_lanes(L, m, total):
 
 @njit(cache=True, error_model="numpy")
 def inflate_lanes(S, D, c, d, T, L, m, margin, rows):
-    """``_midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
+    """``midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
     writes T (T may be S; L is work space) and each lane's margin (or -1.0 if T is too large
     for the domain) into ``margin`` (W,). ``rows``: 8 scratch rows (W,), separate arrays (see
-    ``_minkowski_kernel.block_work``). The same quantities as
-    ``_midrad.inflate`` (see there for the mathematics), computed lane by lane."""
+    ``minkowski_kernel.block_work``). The same quantities as
+    ``midrad.inflate`` (see there for the mathematics), computed lane by lane."""
     n = S.shape[0]
     trace, cmax, pivot, total = rows[0], rows[1], rows[2], rows[3]
     dd, DF, SF, mu = rows[4], rows[5], rows[6], rows[7]
