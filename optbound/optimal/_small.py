@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.sets._domain import check_ellipsoid
+from optbound._core import check_ellipsoid
 
 EPS = np.finfo(float).eps
 
@@ -172,7 +172,7 @@ def ellipsoid_in_x(
     """Centre ``c + W y0`` and shape ``W M^{-1} W^T`` (symmetrized) of the ellipsoid
     ``||A y + b|| <= 1`` (``M = A^2``, ``bt = A b``, centre ``y0 = -M^{-1} bt``) mapped back
     from the frame ``x = c + W y``, with the Cholesky factor and status of
-    ``sets._domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
+    ``_core.domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
     shape_y = np.linalg.inv(M)
     x0 = center - W @ (shape_y @ bt)
     C = W @ shape_y @ W.T

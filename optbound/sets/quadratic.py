@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.sets import _validate as v
+from optbound._core import validate as v
 from optbound.sets._triangular import lower_inverse
 from optbound.sets.base import ConvexSet, EmptySetError, QuadraticDescription
 from optbound.sets.ellipsoid import Ellipsoid
