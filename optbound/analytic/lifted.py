@@ -22,10 +22,14 @@ Criteria:
   bounding updates plus as many grid evaluations of ``resolution^2`` lifted points (L = 8,
   resolution 80: of the order of 0.1-0.5 s per update on this shared machine, against
   ~0.5 ms for "volume"; the README of the reproduction reports the measured time).
-  ``AREA_T_MAX`` caps lambda at ~1e3: the area criterion otherwise drives lambda to the cap
-  on the first ring, the lifted shape becomes nearly singular (cond ~1e11 and more,
-  ``../shared/papers/README.md``, "BH filter numerics") and the later updates can only
-  return lambda = 0.
+  ``AREA_T_MAX`` caps lambda at ~1e3. When the grid's smallest area is *at* the cap, the
+  area still decreases there: its minimizer is the degenerate limit lambda -> inf (the
+  measurement alone, unbounded in the lifted space), and any lambda near the cap gives a
+  nearly singular lifted shape (cond ~1e11 and more, ``../shared/papers/README.md``, "BH
+  filter numerics") after which the later updates can only return lambda = 0 and the
+  containment of the exact set can no longer be proven. The update then refuses with a
+  ``ValueError`` (give ``lam`` explicitly or use ``"volume"``) instead of returning that
+  member.
 """
 
 from __future__ import annotations
@@ -101,7 +105,9 @@ def lifted_update(
     TypeError
         If ``P`` is not a PseudoEllipsoid.
     ValueError
-        Bad shapes or values (as ``bounding_update``), unknown criterion, "area" with n != 2.
+        Bad shapes or values (as ``bounding_update``), unknown criterion, "area" with n != 2,
+        or "area" whose smallest area lies at the cap ``AREA_T_MAX`` of lambda (module
+        docstring).
     """
     if not isinstance(P, PseudoEllipsoid):
         raise TypeError(f"P must be a PseudoEllipsoid, got {type(P).__name__}")
@@ -144,6 +150,14 @@ def _min_area_lambda(update, window, resolution: int) -> float:
     ts = np.linspace(0.0, AREA_T_MAX, AREA_GRID)
     values = np.array([area(t) for t in ts])
     k = int(np.argmin(values))
+    if k == AREA_GRID - 1:
+        raise ValueError(
+            'criterion "area": the original-space area still decreases at the cap lambda = '
+            f"{AREA_T_MAX / (1.0 - AREA_T_MAX):.3g} (grid area {values[-2]:.3g} -> "
+            f"{values[-1]:.3g} over the last step), so its minimizer is the degenerate limit "
+            "lambda -> inf, where the lifted shape is nearly singular and the bound can no "
+            'longer be proven to contain the set; use criterion "volume" or give lam'
+        )
     lo, hi = ts[max(k - 1, 0)], ts[min(k + 1, AREA_GRID - 1)]
     best_t, best = ts[k], values[k]
     if hi > lo:

@@ -183,6 +183,23 @@ def test_area_criterion_is_proven_too(sect5):
     assert rb.certify_contains(res.bound, data, paving).proven
 
 
+def test_area_criterion_refuses_when_its_minimum_is_at_the_lambda_cap():
+    # The fifth geometry of the BH reproduction's sweep (seed 2026): on its first ring the
+    # original-space area still decreases at lambda's cap; the member there could not be
+    # proven to contain the exact set (9 of 10 before), so the update refuses.
+    from optbound.analytic import lifted
+    from optbound.scenarios import bh_geometry as bh
+
+    rng = np.random.default_rng(2026)
+    for _ in range(5):
+        L, pairs, gam, eps, _x = bh.random_instance(rng)
+    with pytest.raises(ValueError, match=r"ring update 0: .*still decreases at the cap") as err:
+        rb.localize(L, pairs, gam, eps, order=2, criterion="area")
+    assert f"{lifted.AREA_T_MAX / (1 - lifted.AREA_T_MAX):.3g}" in str(err.value)
+    # The volume criterion on the same data is unaffected.
+    assert rb.localize(L, pairs, gam, eps, order=2).bound is not None
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_random_geometries_are_proven(seed):
     rng = np.random.default_rng(seed)
