@@ -398,9 +398,7 @@ def localize(
     Raises
     ------
     ValueError, TypeError
-        Bad input (see :func:`measurements` and :func:`rings`); with ``criterion="area"``,
-        a ring update whose smallest area lies at lambda's cap (``analytic.lifted_update``
-        refuses it; the message names the update).
+        Bad input (see :func:`measurements` and :func:`rings`).
     """
     data = measurements(landmarks, pairs, gammas, eps)
     ring_list = all_rings(data)
@@ -415,10 +413,7 @@ def localize(
     for pair_rings in ring_list:
         for ring in pair_rings:
             H, z, V, v_center = ring_rows(ring, order, offset, scale)
-            try:
-                update = lifted_update(P, H, z, V, v_center, criterion=criterion)
-            except ValueError as err:  # the "area" criterion's refusal at its lambda cap
-                raise ValueError(f"ring update {len(lams)}: {err}") from err
+            update = lifted_update(P, H, z, V, v_center, criterion=criterion)
             lams.append(update.lam)
             margins.append(update.margin)
             if update.bound is None:
