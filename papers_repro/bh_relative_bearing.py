@@ -25,8 +25,7 @@ Computed here, all on the same instance:
   outside it), is counted on every geometry;
 - a seeded sweep over random geometries and eps in [1°, 8°]: ratios of areas to the exact
   area, how often L = 8 beats L = 4 and the linearized filter, and the "area" against the
-  "volume" criterion (the "area" criterion refuses an update whose smallest area lies at its
-  lambda cap; refusals are counted).
+  "volume" criterion, each "area" bound proven to contain the exact set.
 
 Each claim row carries a verdict computed from the numbers beside it by the rules stated in
 the row (:mod:`papers_repro._verdict`).
@@ -276,14 +275,10 @@ def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:
         row["L8_beats_lin"] = res["L8_area"][1] < lin["area"]
         if k < area_criterion:
             start = time.perf_counter()
-            try:
-                area_bound = rb.localize(L, pairs, gam, eps, order=2, criterion="area").bound
-            except ValueError as err:
-                row["area_refused"] = str(err)
-            else:
-                row["area_time"] = time.perf_counter() - start
-                row["L8_area_crit"] = area_bound.area_bounds(paving_eps)[1] / exact
-                row["area_proven"] = rb.certify_contains(area_bound, data, res["paving"]).proven
+            area_bound = rb.localize(L, pairs, gam, eps, order=2, criterion="area").bound
+            row["area_time"] = time.perf_counter() - start
+            row["L8_area_crit"] = area_bound.area_bounds(paving_eps)[1] / exact
+            row["area_proven"] = rb.certify_contains(area_bound, data, res["paving"]).proven
         rows.append(row)
     crit = [r for r in rows if "L8_area_crit" in r]
     return {
@@ -296,7 +291,9 @@ def sweep(n: int, area_criterion: int, seed: int = SWEEP_SEED) -> dict:
         "l8_beats_lin": int(sum(r["L8_beats_lin"] for r in rows)),
         "lin_truth_lost": int(sum(r["lin_truth_lost"] for r in rows)),
         "lin_set_lost": int(sum(r["lin_set_lost"] for r in rows)),
-        "area_refused": int(sum("area_refused" in r for r in rows)),
+        "l8_beats_lin_where_kept": int(
+            sum(r["L8_beats_lin"] for r in rows if not r["lin_set_lost"])
+        ),
         "l8_beats_l4": int(sum(r["L8_beats_L4"] for r in rows)),
         "l8_beats_box": int(sum(r["L8_beats_box"] for r in rows)),
         "l4_beats_box": int(sum(r["L4_beats_box"] for r in rows)),
@@ -422,7 +419,9 @@ def main(out_dir: Path, quick: bool = False) -> dict:
             f"{'lost' if lin['truth_lost'] else 'kept'}, exact set "
             f"{'partly lost' if lin['set_lost'] else 'kept'}); sweep: L = 8 below the "
             f"linearized filter in {sw['l8_beats_lin']}/{n}, the filter lost the truth in "
-            f"{sw['lin_truth_lost']}/{n} and part of the exact set in {sw['lin_set_lost']}/{n}; "
+            f"{sw['lin_truth_lost']}/{n} and part of the exact set in {sw['lin_set_lost']}/{n} "
+            f"(where it kept the set, L = 8 below it in {sw['l8_beats_lin_where_kept']}/"
+            f"{n - sw['lin_set_lost']}); "
             "reproduced if L = 8 is below every outer ellipse (the lower end of the best "
             f"ellipse's bracket) and below the linearized filter on Sect. V and in ≥ {MOSTLY:.0%} "
             "of the sweep, partly if some",
@@ -444,16 +443,13 @@ def main(out_dir: Path, quick: bool = False) -> dict:
             ),
         ],
     ]
-    crit_rows = [r for r in sw["rows"] if "L8_area_crit" in r or "area_refused" in r]
-    if crit_rows:
+    if sw["area_vs_volume"]:
         accepted = len(sw["area_vs_volume"])
         claims.append(
             [
                 "the paper's own criterion (original-space area) contains the exact set",
                 "guaranteed for every lambda (Sect. III-B)",
-                f"proven on {sw['area_proven']}/{accepted} accepted geometries; refused on "
-                f"{sw['area_refused']}/{len(crit_rows)} (area minimum at the lambda cap); "
-                "reproduced if every accepted one is proven",
+                f"proven on {sw['area_proven']}/{accepted} sweep geometries; reproduced if on all",
                 verdict.all_or_some([sw["area_proven"] == accepted]),
             ]
         )
@@ -465,8 +461,7 @@ def main(out_dir: Path, quick: bool = False) -> dict:
         f"Area criterion (L = 8) on {len(area_crit)} geometries: area / volume-criterion area "
         f"median {np.median(area_crit):.3f}, range [{min(area_crit):.3f}, {max(area_crit):.3f}], "
         f"proven {sw['area_proven']}/{len(area_crit)}, median time {sw['area_time_median']:.2f} s "
-        f"per localization; refused on {sw['area_refused']} more (smallest area at the lambda "
-        "cap)."
+        "per localization."
         if area_crit
         else "Area criterion: not run in the quick variant."
     )
