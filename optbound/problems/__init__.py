@@ -11,19 +11,22 @@ p.references()     # {"optimal_ellipsoid": ..., "best_box": ...}, certified oute
 result = evaluate(my_estimator, suite)          # size brackets, ratios, soundness per problem
 ```
 
-Families: ``strip`` (ellipsoid ∩ strip) so far; each family module defines
-``problems(suite, seed) -> list[Problem]``.
+Families (one module each, defining ``problems(suite, seed) -> list[Problem]``): ``strip``
+(ellipsoid ∩ strip), ``minkowski`` (sum of two ellipsoids), ``recursive`` (ellipsoid ∩ a
+sequence of strips), ``bh_bearings`` (BH relative bearings).
 """
 
 from __future__ import annotations
 
-from optbound.problems import strip
+from optbound.problems import bh_bearings, minkowski, recursive, strip
 from optbound.problems.audit import evaluate
 from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
-_FAMILIES = {strip.NAME: strip.problems}
+_FAMILIES = {
+    module.NAME: module.problems for module in (strip, minkowski, recursive, bh_bearings)
+}
 
 
 def families() -> list[str]:

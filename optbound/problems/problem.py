@@ -50,6 +50,10 @@ class Problem:
     volume : callable or None
         ``volume() -> (lo, hi)``: a closed-form certified bracket of the true set's volume,
         where the family has one (else the exact paving's bracket is used).
+    optimal : callable or None
+        ``optimal(problem) -> Ellipsoid``: the family's certified optimal outer ellipsoid,
+        where it is not the S-procedure SDP of :attr:`intersection` (e.g. the SDP of a
+        Minkowski sum, or the best of an SDP and the MVEE of the exact paving's boxes).
     """
 
     family: str
@@ -63,6 +67,7 @@ class Problem:
     eps: float = field(repr=False)
     intersection: tuple = field(default=(), repr=False)
     volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
+    optimal: Callable[[Problem], Any] | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
 
     def member(self, X) -> np.ndarray:
@@ -98,16 +103,22 @@ class Problem:
     def references(self) -> dict[str, Any]:
         """Reference bounds of the true set, all certified to contain it.
 
-        - ``"optimal_ellipsoid"``: the S-procedure SDP optimum of :attr:`intersection`
+        - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has one,
+          else the S-procedure SDP optimum of :attr:`intersection`
           (``optimal.outer_ellipsoid``, certified and inflated if needed);
         - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
           hence exact), the smallest box the paving can prove.
         """
         if "references" not in self._cache:
-            from optbound import optimal  # cvxpy only when a reference is asked for
-
             self._cache["references"] = {
-                "optimal_ellipsoid": optimal.outer_ellipsoid(list(self.intersection)).ellipsoid,
+                "optimal_ellipsoid": self._optimal_ellipsoid(),
                 "best_box": self.exact().hull(),
             }
         return dict(self._cache["references"])
+
+    def _optimal_ellipsoid(self):
+        if self.optimal is not None:
+            return self.optimal(self)
+        from optbound import optimal  # cvxpy only when a reference is asked for
+
+        return optimal.outer_ellipsoid(list(self.intersection)).ellipsoid
