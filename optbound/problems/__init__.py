@@ -24,9 +24,7 @@ from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
-_FAMILIES = {
-    module.NAME: module.problems for module in (strip, minkowski, recursive, bh_bearings)
-}
+_FAMILIES = {module.NAME: module.problems for module in (strip, minkowski, recursive, bh_bearings)}
 
 
 def families() -> list[str]:
