@@ -8,6 +8,7 @@ membership of a point and the paving can never disagree.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -105,7 +106,9 @@ class Problem:
 
         - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has one,
           else the S-procedure SDP optimum of :attr:`intersection`
-          (``optimal.outer_ellipsoid``, certified and inflated if needed);
+          (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
+          intersection) the certified MVEE of the exact paving's box corners
+          (``optimal.mvee``, which contains every box);
         - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
           hence exact), the smallest box the paving can prove.
         """
@@ -121,4 +124,21 @@ class Problem:
             return self.optimal(self)
         from optbound import optimal  # cvxpy only when a reference is asked for
 
-        return optimal.outer_ellipsoid(list(self.intersection)).ellipsoid
+        if self.intersection:
+            return optimal.outer_ellipsoid(list(self.intersection)).ellipsoid
+        return optimal.mvee(paving_corners(self.exact())).ellipsoid
+
+
+def paving_corners(paving: Paving) -> np.ndarray:
+    """The vertices of the convex hull of the corners of a paving's inner and boundary boxes.
+
+    An ellipsoid containing them contains every box, hence the paved set: the input of the
+    MVEE reference (the hull's vertices alone give the same MVEE, far fewer points).
+    """
+    from scipy.spatial import ConvexHull
+
+    outer = paving.outer()
+    n = outer.shape[1]
+    picks = np.array(list(itertools.product((0, 1), repeat=n)))
+    corners = np.unique(np.concatenate([outer[:, np.arange(n), pick] for pick in picks]), axis=0)
+    return corners[ConvexHull(corners).vertices]
