@@ -13,18 +13,29 @@ result = evaluate(my_estimator, suite)          # size brackets, ratios, soundne
 
 Families (one module each, defining ``problems(suite, seed) -> list[Problem]``): ``strip``
 (ellipsoid ∩ strip), ``minkowski`` (sum of two ellipsoids), ``recursive`` (ellipsoid ∩ a
-sequence of strips), ``bh_bearings`` (BH relative bearings).
+sequence of strips), ``bh_bearings`` (BH relative bearings), ``hs96_pose`` (HS96 landmark
+bearings, pose x, y, psi), ``sonar`` (LJMW97/KJWM00 sonar scan, pose x, y, theta),
+``visibility`` (GLH12: one robot's box at one step).
 """
 
 from __future__ import annotations
 
-from optbound.problems import bh_bearings, minkowski, recursive, strip
+from optbound.problems import (
+    bh_bearings,
+    hs96_pose,
+    minkowski,
+    recursive,
+    sonar,
+    strip,
+    visibility,
+)
 from optbound.problems.audit import evaluate
 from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
-_FAMILIES = {module.NAME: module.problems for module in (strip, minkowski, recursive, bh_bearings)}
+_MODULES = (strip, minkowski, recursive, bh_bearings, hs96_pose, sonar, visibility)
+_FAMILIES = {module.NAME: module.problems for module in _MODULES}
 
 
 def families() -> list[str]:
