@@ -153,3 +153,56 @@ def check(p, x) -> bool:
     if p.family == "sonar":
         return in_sonar_set(p.data, x)
     raise ValueError(f"no exact check for family {p.family!r}")
+
+
+def _outside_minkowski_sum(E1, E2, x) -> bool:
+    """A direction ``d`` (the κ family's normals) with ``d^T (x - c) > h(d)``, in 50 digits."""
+    r = np.asarray(x, dtype=float) - (E1.center + E2.center)
+    Qinv = np.linalg.inv(
+        E1.shape / (1 - minkowski.KAPPAS)[:, None, None]
+        + E2.shape / minkowski.KAPPAS[:, None, None]
+    )
+    for d in np.einsum("kij,j->ki", Qinv, r):
+        D = mpmath.matrix([mpmath.mpf(float(v)) for v in d])
+        reach = sum(
+            D[i] * (mpmath.mpf(float(x[i])) - mpmath.mpf(E1.center[i]) - mpmath.mpf(E2.center[i]))
+            for i in range(len(d))
+        )
+        h = sum(
+            mpmath.sqrt(
+                (D.T * mpmath.matrix([[mpmath.mpf(c) for c in row] for row in E.shape]) * D)[0]
+            )
+            for E in (E1, E2)
+        )
+        if reach > h:
+            return True
+    return False
+
+
+def _outside_bearing_set(data, x) -> bool:
+    """Some relative bearing beyond its bound, in 50-digit arithmetic."""
+    px, py = (mpmath.mpf(float(v)) for v in x)
+    for (i, j), g, e in zip(data.pairs, data.gammas, data.eps, strict=True):
+        Li, Lj = data.landmarks[i], data.landmarks[j]
+        ai = mpmath.atan2(py - mpmath.mpf(Li[1]), px - mpmath.mpf(Li[0]))
+        aj = mpmath.atan2(py - mpmath.mpf(Lj[1]), px - mpmath.mpf(Lj[0]))
+        if abs(_wrap(ai - aj - mpmath.mpf(float(g)))) > mpmath.mpf(float(e)):
+            return True
+    return False
+
+
+#: Families whose FALSE points :func:`check_outside` can verify.
+OUTSIDE_FAMILIES = ("strip", "recursive", "minkowski", "bh_bearings")
+
+
+def check_outside(p, x) -> bool:
+    """Is the float point ``x`` outside the true set of ``p``? (Exact or 50-digit, as above.)"""
+    if p.family == "strip":
+        return not in_intersection((p.data["ellipsoid"], p.data["strip"]), x)
+    if p.family == "recursive":
+        return not in_intersection((p.data["prior"], *p.data["strips"]), x)
+    if p.family == "minkowski":
+        return _outside_minkowski_sum(*p.data["summands"], x)
+    if p.family == "bh_bearings":
+        return _outside_bearing_set(p.data["measurements"], x)
+    raise ValueError(f"no exact exclusion check for family {p.family!r}")

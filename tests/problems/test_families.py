@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from optbound import Box, problems
 from optbound.compare import prove_contains
 from optbound.interval import Tri
-from tests.problems.exact_membership import check
+from tests.problems.exact_membership import OUTSIDE_FAMILIES, check, check_outside
 
 FAMILIES = problems.families()
 TINY = problems.suite("tiny")
@@ -65,6 +65,16 @@ def test_member_true_points_are_in_the_true_set(family):
     if p.truth is not None:
         assert p.member(p.truth)[0] != Tri.FALSE  # the simulated state is never excluded
         assert check(p, p.truth) or p.member(p.truth)[0] == Tri.UNKNOWN
+
+
+@pytest.mark.parametrize("family", OUTSIDE_FAMILIES)
+def test_member_false_points_are_outside_the_true_set(family):
+    p = _problem(family)
+    X = p.domain.sample(300, np.random.default_rng(2))
+    tri = p.member(X)
+    assert np.any(tri == Tri.FALSE)
+    for x in X[tri == Tri.FALSE][:30]:
+        assert check_outside(p, x), (p.name, x.tolist())
 
 
 @pytest.mark.parametrize("family", FAMILIES)
