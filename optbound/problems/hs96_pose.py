@@ -11,10 +11,11 @@ the pose (its heading taken within pi of the domain's centre).
 
 The true set is the exact error propagation of [HS96, Sect. 3]: the poses for which every
 bearing is consistent with some landmark in its ellipse and some error within
-``delta_alpha``. It is described once by the interval test of
-:func:`optbound.localization.landmarks.pose_paving`; its domain is the hull of that paving's
-adaptive refinement from the office box times every heading (guaranteed, and defined also
-where HS96's linear position bound is not), paved at 1/40 of the hull's widest side.
+``delta_alpha``. It is described once by the interval test that
+:func:`optbound.localization.landmarks.pose_paving` paves (``landmarks.pose_test``); its
+domain is the hull of that paving's adaptive refinement from the office box times every
+heading (guaranteed, and defined also where HS96's linear position bound is not), paved at
+1/RELATIVE of the hull's widest side.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import math
 
 import numpy as np
 
-from optbound.localization.landmarks import _bearing_test, _windows, pose_paving
+from optbound.localization.landmarks import pose_paving, pose_test
 from optbound.problems._random import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import office
@@ -38,7 +39,7 @@ SIZES = {
 #: The initial box of the domain's refinement: the office and every heading.
 ROOM = np.array([[0.0, office.ROOM[0]], [0.0, office.ROOM[1]], [-np.pi, np.pi]])
 #: Paving resolution: 1/RELATIVE of the domain's widest side (as ``pose_paving`` refines).
-RELATIVE = 80
+RELATIVE = 120
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
@@ -77,7 +78,7 @@ def problem(task: dict) -> Problem:
     inst = instance(task["seed"], task["count"], delta)
     L, C, alphas = inst["landmarks"], inst["landmark_shapes"], inst["alphas"]
     domain = pose_paving(L, alphas, delta, C, X0=ROOM).hull()
-    test = _bearing_test(L, C, alphas, delta, _windows(domain.lo[2], domain.hi[2], alphas))
+    test = pose_test(L, alphas, delta, C, (domain.lo[2], domain.hi[2]))
     truth = inst["truth"].copy()
     truth[2] -= 2 * np.pi * round((truth[2] - domain.center[2]) / (2 * np.pi))
     return Problem(
