@@ -128,3 +128,25 @@ def test_tasks_refuse_unknown_suites(module):
     family = importlib.import_module(f"optbound.problems.{module}")
     with pytest.raises(ValueError, match="suite must be one of"):
         family.tasks("huge", 0)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_recursive_domains_contain_the_true_set(seed):
+    from optbound.compare import exact
+
+    for p in problems.suite("tiny", families=["recursive"], seed=seed):
+        sets = (p.data["prior"], *p.data["strips"])
+        X = p.data["prior"].sample(4000, np.random.default_rng(seed))
+        inside = [x for x in X if all(exact.member(S, x) for S in sets)]
+        assert inside, p.name
+        assert all(exact.member(p.domain, x) for x in inside)
+
+
+def test_minkowski_domain_contains_the_sum():
+    for p in problems.suite("tiny", families=["minkowski"]):
+        E1, E2 = p.data["summands"]
+        rng = np.random.default_rng(0)
+        # Extreme points of the sum: the support points of both summands in one direction.
+        for d in rng.standard_normal((200, p.dim)):
+            x = sum(E.center + E.shape @ d / np.sqrt(d @ E.shape @ d) for E in (E1, E2))
+            assert np.all(p.domain.lo <= x) and np.all(x <= p.domain.hi)
