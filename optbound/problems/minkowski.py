@@ -103,10 +103,7 @@ def sum_test(E1: Ellipsoid, E2: Ellipsoid):
         outside = np.asarray(reach.lo > support.hi)
         # TRUE: B = Y + Z with the box Y = y + a (B - m) in E1 and Z = (m - y) + (1 - a)(B - m)
         # in E2; the box's width is shared as the summands' supports in direction d.
-        h1, h2 = (
-            np.sqrt(np.einsum("mi,ij,mj->m", d, C1, d)),
-            np.sqrt(np.einsum("mi,ij,mj->m", d, C2, d)),
-        )
+        h1, h2 = (np.sqrt(np.maximum(np.einsum("mi,ij,mj->m", d, C, d), 0.0)) for C in (C1, C2))
         with np.errstate(invalid="ignore"):
             a = np.where(h1 + h2 > 0.0, h1 / (h1 + h2), 0.5).reshape(shape)
         y = (c1 + np.einsum("ij,mj->mi", C1, d) / (1.0 - KAPPAS[k])[:, None]).reshape(*shape, n)
