@@ -35,8 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from optbound._core import validate as v
 from optbound.analytic.bounding_update import bounding_update
-from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import PseudoEllipsoid
 from optbound.sets.result import BoundResult
 

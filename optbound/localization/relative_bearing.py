@@ -48,11 +48,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.analytic import lifted_update, parabola_arc_ellipse
 from optbound.interval import Paving, constraint, pave, tri_and
 from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
 from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
-from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
 from optbound.sets.result import BoundResult
 

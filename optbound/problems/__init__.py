@@ -20,22 +20,28 @@ bearings, pose x, y, psi), ``sonar`` (LJMW97/KJWM00 sonar scan, pose x, y, theta
 
 from __future__ import annotations
 
-from optbound.problems import (
-    bh_bearings,
-    hs96_pose,
-    minkowski,
-    recursive,
-    sonar,
-    strip,
-    visibility,
-)
+import importlib
+
+from optbound._lazy import attach
 from optbound.problems.audit import evaluate
 from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
-_MODULES = (strip, minkowski, recursive, bh_bearings, hs96_pose, sonar, visibility)
-_FAMILIES = {module.NAME: module.problems for module in _MODULES}
+#: Family name -> its module (imported when a suite asks for it: the localization families
+#: pull in their models and worlds).
+_FAMILIES = {
+    name: f"optbound.problems.{name}"
+    for name in (
+        "strip",
+        "minkowski",
+        "recursive",
+        "bh_bearings",
+        "hs96_pose",
+        "sonar",
+        "visibility",
+    )
+}
 
 
 def families() -> list[str]:
@@ -60,7 +66,13 @@ def suite(name: str, families: list[str] | None = None, seed: int = 0) -> list[P
     unknown = [f for f in chosen if f not in _FAMILIES]
     if unknown:
         raise ValueError(f"families: unknown {unknown}; known: {list(_FAMILIES)}")
-    return [p for family in chosen for p in _FAMILIES[family](name, seed)]
+    return [
+        p
+        for family in chosen
+        for p in importlib.import_module(_FAMILIES[family]).problems(name, seed)
+    ]
 
 
 __all__ = ["SUITES", "Evaluation", "Problem", "evaluate", "families", "suite"]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=tuple(_FAMILIES))

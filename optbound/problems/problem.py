@@ -15,11 +15,11 @@ from typing import Any
 
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.compare.size import paving_volume_bracket
 from optbound.compare.tri import point_test
 from optbound.interval import Paving, pave
 from optbound.sets import Box
-from optbound.sets import _validate as v
 
 
 @dataclass(frozen=True, eq=False)

@@ -11,7 +11,7 @@ from optbound.problems import strip
 
 @pytest.mark.parametrize(("suite", "seed"), [("tiny", 0), ("quick", 0), ("quick", 7)])
 def test_instances_are_bitwise_those_of_the_bench(suite, seed):
-    from benchmarks import strip_tightness
+    from optbound.bench import strip_tightness
 
     tasks = strip_tightness.tasks(suite, seed)
     ours = problems.suite(suite, families=["strip"], seed=seed)
