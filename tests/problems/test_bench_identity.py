@@ -10,7 +10,7 @@ CASES = [("tiny", 0), ("quick", 0), ("quick", 7)]
 
 @pytest.mark.parametrize(("suite", "seed"), CASES)
 def test_minkowski_instances_are_the_bench_s(suite, seed):
-    from benchmarks import minkowski_tightness as bench
+    from optbound.bench import minkowski_tightness as bench
 
     tasks = bench.tasks(suite, seed)
     ours = problems.suite(suite, families=["minkowski"], seed=seed)
@@ -24,7 +24,7 @@ def test_minkowski_instances_are_the_bench_s(suite, seed):
 
 @pytest.mark.parametrize(("suite", "seed"), CASES)
 def test_recursive_instances_are_the_bench_s(suite, seed):
-    from benchmarks import recursive_tightness as bench
+    from optbound.bench import recursive_tightness as bench
 
     tasks = bench.tasks(suite, seed)
     ours = iter(problems.suite(suite, families=["recursive"], seed=seed))
@@ -44,7 +44,7 @@ def test_recursive_instances_are_the_bench_s(suite, seed):
 
 @pytest.mark.parametrize(("suite", "seed"), CASES)
 def test_bh_bearings_instances_are_the_bench_s(suite, seed):
-    from benchmarks import localization_tightness as bench
+    from optbound.bench import localization_tightness as bench
 
     tasks = bench.tasks(suite, seed)
     ours = problems.suite(suite, families=["bh_bearings"], seed=seed)
@@ -61,7 +61,7 @@ def test_bh_bearings_instances_are_the_bench_s(suite, seed):
 
 
 def test_bh_bearings_exact_set_is_the_bench_paving():
-    from benchmarks import localization_tightness as bench
+    from optbound.bench import localization_tightness as bench
 
     p = problems.suite("tiny", families=["bh_bearings"])[0]
     task = bench.tasks("tiny", 0)[0]
