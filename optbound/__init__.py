@@ -13,9 +13,10 @@ from __future__ import annotations
 import importlib
 import importlib.util
 
-from optbound import _jit_cache
+from optbound import _compile_notice, _jit_cache
 
 _jit_cache.refresh()  # before any compiled kernel is loaded from numba's cache
+_compile_notice.install()  # one line on stderr if this run compiles kernels
 
 from optbound.sets import (  # noqa: E402
     Box,
