@@ -29,21 +29,10 @@ def run_once(suite: str, jobs: int, cache: str) -> dict:
     load0 = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as out:
         start = time.perf_counter()
+        command = [sys.executable, "-m", "optbound.cli", "bench", "--suite", suite]
+        command += ["--jobs", str(jobs), "--no-progress", "--force", "--out", out]
         done = subprocess.run(
-            [
-                sys.executable,
-                "-m",
-                "optbound.cli",
-                "bench",
-                "--suite",
-                suite,
-                "--jobs",
-                str(jobs),
-                "--no-progress",
-                "--force",
-                "--out",
-                out,
-            ],  # fmt: skip
+            command,
             env={**os.environ, "NUMBA_CACHE_DIR": cache},
             capture_output=True,
             text=True,
