@@ -105,9 +105,13 @@ def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=("tiny", "quick"), default="tiny")
     parser.add_argument("--top", type=int, default=40, help="rows shown (largest self time)")
+    parser.add_argument("--json", help="also write the raw measurement to this file")
     args = parser.parse_args(argv)
     load = os.getloadavg()[0]
     result = measure(args.suite)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(result, f, indent=1)
     rows = result["rows"]
     total = sum(r["top"] for r in rows.values())
     print(f"numba target: {target()}; load average {load:.1f} at start, {os.getloadavg()[0]:.1f} "
