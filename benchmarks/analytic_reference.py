@@ -13,20 +13,31 @@ lane-parallel p solver and evaluates the member with the plain formula.
 from __future__ import annotations
 
 from functools import partial
+from pathlib import Path
 from types import FunctionType
 
 import numpy as np
 from numba import njit, prange
 
+from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
 from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
-# Not cached on disk: numba would not notice an edit of the reference or of a kernel they call
-# (``optbound._jit_cache`` covers the package's own kernels only); compiling these takes seconds.
-_OPTIONS = {"error_model": "numpy", "nogil": True}
+# Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
+# caches dropped whenever the reference, this file or any kernel they call changes (numba
+# tracks only the defining file).
+_jit_cache.refresh(
+    cache_dirs=[
+        Path(__file__).parent / "__pycache__",
+        Path(reference.__file__).parent / "__pycache__",
+    ],
+    sources=[*_jit_cache.kernel_sources(), Path(reference.__file__), Path(__file__)],
+    stamp="analytic_reference.stamp",
+)
+_OPTIONS = {"error_model": "numpy", "nogil": True, "cache": True}
 
 
 def _compiled(function, **callees):
