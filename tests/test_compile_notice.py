@@ -4,6 +4,9 @@ work that needs no compile (a warm cache), and once per run across processes."""
 from __future__ import annotations
 
 import io
+import os
+import subprocess
+import sys
 
 from numba import njit
 from numba.core import event
@@ -69,3 +72,24 @@ def test_once_per_run_across_processes(tmp_path):
             first(1.0)
     assert len(streams[0].getvalue().splitlines()) == 1
     assert streams[1].getvalue() == ""
+
+
+def _run(cache, env_extra=None):
+    """A fresh interpreter calling one small optbound kernel with numba's cache in ``cache``."""
+    code = (
+        "import numpy as np; from optbound.sets._triangular import lower_inverse; "
+        "lower_inverse(np.eye(2))"
+    )
+    env = {k: v for k, v in os.environ.items() if k != _compile_notice.ENV}
+    env["NUMBA_CACHE_DIR"] = str(cache)
+    done = subprocess.run(
+        [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+    )
+    return [line for line in done.stderr.splitlines() if line.startswith("optbound:")]
+
+
+def test_end_to_end_cold_then_warm_cache(tmp_path):
+    """With an empty cache the run says it compiles, in one line; with the cache warm, not."""
+    message = _compile_notice.MESSAGE.format(seconds=_compile_notice.COMPILE_CPU_SECONDS)
+    assert _run(tmp_path) == [message]
+    assert _run(tmp_path) == []
