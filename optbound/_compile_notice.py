@@ -6,10 +6,10 @@ after an install or after a kernel source changed, see ``optbound._jit_cache``).
 so a listener on it announces exactly the runs that compile, and nothing when the cache is
 warm.
 
-One line per run, not per process: the first process that imports optbound names a marker
-file in the environment (``OPTBOUND_COMPILE_NOTICE``), which its worker processes inherit; the
-process that creates the marker first prints the line, and the owner removes the marker at
-exit.
+One line per run, not per process: the first process that imports a kernel subpackage
+(through ``optbound._fresh``) names a marker file in the environment
+(``OPTBOUND_COMPILE_NOTICE``), which its worker processes inherit; the process that creates
+the marker first prints the line, and the owner removes the marker at exit.
 """
 
 from __future__ import annotations
