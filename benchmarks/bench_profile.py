@@ -16,7 +16,9 @@ Run: ``python -m benchmarks.bench_profile [--suite quick] [--top 8]``.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import cProfile
+import io
 import os
 import pstats
 import tempfile
@@ -42,7 +44,8 @@ def _bench(suite: str, families: list[str], out: str) -> None:
     args = ["bench", "--suite", suite, "--jobs", "1", "--no-progress", "--force", "--out", out]
     for name in families:
         args += ["--family", name]
-    cli.main(args)
+    with contextlib.redirect_stdout(io.StringIO()):  # the bench's own tables: not wanted here
+        cli.main(args)
 
 
 def _package(filename: str, function: str) -> str:
