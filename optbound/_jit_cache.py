@@ -31,7 +31,7 @@ def refresh(cache_dirs=None, sources=None, stamp: str = STAMP) -> bool:
     """Drop all kernel caches if any kernel source changed; True if something was dropped.
 
     ``cache_dirs`` and ``sources`` default to the package's kernels; code compiled elsewhere
-    that calls them (``benchmarks.analytic_reference``) passes its own folders, its sources
+    that calls them (``optbound.bench.analytic_reference``) passes its own folders, its sources
     and the kernels', and its own ``stamp`` name. Never raises on file-system errors (a
     read-only install keeps numba's own behaviour).
     """

@@ -1,7 +1,7 @@
 """The plain formulas of ``optbound.analytic.reference``, compiled, as the speed baseline.
 
 No validation, no certified error bounds, no margin, no output checks: what the analytic core
-would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
+would cost if it trusted its inputs and its floating point. ``optbound.bench.speed_analytic``
 reports our kernels' time as a ratio to these, measured in the same run (same threads).
 The reference functions are compiled unchanged, with the same options as our kernels
 (``error_model="numpy"``: no zero-division branch per division). The strip reference runs one
@@ -110,7 +110,7 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
 # ---------------------------------------------------------------- threading schemes compared
 # Our certified strip kernel (volume criterion, clipped) on the same slices, handed to the
-# threads two ways; ``benchmarks.speed_analytic.threading_timings`` times them interleaved.
+# threads two ways; ``optbound.bench.speed_analytic.threading_timings`` times them interleaved.
 # The Python-side validation of ``intersect_strip_batch`` is left out of both alike.
 
 
