@@ -17,19 +17,34 @@
   at most ``order * n`` generators (lifted Girard reduction,
   :meth:`ConstrainedZonotope.reduce_order`). Defaults: ``order = 8``, ``max_constraints = 2``
   (stated budget; the reduction needs ``order * n >= n + max_constraints``).
+- ``"ellipsoid_volume"``, ``"ellipsoid_trace"``: Schweppe's predictor and one strip fusion
+  per output row with :mod:`optbound.analytic`, the member chosen by volume or trace
+  (``optbound.estimation.ellipsoidal``).
+
+Ellipsoidal noise or ``X0`` enters the polytopic observers as its certified enclosing
+parallelotope, zonotopic noise the ellipsoidal ones as a certified enclosing ellipsoid
+(``optbound.estimation.noise``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from optbound.estimation.ellipsoidal import CRITERIA as ELLIPSOIDAL
+from optbound.estimation.ellipsoidal import observe_ellipsoids
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
 from optbound.sets.base import EmptySetError
 from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
-METHODS = ("interval", "zonotope", "constrained_zonotope")
+METHODS = (
+    "interval",
+    "zonotope",
+    "constrained_zonotope",
+    "ellipsoid_volume",
+    "ellipsoid_trace",
+)
 
 
 def _contract(lo_x: np.ndarray, hi_x: np.ndarray, C: np.ndarray, lo, hi) -> Box:
@@ -57,7 +72,7 @@ def _contract(lo_x: np.ndarray, hi_x: np.ndarray, C: np.ndarray, lo, hi) -> Box:
 
 def interval_step(system: LinearSystem, B: Box, y: np.ndarray) -> Box:
     """One step of the interval observer (module docstring)."""
-    pred = Zonotope.from_box(B).affine_map(system.A).minkowski_sum(system.W).bounding_box()
+    pred = Zonotope.from_box(B).affine_map(system.A).minkowski_sum(system.W_zonotope).bounding_box()
     Y = measurement_set(system, y).bounding_box()
     return _contract(pred.lo, pred.hi, system.C, Y.lo, Y.hi)
 
@@ -89,7 +104,7 @@ def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
 
 def zonotope_step(system: LinearSystem, Z: Zonotope, y: np.ndarray, order: float) -> Zonotope:
     """One step of the zonotopic observer (module docstring)."""
-    Z = Z.affine_map(system.A).minkowski_sum(system.W)
+    Z = Z.affine_map(system.A).minkowski_sum(system.W_zonotope)
     Y = measurement_set(system, y).bounding_box()
     for i, row in enumerate(system.C):
         if not Z.support(row) >= Y.lo[i] or not -Z.support(-row) <= Y.hi[i]:
@@ -112,13 +127,15 @@ def observe(
     ----------
     system : LinearSystem
         The model.
-    X0 : Box, Zonotope or ConstrainedZonotope
-        The set of ``x_0`` (no measurement at k = 0).
+    X0 : Box, Zonotope, ConstrainedZonotope or Ellipsoid
+        The set of ``x_0`` (no measurement at k = 0); the ellipsoidal observers refuse a
+        ConstrainedZonotope.
     ys : array_like, shape (N, p) or (N,) when p = 1
         ``ys[k-1]`` measures ``x_k``.
     method : str
-        ``"interval"`` (returns Boxes), ``"zonotope"`` (Zonotopes) or
-        ``"constrained_zonotope"`` (ConstrainedZonotopes); see the module docstring.
+        ``"interval"`` (returns Boxes), ``"zonotope"`` (Zonotopes),
+        ``"constrained_zonotope"`` (ConstrainedZonotopes), ``"ellipsoid_volume"`` or
+        ``"ellipsoid_trace"`` (Ellipsoids); see the module docstring.
     order, max_constraints
         The budget of the zonotopic observers: at most ``floor(order * n)`` generators (both)
         and ``max_constraints`` constraints (constrained zonotopes) after each step.
@@ -137,6 +154,8 @@ def observe(
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
     ys = system.measurements(ys)
+    if method in ELLIPSOIDAL:
+        return observe_ellipsoids(system, X0, ys, method)
     X = as_initial(X0, system.dim)
     out = []
     if method == "zonotope":
