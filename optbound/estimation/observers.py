@@ -11,6 +11,10 @@
   radius (their F-radius criterion). One output row at a time (a zonotopic ``V`` is first
   boxed per row), then Girard reduction to ``order * n`` generators. The new data are
   enclosed in interval arithmetic, so the result contains the exact set.
+- ``"zonotope_volume"``: the same recursion with the gain minimising the *volume* of each
+  strip update exactly (a linear program, ``optbound.estimation.zonotope_gains``; the
+  volume criterion of Alamo et al. 2005, Sect. 5). Its cost grows with the number of
+  generator subsets, so it is for small ``n * order``.
 - ``"constrained_zonotope"``: the exact recursion of ``optbound.estimation.exact`` followed by
   the budget of Scott et al. (Automatica 2016, Sect. 4.2 and 6): at most ``max_constraints``
   constraints (the excess eliminated, :meth:`ConstrainedZonotope.eliminate_constraints`) and
@@ -34,13 +38,16 @@ from optbound.estimation.ellipsoidal import CRITERIA as ELLIPSOIDAL
 from optbound.estimation.ellipsoidal import observe_ellipsoids
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
+from optbound.estimation.zonotope_gains import frobenius_gain, volume_gain
 from optbound.sets.base import EmptySetError
 from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
+ZONOTOPE_GAINS = {"zonotope": "frobenius", "zonotope_volume": "volume"}
 METHODS = (
     "interval",
     "zonotope",
+    "zonotope_volume",
     "constrained_zonotope",
     "ellipsoid_volume",
     "ellipsoid_trace",
@@ -77,19 +84,19 @@ def interval_step(system: LinearSystem, B: Box, y: np.ndarray) -> Box:
     return _contract(pred.lo, pred.hi, system.C, Y.lo, Y.hi)
 
 
-def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
-    """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the F-radius gain (module
-    docstring, Alamo et al. 2005, Property 3)."""
+def alamo_strip(
+    Z: Zonotope, a: np.ndarray, lo: float, hi: float, gain: str = "frobenius"
+) -> Zonotope:
+    """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the gain ``gain`` of
+    ``optbound.estimation.zonotope_gains`` (Alamo et al. 2005, Property 3)."""
     from optbound.interval import Interval
     from optbound.sets._certified import enclose, error_generators, matmul, point, split
 
     mid, s = split(Interval(lo, hi))
     c, G = Z.center, Z.generators
-    Ga = G.T @ a
-    denom = float(Ga @ Ga + s * s)
-    if denom == 0.0:
+    lam = frobenius_gain(G, a, s) if gain == "frobenius" else volume_gain(G, a, s)
+    if not np.any(lam):
         return Z
-    lam = (G @ Ga) / denom
     lam_iv = point(lam)
     residual = point(mid) - matmul(a[None, :], c[:, None])[0, 0]
     c_iv = lam_iv * residual + c
@@ -102,14 +109,16 @@ def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
     return Zonotope._compacted(c_new, np.hstack([G_new, error_generators(r)]))
 
 
-def zonotope_step(system: LinearSystem, Z: Zonotope, y: np.ndarray, order: float) -> Zonotope:
-    """One step of the zonotopic observer (module docstring)."""
+def zonotope_step(
+    system: LinearSystem, Z: Zonotope, y: np.ndarray, order: float, gain: str = "frobenius"
+) -> Zonotope:
+    """One step of a zonotopic observer with the strip gain ``gain`` (module docstring)."""
     Z = Z.affine_map(system.A).minkowski_sum(system.W_zonotope)
     Y = measurement_set(system, y).bounding_box()
     for i, row in enumerate(system.C):
         if not Z.support(row) >= Y.lo[i] or not -Z.support(-row) <= Y.hi[i]:
             raise EmptySetError(f"the zonotope estimate misses the measurement strip of row {i}")
-        Z = alamo_strip(Z, row, Y.lo[i], Y.hi[i])
+        Z = alamo_strip(Z, row, Y.lo[i], Y.hi[i], gain)
     return Z.reduce_order(order, "girard")
 
 
@@ -133,7 +142,7 @@ def observe(
     ys : array_like, shape (N, p) or (N,) when p = 1
         ``ys[k-1]`` measures ``x_k``.
     method : str
-        ``"interval"`` (returns Boxes), ``"zonotope"`` (Zonotopes),
+        ``"interval"`` (returns Boxes), ``"zonotope"`` or ``"zonotope_volume"`` (Zonotopes),
         ``"constrained_zonotope"`` (ConstrainedZonotopes), ``"ellipsoid_volume"`` or
         ``"ellipsoid_trace"`` (Ellipsoids); see the module docstring.
     order, max_constraints
@@ -158,12 +167,12 @@ def observe(
         return observe_ellipsoids(system, X0, ys, method)
     X = as_initial(X0, system.dim)
     out = []
-    if method == "zonotope":
+    if method in ZONOTOPE_GAINS:
         if X.n_constraints:
-            raise ValueError("X0 must be a Box or a Zonotope for the zonotope observer")
+            raise ValueError("X0 must be a Box, Zonotope or Ellipsoid for the zonotope observers")
         Z = Zonotope(X.center, X.generators)
         for y in ys:
-            Z = zonotope_step(system, Z, y, order)
+            Z = zonotope_step(system, Z, y, order, ZONOTOPE_GAINS[method])
             out.append(Z)
         return out
     if method == "interval":
