@@ -63,6 +63,21 @@ def initial_ellipsoid(X0, criterion: str) -> Ellipsoid:
     return ellipsoid_of(X0, WEIGHTS[criterion])
 
 
+def predict(system: LinearSystem, E: Ellipsoid, criterion: str, W: Ellipsoid) -> Ellipsoid:
+    """Schweppe's outer ellipsoid of ``A E + W`` (certified affine map, then
+    :func:`optbound.analytic.minkowski_sum` with ``criterion``)."""
+    return analytic.minkowski_sum(affine_map(E, system.A), W, criterion=criterion).ellipsoid
+
+
+def measurement_strips(system: LinearSystem, y: np.ndarray, E: Ellipsoid) -> list[Strip]:
+    """One float strip per output row holding every x of ``E`` with ``y - C x in`` the box hull
+    of ``V`` (bounds rounded outward, :func:`measurement_strip`)."""
+    Vb = coordinate_bounds(system.V)
+    lo = (Interval(y) - Vb.hi).lo
+    hi = (Interval(y) - Vb.lo).hi
+    return [measurement_strip(row, float(lo[i]), float(hi[i]), E) for i, row in enumerate(system.C)]
+
+
 def ellipsoid_step(
     system: LinearSystem, E: Ellipsoid, y: np.ndarray, criterion: str, W: Ellipsoid
 ) -> Ellipsoid:
@@ -73,12 +88,8 @@ def ellipsoid_step(
     EmptySetError
         If a fusion proves the prediction and a measurement strip disjoint.
     """
-    pred = analytic.minkowski_sum(affine_map(E, system.A), W, criterion=criterion).ellipsoid
-    Vb = coordinate_bounds(system.V)
-    lo = (Interval(y) - Vb.hi).lo
-    hi = (Interval(y) - Vb.lo).hi
-    for i, row in enumerate(system.C):
-        strip = measurement_strip(row, float(lo[i]), float(hi[i]), pred)
+    pred = predict(system, E, criterion, W)
+    for i, strip in enumerate(measurement_strips(system, y, pred)):
         pred = analytic.intersect_strip(pred, strip, criterion=criterion).ellipsoid
         if pred is None:
             raise EmptySetError(f"the ellipsoid estimate misses the measurement strip of row {i}")

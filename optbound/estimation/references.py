@@ -1,0 +1,100 @@
+"""References for the observers, per step: the exact set's size, its interval hull, its
+minimum-volume ellipsoid and the optimal one-step ellipsoid.
+
+The size of an ellipsoidal estimate ``E_k`` against the exact set ``X_k`` splits as
+
+    vol E_k / vol X_k = [vol E_k / vol O_k] * [vol O_k / vol M_k] * [vol M_k / vol X_k],
+
+``O_k`` the optimal ellipsoid of *one* step (the minimum-volume or -trace ellipsoid containing
+the observer's own prediction ∩ the measurement strips, :func:`one_step_optimal`), ``M_k``
+the minimum-volume ellipsoid of ``X_k`` (:func:`exact_mvee`): the first factor is the loss of
+the analytic strip fusion in that step, the second the loss carried by the recursion (the
+prediction from ``E_{k-1}`` instead of ``X_{k-1}``), the third what no ellipsoid can avoid.
+
+What is certified:
+
+- :func:`exact_area`: in 2-D, the polygon of the exact set's vertices found by float LPs
+  (``ConstrainedZonotope.vertices``: exact up to the LP tolerance, *not* certified) and a
+  certified upper bound: the polygon cut out by the certified support values
+  (``ConstrainedZonotope.support``, LP duals checked in outward-rounded arithmetic) along the
+  vertex polygon's edge normals, intersected and measured in exact rational arithmetic;
+- :func:`interval_hull`: the exact set's interval hull by certified LP bounds (any n): the
+  best box, rounded outward;
+- :func:`exact_mvee`: ``optbound.optimal.mvee`` of those vertices (2-D; it contains every
+  vertex, checked in float64, so it contains the polygon up to the LP tolerance);
+- :func:`one_step_optimal`: ``optbound.optimal.outer_ellipsoid`` of the prediction ∩ the strips
+  (certified S-procedure SDP).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+
+from optbound.estimation.ellipsoidal import CRITERIA, WEIGHTS, measurement_strips, predict
+from optbound.estimation.noise import ellipsoid_of
+from optbound.estimation.system import LinearSystem
+from optbound.sets.box import Box
+from optbound.sets.constrained_zonotope import ConstrainedZonotope
+from optbound.sets.ellipsoid import Ellipsoid
+
+
+def _shoelace(P) -> Fraction:
+    n = len(P)
+    return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
+
+
+def _up(x: Fraction) -> float:
+    f = float(x)
+    return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
+
+
+def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
+    """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
+    bound of the true area (module docstring)."""
+    if X.dim != 2:
+        raise ValueError(f"exact_area is for 2-D sets, got dimension {X.dim}")
+    V = X.vertices()
+    if len(V) < 3:
+        return 0.0, 0.0
+    normals = np.array(
+        [[q[1] - p[1], p[0] - q[0]] for p, q in zip(V, np.roll(V, -1, 0), strict=True)]
+    )
+    h = X.support(normals)
+    N = [(Fraction(float(a)), Fraction(float(b))) for a, b in normals]
+    H = [Fraction(float(x)) for x in h]
+    corners = []
+    for k in range(len(N)):  # corner between edge k-1 and edge k (exact 2x2 solve)
+        (a1, b1), (a2, b2) = N[k - 1], N[k]
+        det = a1 * b2 - a2 * b1
+        corners.append(((H[k - 1] * b2 - H[k] * b1) / det, (a1 * H[k] - a2 * H[k - 1]) / det))
+    pts = [(Fraction(float(x)), Fraction(float(y))) for x, y in V]
+    return float(_shoelace(pts)), _up(_shoelace(corners))
+
+
+def interval_hull(X: ConstrainedZonotope) -> Box:
+    """The exact set's interval hull, certified (``ConstrainedZonotope.bounding_box``)."""
+    return X.bounding_box()
+
+
+def exact_mvee(X: ConstrainedZonotope):
+    """``optbound.optimal.mvee`` of the exact set's vertices (2-D; module docstring)."""
+    from optbound import optimal
+
+    return optimal.mvee(X.vertices())
+
+
+def one_step_optimal(system: LinearSystem, E_prev: Ellipsoid, y, method: str):
+    """The optimal ellipsoid of one step of the ellipsoidal observer ``method``: the certified
+    minimum-volume (``ellipsoid_volume``) or minimum-trace (``ellipsoid_trace``) ellipsoid
+    containing the observer's prediction from ``E_prev`` ∩ the measurement strips of ``y``.
+
+    Returns the ``OuterResult`` of :func:`optbound.optimal.outer_ellipsoid`.
+    """
+    from optbound import optimal
+
+    criterion = CRITERIA[method]
+    y = system.measurements(np.atleast_1d(np.asarray(y, dtype=float))[None, :])[0]
+    pred = predict(system, E_prev, criterion, ellipsoid_of(system.W, WEIGHTS[criterion]))
+    return optimal.outer_ellipsoid([pred, *measurement_strips(system, y, pred)], criterion)
