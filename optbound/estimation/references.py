@@ -18,6 +18,8 @@ What is certified:
   certified upper bound: the polygon cut out by the certified support values
   (``ConstrainedZonotope.support``, LP duals checked in outward-rounded arithmetic) along the
   vertex polygon's edge normals, intersected and measured in exact rational arithmetic;
+- :func:`proven_contains`: ``X_k ⊆ estimate`` proven in exact rational arithmetic from
+  certified support values (boxes, 2-D zonotopes, 2-D ellipsoids);
 - :func:`interval_hull`: the exact set's interval hull by certified LP bounds (any n): the
   best box, rounded outward;
 - :func:`exact_mvee`: ``optbound.optimal.mvee`` of those vertices (2-D; it contains every
@@ -38,6 +40,7 @@ from optbound.estimation.system import LinearSystem
 from optbound.sets.box import Box
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
 from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.zonotope import Zonotope
 
 
 def _shoelace(P) -> Fraction:
@@ -50,14 +53,15 @@ def _up(x: Fraction) -> float:
     return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
 
 
-def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
-    """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
-    bound of the true area (module docstring)."""
+def certified_polygon(X: ConstrainedZonotope) -> tuple[np.ndarray, list]:
+    """The LP vertex polygon of a 2-D set (floats, ccw) and the corners (Fractions) of a polygon
+    proven to contain the set: the half-planes of the certified support values along the vertex
+    polygon's edge normals, intersected exactly (module docstring)."""
     if X.dim != 2:
-        raise ValueError(f"exact_area is for 2-D sets, got dimension {X.dim}")
+        raise ValueError(f"the exact-set polygon is for 2-D sets, got dimension {X.dim}")
     V = X.vertices()
     if len(V) < 3:
-        return 0.0, 0.0
+        raise ValueError("the set is flat or empty: it has no polygon")
     normals = np.array(
         [[q[1] - p[1], p[0] - q[0]] for p, q in zip(V, np.roll(V, -1, 0), strict=True)]
     )
@@ -69,8 +73,59 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
         (a1, b1), (a2, b2) = N[k - 1], N[k]
         det = a1 * b2 - a2 * b1
         corners.append(((H[k - 1] * b2 - H[k] * b1) / det, (a1 * H[k] - a2 * H[k - 1]) / det))
+    return V, corners
+
+
+def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
+    """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
+    bound of the true area (module docstring)."""
+    V, corners = certified_polygon(X)
     pts = [(Fraction(float(x)), Fraction(float(y))) for x, y in V]
     return float(_shoelace(pts)), _up(_shoelace(corners))
+
+
+def proven_contains(outer, X: ConstrainedZonotope) -> bool | None:
+    """Whether ``X ⊆ outer`` is proven in exact arithmetic (2-D for ellipsoids and zonotopes).
+
+    - Box (any n): X's certified interval hull lies in the box;
+    - Zonotope (2-D, spanning): along each facet normal n (a generator turned by 90 degrees),
+      X's certified support value is at most the zonotope's, ``n^T c + sum_j |n^T g_j|``
+      evaluated in ``fractions.Fraction`` (a 2-D zonotope is the intersection of these slabs);
+    - Ellipsoid (2-D): every corner of the certified polygon around X (:func:`certified_polygon`)
+      satisfies ``(p - c)^T Q^{-1} (p - c) <= 1`` exactly.
+
+    False means *not proven* (e.g. the sets touch and the certified bounds, loose by the LP
+    tolerance, cross); None: not decided for this type (constrained zonotopes, flat zonotopes).
+    """
+    if isinstance(outer, Box):
+        hull = X.bounding_box()
+        return bool(np.all(outer.lo <= hull.lo) and np.all(hull.hi <= outer.hi))
+    if isinstance(outer, Zonotope):
+        G = outer.generators
+        normals = np.column_stack([-G[1], G[0]])
+        normals = normals[np.any(normals != 0, axis=1)]
+        if outer.dim != 2 or np.linalg.matrix_rank(G) < 2:
+            return None  # the generator slabs describe spanning 2-D zonotopes only
+        hX = X.support(normals)
+        c = [Fraction(float(x)) for x in outer.center]
+        Gx = [[Fraction(float(x)) for x in col] for col in G.T]
+        for n, h in zip(normals, hX, strict=True):
+            n = (Fraction(float(n[0])), Fraction(float(n[1])))
+            hZ = n[0] * c[0] + n[1] * c[1] + sum(abs(n[0] * g[0] + n[1] * g[1]) for g in Gx)
+            if Fraction(float(h)) > hZ:
+                return False
+        return True
+    if isinstance(outer, Ellipsoid):
+        corners = certified_polygon(X)[1]
+        (a, b), (_, d) = [[Fraction(float(x)) for x in row] for row in outer.shape]
+        c = [Fraction(float(x)) for x in outer.center]
+        det = a * d - b * b
+        return all(
+            d * (p[0] - c[0]) ** 2 - 2 * b * (p[0] - c[0]) * (p[1] - c[1]) + a * (p[1] - c[1]) ** 2
+            <= det
+            for p in corners
+        )
+    return None
 
 
 def interval_hull(X: ConstrainedZonotope) -> Box:

@@ -53,3 +53,21 @@ def _three_d():
         np.eye(3) * 0.5, np.ones(3), Box([-0.1] * 3, [0.1] * 3), Box([-1.0], [1.0])
     )
     return system, Box([-1.0] * 3, [1.0] * 3), [0.0]
+
+
+def test_proven_contains():
+    from optbound import Box, Ellipsoid
+
+    system, X0, _, ys = box_noise(1)
+    exact = est.exact_sets(system, X0, ys)[-1]
+    # (the volume-optimal zonotope touches the exact set: its proof can fail by rounding)
+    for method in ("interval", "zonotope", "ellipsoid_volume"):
+        S = est.observe(system, X0, ys, method=method)[-1]
+        assert ref.proven_contains(S, exact) is True
+    E = est.observe(system, X0, ys, method="ellipsoid_trace")[-1]
+    assert ref.proven_contains(E.scaled(0.5), exact) is False
+    hull = ref.interval_hull(exact)
+    shrunk = Box(hull.lo + 0.01 * hull.widths, hull.hi)
+    assert ref.proven_contains(shrunk, exact) is False
+    assert ref.proven_contains(est.observe(system, X0, ys)[-1], exact) is None
+    assert isinstance(E, Ellipsoid)
