@@ -84,7 +84,7 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     return float(_shoelace(pts)), _up(_shoelace(corners))
 
 
-def proven_contains(outer, X: ConstrainedZonotope) -> bool | None:
+def proven_contains(outer, X: ConstrainedZonotope, corners: list | None = None) -> bool | None:
     """Whether ``X ⊆ outer`` is proven in exact arithmetic (2-D for ellipsoids and zonotopes).
 
     - Box (any n): X's certified interval hull lies in the box;
@@ -116,7 +116,7 @@ def proven_contains(outer, X: ConstrainedZonotope) -> bool | None:
                 return False
         return True
     if isinstance(outer, Ellipsoid):
-        corners = certified_polygon(X)[1]
+        corners = certified_polygon(X)[1] if corners is None else corners
         (a, b), (_, d) = [[Fraction(float(x)) for x in row] for row in outer.shape]
         c = [Fraction(float(x)) for x in outer.center]
         det = a * d - b * b
