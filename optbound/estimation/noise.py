@@ -31,22 +31,22 @@ FLAT_INFLATION = 1e-5
 NoiseSet = Box | Zonotope | Ellipsoid
 
 
-def as_noise(name: str, Y, dim: int) -> Zonotope | Ellipsoid:
-    """``Y`` (a bounded Box, a Zonotope or an Ellipsoid) of dimension ``dim``; a Box becomes a
-    Zonotope."""
-    if isinstance(Y, Box):
-        if not Y.is_bounded:
-            raise ValueError(f"{name} must be bounded")
-        Y = Zonotope.from_box(Y)
-    if not isinstance(Y, Zonotope | Ellipsoid):
+def as_noise(name: str, Y, dim: int) -> NoiseSet:
+    """``Y`` (a bounded Box, a Zonotope or an Ellipsoid) of dimension ``dim``, checked."""
+    if isinstance(Y, Box) and not Y.is_bounded:
+        raise ValueError(f"{name} must be bounded")
+    if not isinstance(Y, Box | Zonotope | Ellipsoid):
         raise TypeError(f"{name} must be a Box, Zonotope or Ellipsoid, got {type(Y).__name__}")
     if Y.dim != dim:
         raise ValueError(f"{name} must have dimension {dim}, got {Y.dim}")
     return Y
 
 
-def zonotope_of(Y: Zonotope | Ellipsoid) -> Zonotope:
-    """``Y`` itself, or the certified parallelotope around an ellipsoid."""
+def zonotope_of(Y: NoiseSet) -> Zonotope:
+    """``Y`` itself, a box as a zonotope (radii rounded up), or the certified parallelotope
+    around an ellipsoid."""
+    if isinstance(Y, Box):
+        return Zonotope.from_box(Y)
     return Y if isinstance(Y, Zonotope) else Zonotope.from_ellipsoid(Y)
 
 
@@ -73,8 +73,10 @@ def ellipsoid_of(Y, weights: str = "unit") -> Ellipsoid:
     return Zonotope(Z.center, G).outer_ellipsoid(weights)
 
 
-def coordinate_bounds(Y: Zonotope | Ellipsoid) -> Box:
+def coordinate_bounds(Y: NoiseSet) -> Box:
     """The interval hull of ``Y``, rounded outward (``lo_i <= x_i <= hi_i`` on all of Y)."""
+    if isinstance(Y, Box):
+        return Y
     if isinstance(Y, Zonotope):
         return Y.bounding_box()
     from optbound.interval import Interval

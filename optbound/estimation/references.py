@@ -18,8 +18,8 @@ What is certified:
   certified upper bound: the polygon cut out by the certified support values
   (``ConstrainedZonotope.support``, LP duals checked in outward-rounded arithmetic) along the
   vertex polygon's edge normals, intersected and measured in exact rational arithmetic;
-- :func:`proven_contains`: ``X_k ⊆ estimate`` proven in exact rational arithmetic from
-  certified support values (boxes, 2-D zonotopes, 2-D ellipsoids);
+- :func:`proven_contains`: ``X_k ⊆ estimate`` decided in exact rational arithmetic on the
+  exact polygon of ``optbound.estimation.exact_polygon`` (2-D; boxes, zonotopes, ellipsoids);
 - :func:`interval_hull`: the exact set's interval hull by certified LP bounds (any n): the
   best box, rounded outward;
 - :func:`exact_mvee`: ``optbound.optimal.mvee`` of those vertices (2-D; it contains every
@@ -84,47 +84,35 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     return float(_shoelace(pts)), _up(_shoelace(corners))
 
 
-def proven_contains(outer, X: ConstrainedZonotope, corners: list | None = None) -> bool | None:
-    """Whether ``X ⊆ outer`` is proven in exact arithmetic (2-D for ellipsoids and zonotopes).
-
-    - Box (any n): X's certified interval hull lies in the box;
-    - Zonotope (2-D, spanning): along each facet normal n (a generator turned by 90 degrees),
-      X's certified support value is at most the zonotope's, ``n^T c + sum_j |n^T g_j|``
-      evaluated in ``fractions.Fraction`` (a 2-D zonotope is the intersection of these slabs);
-    - Ellipsoid (2-D): every corner of the certified polygon around X (:func:`certified_polygon`)
-      satisfies ``(p - c)^T Q^{-1} (p - c) <= 1`` exactly.
-
-    False means *not proven* (e.g. the sets touch and the certified bounds, loose by the LP
-    tolerance, cross); None: not decided for this type (constrained zonotopes, flat zonotopes).
-    """
+def proven_contains(outer, vertices: list) -> bool | None:
+    """Whether ``outer`` contains the 2-D polygon with the exact (Fraction) ``vertices``
+    (e.g. of :func:`optbound.estimation.exact_polygon.exact_polygons`), decided in exact
+    rational arithmetic: a Box by its bounds, an Ellipsoid by ``(p - c)^T Q^{-1} (p - c) <= 1``
+    at each vertex, a spanning Zonotope by its facet slabs ``|n^T (p - c)| <= sum_j |n^T
+    g_j|`` (n a generator turned by 90 degrees). None: not decided for this type
+    (constrained zonotopes, flat zonotopes)."""
+    q = [(Fraction(p[0]), Fraction(p[1])) for p in vertices]
     if isinstance(outer, Box):
-        hull = X.bounding_box()
-        return bool(np.all(outer.lo <= hull.lo) and np.all(hull.hi <= outer.hi))
-    if isinstance(outer, Zonotope):
-        G = outer.generators
-        normals = np.column_stack([-G[1], G[0]])
-        normals = normals[np.any(normals != 0, axis=1)]
-        if outer.dim != 2 or np.linalg.matrix_rank(G) < 2:
-            return None  # the generator slabs describe spanning 2-D zonotopes only
-        hX = X.support(normals)
-        c = [Fraction(float(x)) for x in outer.center]
-        Gx = [[Fraction(float(x)) for x in col] for col in G.T]
-        for n, h in zip(normals, hX, strict=True):
-            n = (Fraction(float(n[0])), Fraction(float(n[1])))
-            hZ = n[0] * c[0] + n[1] * c[1] + sum(abs(n[0] * g[0] + n[1] * g[1]) for g in Gx)
-            if Fraction(float(h)) > hZ:
-                return False
-        return True
+        lo, hi = [Fraction(float(x)) for x in outer.lo], [Fraction(float(x)) for x in outer.hi]
+        return all(lo[i] <= p[i] <= hi[i] for p in q for i in (0, 1))
     if isinstance(outer, Ellipsoid):
-        corners = certified_polygon(X)[1] if corners is None else corners
         (a, b), (_, d) = [[Fraction(float(x)) for x in row] for row in outer.shape]
         c = [Fraction(float(x)) for x in outer.center]
         det = a * d - b * b
         return all(
             d * (p[0] - c[0]) ** 2 - 2 * b * (p[0] - c[0]) * (p[1] - c[1]) + a * (p[1] - c[1]) ** 2
             <= det
-            for p in corners
+            for p in q
         )
+    if isinstance(outer, Zonotope) and np.linalg.matrix_rank(outer.generators) == 2:
+        c = [Fraction(float(x)) for x in outer.center]
+        G = [(Fraction(float(g[0])), Fraction(float(g[1]))) for g in outer.generators.T]
+        for g in G:
+            n = (-g[1], g[0])
+            h = sum(abs(n[0] * e[0] + n[1] * e[1]) for e in G)
+            if any(abs(n[0] * (p[0] - c[0]) + n[1] * (p[1] - c[1])) > h for p in q):
+                return False
+        return True
     return None
 
 

@@ -28,7 +28,7 @@ class LinearSystem:
     C : array_like, shape (p, n)
         Output matrix (a vector is one output row).
     W : Box, Zonotope or Ellipsoid of dimension n
-        Process noise set (centred anywhere); a Box is stored as a Zonotope.
+        Process noise set (centred anywhere), stored as given.
     V : Box, Zonotope or Ellipsoid of dimension p
         Measurement noise set.
 
@@ -51,17 +51,19 @@ class LinearSystem:
 
     @property
     def polytopic(self) -> bool:
-        """Whether both noise sets are zonotopes (then the exact sets are polytopes)."""
+        """Whether both noise sets are boxes or zonotopes (then the exact sets are polytopes)."""
         return not isinstance(self.W, Ellipsoid) and not isinstance(self.V, Ellipsoid)
 
     @cached_property
     def W_zonotope(self) -> Zonotope:
-        """``W``, or the certified parallelotope around an ellipsoidal ``W``."""
+        """``W`` as a zonotope (a box's radii rounded up; an ellipsoid's certified
+        parallelotope)."""
         return zonotope_of(self.W)
 
     @cached_property
     def V_zonotope(self) -> Zonotope:
-        """``V``, or the certified parallelotope around an ellipsoidal ``V``."""
+        """``V`` as a zonotope (a box's radii rounded up; an ellipsoid's certified
+        parallelotope)."""
         return zonotope_of(self.V)
 
     @property

@@ -56,18 +56,30 @@ def _three_d():
 
 
 def test_proven_contains():
-    from optbound import Box, Ellipsoid
+    from optbound import Box
+    from optbound.estimation.exact_polygon import exact_polygons
 
-    system, X0, _, ys = box_noise(1)
-    exact = est.exact_sets(system, X0, ys)[-1]
-    # (the volume-optimal zonotope touches the exact set: its proof can fail by rounding)
-    for method in ("interval", "zonotope", "ellipsoid_volume"):
+    system, X0, polys, ys = box_noise(1)
+    exact = exact_polygons(system, X0, ys)[-1]
+    assert sorted(exact) == sorted(polys[-1])  # the test oracle's polygon, exactly
+    for method in ("interval", "zonotope", "zonotope_volume", "ellipsoid_volume"):
         S = est.observe(system, X0, ys, method=method)[-1]
         assert ref.proven_contains(S, exact) is True
     E = est.observe(system, X0, ys, method="ellipsoid_trace")[-1]
     assert ref.proven_contains(E.scaled(0.5), exact) is False
-    hull = ref.interval_hull(exact)
-    shrunk = Box(hull.lo + 0.01 * hull.widths, hull.hi)
-    assert ref.proven_contains(shrunk, exact) is False
+    hull = ref.interval_hull(est.exact_sets(system, X0, ys)[-1])
+    assert ref.proven_contains(hull, exact) is True
+    assert ref.proven_contains(Box(hull.lo + 0.01 * hull.widths, hull.hi), exact) is False
+    Z = est.observe(system, X0, ys, method="zonotope")[-1]
+    assert ref.proven_contains(Z.affine_map(0.5 * np.eye(2), Z.center * 0.5), exact) is False
     assert ref.proven_contains(est.observe(system, X0, ys)[-1], exact) is None
-    assert isinstance(E, Ellipsoid)
+
+
+@pytest.mark.parametrize("seed", [0, 2])
+def test_exact_polygons_match_the_oracle(seed):
+    from optbound.estimation.exact_polygon import area, exact_polygons
+
+    system, X0, polys, ys = box_noise(seed)
+    for P, Q in zip(exact_polygons(system, X0, ys), polys, strict=True):
+        assert sorted(P) == sorted(Q)
+        assert area(P) == X.area(Q)
