@@ -32,10 +32,7 @@ import numpy as np
 from optbound import optimal
 from optbound.interval import Paving
 from optbound.localization import relative_bearing as rb
-from optbound.report.tables import markdown_table
-from optbound.scenarios import bh_geometry as bh
-from optbound.sets import Box
-from papers_repro._common import (
+from optbound.papers_repro._common import (
     claim_table,
     draw_ellipse,
     finish_axes,
@@ -43,6 +40,9 @@ from papers_repro._common import (
     run_cli,
     save_figure,
 )
+from optbound.report.tables import markdown_table
+from optbound.scenarios import bh_geometry as bh
+from optbound.sets import Box
 
 PAPER = "BH"
 LANDMARKS, VEHICLE, PAIRS, EPS_DEG = bh.LANDMARKS, bh.VEHICLE, list(bh.PAIRS), bh.EPS_DEG

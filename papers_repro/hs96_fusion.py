@@ -24,9 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from optbound import analytic, optimal
-from optbound.report.tables import markdown_table
-from optbound.sets import Ellipsoid, Strip
-from papers_repro._common import (
+from optbound.papers_repro._common import (
     claim_table,
     draw_ellipse,
     draw_strip,
@@ -35,6 +33,8 @@ from papers_repro._common import (
     run_cli,
     save_figure,
 )
+from optbound.report.tables import markdown_table
+from optbound.sets import Ellipsoid, Strip
 
 PAPER = "HS96"
 PRIOR = Ellipsoid([0.0, 0.0], [[4.0, 1.2], [1.2, 1.5]])

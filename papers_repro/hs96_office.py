@@ -29,10 +29,10 @@ from optbound.localization.association import associate
 from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmarks import pose_paving
 from optbound.localization.tracker import pose_level
+from optbound.papers_repro._common import claim_table, draw_ellipse, pyplot, run_cli, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import office
 from optbound.sets import Ellipsoid
-from papers_repro._common import claim_table, draw_ellipse, pyplot, run_cli, save_figure
 
 PAPER = "HS96"
 SEED = 0

@@ -21,9 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from optbound import analytic, optimal
-from optbound.report.tables import markdown_table
-from optbound.sets import Ellipsoid, Strip
-from papers_repro._common import (
+from optbound.papers_repro._common import (
     area,
     claim_table,
     draw_ellipse,
@@ -33,6 +31,8 @@ from papers_repro._common import (
     run_cli,
     save_figure,
 )
+from optbound.report.tables import markdown_table
+from optbound.sets import Ellipsoid, Strip
 
 PAPER = "HS96"
 XY, PSI = (0, 1), 2

@@ -14,6 +14,8 @@ The submodules are imported in round-to-nearest too, so that their constants (an
 literals Python parses while compiling them) are the intended ones.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.interval._fenv import round_to_nearest
 
 with round_to_nearest():
@@ -84,3 +86,5 @@ __all__ = [
     "tri_not",
     "tri_or",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

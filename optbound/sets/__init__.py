@@ -10,6 +10,8 @@ The set protocol (what a type must define, may add and gets for free) is written
 ``optbound.sets.base``; the base of every bound result in ``optbound.sets.result``.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.sets.base import ConvexSet, QuadraticDescription
 from optbound.sets.box import Box
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
@@ -35,3 +37,5 @@ __all__ = [
     "Strip",
     "Zonotope",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

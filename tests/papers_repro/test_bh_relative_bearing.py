@@ -2,7 +2,7 @@
 
 import pytest
 
-from papers_repro import bh_relative_bearing as repro
+from optbound.papers_repro import bh_relative_bearing as repro
 
 
 @pytest.fixture(scope="module")

@@ -2,7 +2,7 @@
 
 import pytest
 
-from papers_repro import hs96_office as repro
+from optbound.papers_repro import hs96_office as repro
 
 
 @pytest.fixture(scope="module")

@@ -15,6 +15,7 @@ cones of the sonar model [LJMW97], [KJWM00]) and :mod:`.polygons` (obstacles, wi
 certified box predicates for LUVIA [GLH12]).
 """
 
+from optbound._lazy import attach
 from optbound.localization.geometry.bearings import (
     bearing_gradient,
     bearing_residual,
@@ -84,3 +85,5 @@ __all__ = [
     "unit",
     "wrap_angle",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())
