@@ -2,10 +2,10 @@
 
 The exact image of ``E(c, C)`` is ``E(A c + t, A C A^T)``. The float product rounds, so the
 centre and shape are enclosed in outward-rounded interval arithmetic
-(``optbound.sets._certified.matmul``) and the rounded member is inflated by the certified margin
-of ``optbound.analytic._midrad.inflate`` (Weyl for the shape radii, Schweppe's segment bound
-for the centre radii). A rank-deficient ``A`` (a flat image) is widened to the supported
-domain's condition number (``_midrad.inflate`` never refuses a near-degenerate result), so
+(``optbound.sets._certified.matmul``) and the rounded member is inflated by the certified
+margin of ``optbound.analytic._kernels.midrad.inflate`` (Weyl for the shape radii,
+Schweppe's segment bound for the centre radii). A rank-deficient ``A`` (a flat image) is widened to the supported
+domain's condition number (``midrad.inflate`` never refuses a near-degenerate result), so
 the result is always a full-dimensional outer ellipsoid.
 """
 
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.analytic._midrad import inflate
+from optbound.analytic._kernels.midrad import inflate
 from optbound.sets import _validate as v
 from optbound.sets._certified import magnitude, matmul, point
 from optbound.sets._domain import check_ellipsoid

@@ -16,6 +16,8 @@ import numpy as np
 from optbound.estimation import LinearSystem
 from optbound.sets import Box, Zonotope
 
+__all__ = ["MEASUREMENTS", "REFERENCE", "X0", "A", "C", "V", "W", "system"]
+
 A = np.array([[0.0, -0.5], [1.0, 1.0]])
 C = np.array([[-2.0, 1.0]])
 W = Zonotope([0.0, 0.0], 0.02 * np.array([[-6.0], [1.0]]))

@@ -18,6 +18,8 @@ import numpy as np
 from optbound.estimation import LinearSystem
 from optbound.sets import Box, Ellipsoid
 
+__all__ = ["NOISES", "RHO", "LinearScenario", "random_system"]
+
 RHO = 0.9
 NOISES = ("box", "ellipsoid")
 

@@ -2,7 +2,7 @@
 
 import pytest
 
-from papers_repro import alamo05_linear as repro
+from optbound.papers_repro import alamo05_linear as repro
 
 
 @pytest.fixture(scope="module")
