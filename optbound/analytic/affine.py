@@ -2,21 +2,21 @@
 
 The exact image of ``E(c, C)`` is ``E(A c + t, A C A^T)``. The float product rounds, so the
 centre and shape are enclosed in outward-rounded interval arithmetic
-(``optbound.sets._certified.matmul``) and the rounded member is inflated by the certified
+(``optbound.sets.certified.matmul``) and the rounded member is inflated by the certified
 margin of ``optbound.analytic._kernels.midrad.inflate`` (Weyl for the shape radii,
-Schweppe's segment bound for the centre radii). A rank-deficient ``A`` (a flat image) is widened to the supported
-domain's condition number (``midrad.inflate`` never refuses a near-degenerate result), so
-the result is always a full-dimensional outer ellipsoid.
+Schweppe's segment bound for the centre radii). A rank-deficient ``A`` (a flat image) is
+widened to the supported domain's condition number (``midrad.inflate`` never refuses a
+near-degenerate result), so the result is always a full-dimensional outer ellipsoid.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import check_ellipsoid
+from optbound._core import validate as v
 from optbound.analytic._kernels.midrad import inflate
-from optbound.sets import _validate as v
-from optbound.sets._certified import magnitude, matmul, point
-from optbound.sets._domain import check_ellipsoid
+from optbound.sets.certified import magnitude, matmul, point
 from optbound.sets.ellipsoid import Ellipsoid
 
 

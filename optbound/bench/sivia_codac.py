@@ -37,8 +37,8 @@ import time
 import numpy as np
 
 from optbound import interval as iv
-from optbound.interval._fenv import FE_TONEAREST, get_rounding, round_to_nearest, set_rounding
 from optbound.interval.codac_interop import codac_boxes
+from optbound.interval.fenv import FE_TONEAREST, get_rounding, round_to_nearest, set_rounding
 from optbound.interval.paving import box_volumes
 
 REPEATS = 5

@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from optbound.bench.sivia_codac import _median_time
-from optbound.interval._fenv import get_rounding, set_rounding
+from optbound.interval.fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
 from optbound.localization.sonar import D_MAX, localize, measurement_box, simulate_ranges
 from optbound.scenarios import rooms

@@ -24,8 +24,8 @@ from optbound.analytic.affine import affine_map
 from optbound.estimation.noise import coordinate_bounds, ellipsoid_of
 from optbound.estimation.system import LinearSystem
 from optbound.interval import Interval
-from optbound.sets._certified import row_sum_up
 from optbound.sets.base import EmptySetError
+from optbound.sets.certified import row_sum_up
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.strip import Strip
 

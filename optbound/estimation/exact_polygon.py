@@ -16,8 +16,8 @@ from fractions import Fraction
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.estimation.system import LinearSystem
-from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
 Point = tuple[Fraction, Fraction]

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets.box import Box
+from optbound._core import Box
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.zonotope import Zonotope
 

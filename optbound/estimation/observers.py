@@ -34,13 +34,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.estimation.ellipsoidal import CRITERIA as ELLIPSOIDAL
 from optbound.estimation.ellipsoidal import observe_ellipsoids
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
 from optbound.estimation.zonotope_gains import frobenius_gain, volume_gain
 from optbound.sets.base import EmptySetError
-from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
 ZONOTOPE_GAINS = {"zonotope": "frobenius", "zonotope_volume": "volume"}
@@ -90,7 +90,7 @@ def alamo_strip(
     """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the gain ``gain`` of
     ``optbound.estimation.zonotope_gains`` (Alamo et al. 2005, Property 3)."""
     from optbound.interval import Interval
-    from optbound.sets._certified import enclose, error_generators, matmul, point, split
+    from optbound.sets.certified import enclose, error_generators, matmul, point, split
 
     mid, s = split(Interval(lo, hi))
     c, G = Z.center, Z.generators

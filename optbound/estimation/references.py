@@ -34,10 +34,10 @@ from fractions import Fraction
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.estimation.ellipsoidal import CRITERIA, WEIGHTS, measurement_strips, predict
 from optbound.estimation.noise import ellipsoid_of
 from optbound.estimation.system import LinearSystem
-from optbound.sets.box import Box
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.zonotope import Zonotope

@@ -11,8 +11,8 @@ from functools import cached_property
 
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.estimation.noise import NoiseSet, as_noise, zonotope_of
-from optbound.sets import _validate as v
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.zonotope import Zonotope
 

@@ -1,7 +1,8 @@
-"""Input validation shared by the set types.
+"""Input validation shared by every package.
 
-Every failure is a ``ValueError`` that names the offending argument, so a user who passes a
-NaN or a non-PD matrix learns which argument was wrong instead of getting a NaN bound later.
+Every failure is a ``ValueError`` or ``TypeError`` that names the offending argument, so a user
+who passes a NaN, a complex number or a non-PD matrix learns which argument was wrong instead
+of getting a NaN bound later.
 """
 
 from __future__ import annotations
@@ -11,10 +12,47 @@ import math
 
 import numpy as np
 
-from optbound.sets._domain import SYMMETRY_RTOL, real_array
+from optbound._core.domain import SYMMETRY_RTOL
 
 # Smallest Cholesky pivot, relative to the largest diagonal entry, still counted as definite.
 SINGULAR_RTOL = 1e-13
+
+
+class NotRealError(TypeError, ValueError):
+    """An argument that is not an array of real numbers (complex, text, ragged, objects).
+
+    Both a ``TypeError`` (its values have the wrong type) and a ``ValueError`` (the argument
+    has a wrong value), as numpy's ``AxisError`` is both an ``IndexError`` and a
+    ``ValueError``: the set types document the first, the localization models the second.
+    """
+
+
+def real_array(name: str, value, what: str = "an array") -> np.ndarray:
+    """``value`` as a float64 array (not copied if it is one); complex input is refused.
+
+    Raises :class:`NotRealError` naming ``name`` for complex values (never silently truncated
+    to their real part) and for anything numpy cannot read as real numbers (ragged rows, text,
+    objects); ``what`` describes the expected array in that message, e.g. ``"an (N, 2) array"``.
+    """
+    if type(value) is np.ndarray and value.dtype == np.float64:
+        return value  # the common case, without the checks' ~1 us
+    try:
+        arr = np.asarray(value)
+        if not np.iscomplexobj(arr):
+            return arr.astype(np.float64, copy=False)
+    except (TypeError, ValueError):  # ragged, text, objects that are not numbers
+        raise NotRealError(
+            f"{name} must be {what} of real numbers, got {type(value).__name__}"
+        ) from None
+    raise NotRealError(f"{name} must be real, got complex values")
+
+
+def finite_array(name: str, value) -> np.ndarray:
+    """``value`` as a finite float64 array of any shape (see :func:`real_array`)."""
+    arr = real_array(name, value)
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite")
+    return arr
 
 
 def finite_vector(name: str, value, dim: int | None = None) -> np.ndarray:

@@ -1,12 +1,17 @@
-"""Axis-aligned boxes ``{x : lo <= x <= hi}``; bounds may be infinite (e.g. SIVIA's Y)."""
+"""Axis-aligned boxes: the ``Box`` set and validated ``(m, n, 2)`` arrays of boxes.
+
+A ``Box`` is ``{x : lo <= x <= hi}``; its bounds may be infinite (e.g. SIVIA's Y). A box array
+holds m boxes of dimension n as ``[lo, hi]`` rows, ``B[k, j] = [lo_j, hi_j]`` of box k: the
+currency of interval pavings, ``tri_contains`` and the localization models.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._domain import real_array
-from optbound.sets.base import ConvexSet, QuadraticDescription
+from optbound._core import validate as v
+from optbound._core.convex import ConvexSet, QuadraticDescription
+from optbound._core.validate import real_array
 
 
 class Box(ConvexSet):
@@ -36,7 +41,7 @@ class Box(ConvexSet):
     @classmethod
     def from_array(cls, rows) -> Box:
         """Build from an (n, 2) array of ``[lo, hi]`` rows."""
-        arr = np.asarray(rows, dtype=float)
+        arr = real_array("rows", rows)
         if arr.ndim != 2 or arr.shape[1] != 2:
             raise ValueError(f"rows must have shape (n, 2), got {arr.shape}")
         return cls(arr[:, 0], arr[:, 1])
@@ -123,3 +128,58 @@ class Box(ConvexSet):
             raise ValueError("cannot sample an unbounded box")
         gen = v.rng_of(rng)
         return self._lo + gen.random((m, self.dim)) * self.widths
+
+
+def box_array(name: str, boxes, dim: int | None = None, *, volume: bool = False) -> np.ndarray:
+    """Validate an ``(m, dim, 2)`` array of finite ``[lo, hi]`` boxes with ``lo <= hi``.
+
+    Parameters
+    ----------
+    name
+        The argument's name, used in every error message.
+    boxes : array_like, shape (m, dim, 2)
+        ``boxes[k, j] = [lo, hi]``: side j of box k. ``m = 0`` is allowed.
+    dim
+        The required dimension n of the boxes (any n if ``None``).
+    volume
+        Also require ``lo < hi`` on every side (a box with interior, e.g. a robot's position).
+
+    Returns
+    -------
+    numpy.ndarray
+        The boxes as a C-contiguous float64 array (``boxes`` itself if it is one).
+    """
+    B = np.ascontiguousarray(real_array(name, boxes))
+    if B.ndim != 3 or B.shape[2] != 2 or (dim is not None and B.shape[1] != dim):
+        n = "n" if dim is None else dim
+        raise ValueError(f"{name} must have shape (m, {n}, 2) ([lo, hi] rows), got {B.shape}")
+    if not np.all(np.isfinite(B)):
+        raise ValueError(f"{name} must be finite")
+    if np.any(B[:, :, 0] > B[:, :, 1]):
+        raise ValueError(f"{name} must have lo <= hi (a lower bound exceeds its upper bound)")
+    if volume:
+        flat = np.any(B[:, :, 0] >= B[:, :, 1], axis=1)
+        if np.any(flat):
+            bad = np.flatnonzero(flat).tolist()
+            raise ValueError(f"{name}: box(es) {bad} have no volume (lo >= hi on a side)")
+    return B
+
+
+def as_box(name: str, value, *, bounded: bool = False) -> Box:
+    """``value`` (a :class:`Box` or ``(n, 2)`` ``[lo, hi]`` rows) as a ``Box``.
+
+    ``bounded=True`` refuses an unbounded box. Errors are ``ValueError`` naming ``name``.
+    """
+    try:
+        box = value if isinstance(value, Box) else Box.from_array(value)
+    except ValueError as err:
+        raise ValueError(f"{name}: {err}") from None
+    if bounded and not box.is_bounded:
+        raise ValueError(f"{name} must be a bounded box, got {box}")
+    return box
+
+
+def box_rows(name: str, value, allow_infinite: bool) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`as_box`, returned as fresh (writable) copies of the lower and upper corners."""
+    box = as_box(name, value, bounded=not allow_infinite)
+    return np.array(box.lo), np.array(box.hi)

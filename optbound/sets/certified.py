@@ -1,4 +1,4 @@
-"""Outward-rounded linear algebra for the zonotope types.
+"""Outward-rounded linear algebra for the zonotope types (and the observers of ``estimation``).
 
 A float operation on a generator representation (``M @ G``, ``c1 + c2``, a substituted
 constraint row) rounds, and the rounded set is not in general a superset of the exact one.

@@ -1,6 +1,7 @@
 """Compiled (numba) scalar interval operations with exactly the outward rounding of ``_rounding``.
 
-For kernels that evaluate interval formulas inside one compiled loop or ufunc: the fused
+The interval package's API for compiled code, in this package and above it: kernels that
+evaluate interval formulas inside one compiled loop or ufunc call these, e.g. the fused
 ``+ - *`` of :mod:`optbound.interval._arith` (one pass instead of ~20 numpy temporaries on
 SIVIA's box arrays) and the polygon predicates of
 :mod:`optbound.localization.geometry.polygons`. ``down1`` / ``up1`` are

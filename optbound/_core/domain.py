@@ -37,7 +37,7 @@ MESSAGES = {
     NOT_PD: "{shape} must be positive definite (it is singular or not definite)",
     ILL_CONDITIONED: (
         f"{{shape}} is too ill-conditioned: max diag / min Cholesky pivot exceeds {COND_MAX:.0e} "
-        "(the supported domain, see optbound.sets._domain)"
+        "(the supported domain, see optbound._core.domain)"
     ),
     SHAPE_RANGE: (
         f"{{shape}} has semi-axes outside [{1 / MAG:.0e}, {MAG:.0e}] (the supported domain)"
@@ -116,17 +116,3 @@ def raise_for(code: int, center: str, shape: str, where: str = "") -> None:
     """Raise the ``ValueError`` of a non-zero ``check_ellipsoid`` code."""
     if code != OK:
         raise ValueError(MESSAGES[code].format(center=center, shape=shape) + where)
-
-
-def real_array(name: str, value) -> np.ndarray:
-    """``value`` as a float64 array; complex input is refused (never silently truncated)."""
-    if type(value) is np.ndarray and value.dtype == np.float64:
-        return value  # the common case, without the checks' ~1 us
-    if np.iscomplexobj(value):
-        raise TypeError(f"{name} must be real, got a complex array")
-    try:
-        return np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"{name} must be an array of real numbers, got {type(value).__name__}"
-        ) from None
