@@ -15,7 +15,8 @@ Families (one module each, defining ``problems(suite, seed) -> list[Problem]``):
 (ellipsoid ∩ strip), ``minkowski`` (sum of two ellipsoids), ``recursive`` (ellipsoid ∩ a
 sequence of strips), ``bh_bearings`` (BH relative bearings), ``hs96_pose`` (HS96 landmark
 bearings, pose x, y, psi), ``sonar`` (LJMW97/KJWM00 sonar scan, pose x, y, theta),
-``visibility`` (GLH12: one robot's box at one step).
+``visibility`` (GLH12: one robot's box at one step), ``linear_estimation`` (the exact set
+of a 2-D linear system at one step, issue 21).
 """
 
 from __future__ import annotations
@@ -40,6 +41,7 @@ _FAMILIES = {
         "hs96_pose",
         "sonar",
         "visibility",
+        "linear_estimation",
     )
 }
 

@@ -1,0 +1,158 @@
+"""Family ``linear_estimation``: the exact set ``X_k`` of a 2-D linear system at one step.
+
+A problem is one step ``k`` of a run of ``x_{k+1} = A x_k + w_k``, ``y_k = C x_k + v_k``
+(``optbound.estimation``, issue 21): Alamo, Bravo & Camacho's example [ABC05, Sect. 7.1]
+(``optbound.scenarios.alamo2005``, no simulated state) and seeded random stable systems with
+box noise (``optbound.scenarios.linear_systems.random_system``). The estimator gets
+``data = {"system": LinearSystem, "X0": Box, "ys": ys[:k]}`` and must bound ``X_k``; ``truth``
+is the simulated ``x_k`` (None for Alamo's example).
+
+The true set is described once, by the exact rational polygon of ``X_k``
+(:func:`optbound.estimation.exact_polygon.exact_polygons`: every float of the data read as the
+rational it is, no rounding): a box is TRUE when every corner satisfies every edge's
+half-plane, FALSE when the whole box violates one, decided in ``Fraction`` arithmetic. Only
+2-D systems for now: the exact polygon is 2-D (higher dimensions would need a certified
+H-representation of the constrained zonotope ``X_k``).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+
+from optbound._core import Box
+from optbound.estimation import exact_sets
+from optbound.estimation.exact_polygon import Point, exact_polygons
+from optbound.estimation.references import exact_mvee, interval_hull
+from optbound.interval import Tri
+from optbound.problems.generators import task_seeds
+from optbound.problems.problem import Problem
+from optbound.scenarios import alamo2005
+from optbound.scenarios.linear_systems import random_system
+
+NAME = "linear_estimation"
+# (steps k of Alamo's example, steps k of the random systems, random systems per k).
+SIZES = {
+    "tiny": ((5,), (10,), 1),
+    "quick": ((5, 10, 20), (5, 10, 20), 2),
+    "full": ((2, 5, 10, 15, 20), (5, 10, 20, 30), 5),
+}
+#: Default paving resolution, as a fraction of the exact set's widest extent.
+RELATIVE_EPS = 1 / 128
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    """The instance cells of a suite: Alamo's example per step, then random systems per step.
+
+    Alamo's cells carry the seed of their position (the data are fixed; the seed only names
+    the cell), the random systems their own instance seed.
+    """
+    if suite not in SIZES:
+        raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
+    alamo_steps, random_steps, reps = SIZES[suite]
+    cells = [("alamo", k, 0) for k in alamo_steps] + [
+        ("random", k, rep) for k in random_steps for rep in range(reps)
+    ]
+    return [
+        {"seed": s, "system": name, "k": k, "rep": rep}
+        for s, (name, k, rep) in zip(task_seeds(seed, NAME, len(cells)), cells, strict=True)
+    ]
+
+
+def instance(system: str, seed: int, k: int) -> tuple[dict, np.ndarray | None]:
+    """The estimator's data (system, X0, ys[:k]) and the simulated x_k (or None)."""
+    if system == "alamo":
+        data = {"system": alamo2005.system(), "X0": alamo2005.X0, "ys": alamo2005.MEASUREMENTS[:k]}
+        return data, None
+    if system == "random":
+        run = random_system(2, seed, "box", steps=k)
+        return {"system": run.system, "X0": run.X0, "ys": run.ys}, run.states[-1]
+    raise ValueError(f"system must be 'alamo' or 'random', got {system!r}")
+
+
+def half_planes(P: list[Point]) -> list[tuple[Fraction, Fraction, Fraction]]:
+    """``(a, b, h)`` per edge of the ccw convex polygon ``P``: ``P = {a x + b y <= h}``."""
+    out = []
+    for k in range(len(P)):
+        (px, py), (qx, qy) = P[k], P[(k + 1) % len(P)]
+        a, b = qy - py, px - qx
+        out.append((a, b, a * px + b * py))
+    return out
+
+
+def polygon_test(P: list[Point]):
+    """The exact three-valued box test of the convex polygon ``P`` (module docstring)."""
+    if len(P) < 3:
+        raise ValueError("the exact set is flat or empty: it has no polygon test")
+    planes = half_planes(P)
+
+    def test(x, y) -> np.ndarray:
+        lo_x, hi_x, lo_y, hi_y = (
+            np.broadcast_to(arr, np.broadcast(x.lo, y.lo).shape).ravel()
+            for arr in (x.lo, x.hi, y.lo, y.hi)
+        )
+        out = np.empty(len(lo_x), dtype=np.int8)
+        for i in range(len(lo_x)):
+            X = (Fraction(float(lo_x[i])), Fraction(float(hi_x[i])))
+            Y = (Fraction(float(lo_y[i])), Fraction(float(hi_y[i])))
+            verdict = Tri.TRUE
+            for a, b, h in planes:
+                ax, by = sorted((a * X[0], a * X[1])), sorted((b * Y[0], b * Y[1]))
+                if ax[0] + by[0] > h:
+                    verdict = Tri.FALSE
+                    break
+                if ax[1] + by[1] > h:
+                    verdict = Tri.UNKNOWN
+            out[i] = verdict
+        return out.reshape(np.broadcast(x.lo, y.lo).shape)
+
+    return test
+
+
+def outward_hull(P: list[Point]) -> Box:
+    """The float box proven to contain the rational polygon ``P`` (bounds rounded outward)."""
+
+    def down(q: Fraction) -> float:
+        f = float(q)
+        return f if Fraction(f) <= q else float(np.nextafter(f, -np.inf))
+
+    def up(q: Fraction) -> float:
+        f = float(q)
+        return f if Fraction(f) >= q else float(np.nextafter(f, np.inf))
+
+    xs, ys = [p[0] for p in P], [p[1] for p in P]
+    return Box([down(min(xs)), down(min(ys))], [up(max(xs)), up(max(ys))])
+
+
+def problem(task: dict) -> Problem:
+    """The :class:`Problem` of one task of :func:`tasks`."""
+    data, truth = instance(task["system"], task["seed"], task["k"])
+    P = exact_polygons(data["system"], data["X0"], data["ys"])[-1]
+    domain = outward_hull(P)
+    cache: dict = {}
+
+    def exact_set():
+        if "X" not in cache:
+            cache["X"] = exact_sets(data["system"], data["X0"], data["ys"])[-1]
+        return cache["X"]
+
+    suffix = "" if task["system"] == "alamo" else f"-r{task['rep']}"
+    return Problem(
+        family=NAME,
+        name=f"{task['system']}-k{task['k']}{suffix}",
+        seed=task["seed"],
+        dim=2,
+        data=data,
+        truth=truth,
+        test=polygon_test(P),
+        domain=domain,
+        eps=float(np.max(domain.widths)) * RELATIVE_EPS,
+        optimal=lambda _: exact_mvee(exact_set()).ellipsoid,
+        best_box=lambda _: interval_hull(exact_set()),
+    )
+
+
+def problems(suite: str, seed: int = 0) -> list[Problem]:
+    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    return [problem(task) for task in tasks(suite, seed)]
