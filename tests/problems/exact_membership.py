@@ -11,6 +11,7 @@ import mpmath
 import numpy as np
 
 from optbound.compare import exact
+from optbound.estimation.exact_polygon import exact_polygons
 from optbound.localization import sonar as sonar_model
 from optbound.problems import minkowski, visibility
 
@@ -136,6 +137,17 @@ def in_sonar_set(data, pose) -> bool:
     )
 
 
+def _side_signs(data, x) -> list[Fraction]:
+    """Cross products of each edge of the exact polygon of ``X_k`` with the point, exactly:
+    all >= 0 iff the point is in the (ccw, convex) polygon."""
+    P = exact_polygons(data["system"], data["X0"], data["ys"])[-1]
+    q = [Fraction(float(c)) for c in x]
+    return [
+        (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+        for a, b in zip(P, P[1:] + P[:1], strict=True)
+    ]
+
+
 def check(p, x) -> bool:
     """Is the float point ``x`` in the true set of problem ``p``? (See the module docstring.)"""
     if p.family == "strip":
@@ -152,6 +164,8 @@ def check(p, x) -> bool:
         return in_visibility_set(p.data, x)
     if p.family == "sonar":
         return in_sonar_set(p.data, x)
+    if p.family == "linear_estimation":
+        return min(_side_signs(p.data, x)) >= 0
     raise ValueError(f"no exact check for family {p.family!r}")
 
 
@@ -192,7 +206,7 @@ def _outside_bearing_set(data, x) -> bool:
 
 
 #: Families whose FALSE points :func:`check_outside` can verify.
-OUTSIDE_FAMILIES = ("strip", "recursive", "minkowski", "bh_bearings")
+OUTSIDE_FAMILIES = ("strip", "recursive", "minkowski", "bh_bearings", "linear_estimation")
 
 
 def check_outside(p, x) -> bool:
@@ -205,4 +219,6 @@ def check_outside(p, x) -> bool:
         return _outside_minkowski_sum(*p.data["summands"], x)
     if p.family == "bh_bearings":
         return _outside_bearing_set(p.data["measurements"], x)
+    if p.family == "linear_estimation":
+        return min(_side_signs(p.data, x)) < 0
     raise ValueError(f"no exact exclusion check for family {p.family!r}")

@@ -10,6 +10,8 @@ from hypothesis import strategies as st
 
 from optbound import Box, problems
 from optbound.compare import prove_contains
+from optbound.estimation.exact_polygon import exact_polygons
+from optbound.estimation.references import proven_contains
 from optbound.interval import Tri
 from tests.problems.exact_membership import OUTSIDE_FAMILIES, check, check_outside
 
@@ -26,6 +28,7 @@ def test_every_family_is_in_every_suite():
         "hs96_pose",
         "sonar",
         "visibility",
+        "linear_estimation",
     ]
     assert {p.family for p in TINY} == set(FAMILIES)
     for p in TINY:
@@ -113,8 +116,12 @@ def test_references_contain_the_exact_paving(family):
     assert set(refs) >= {"optimal_ellipsoid", "best_box"}
     outer = p.exact().outer()
     box = refs["best_box"]
-    assert np.all(box.lo <= outer[:, :, 0]) and np.all(outer[:, :, 1] <= box.hi)
     E = refs["optimal_ellipsoid"]
+    if family == "linear_estimation":  # certified hull: proven around the exact polygon
+        P = exact_polygons(p.data["system"], p.data["X0"], p.data["ys"])[-1]
+        assert proven_contains(box, P) and proven_contains(E, P)
+        return
+    assert np.all(box.lo <= outer[:, :, 0]) and np.all(outer[:, :, 1] <= box.hi)
     for b in p.exact().inner[:20]:
         assert exact.member(E, b[:, 0]) and exact.member(E, b[:, 1])
 

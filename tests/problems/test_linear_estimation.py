@@ -1,0 +1,57 @@
+"""Family ``linear_estimation``: suites, the exact polygon test, an observer evaluated."""
+
+import numpy as np
+import pytest
+
+from optbound import problems
+from optbound.estimation import METHODS, observe
+from optbound.interval import Interval, Tri
+from optbound.problems import linear_estimation as family
+from tests.problems.exact_membership import check, check_outside
+
+TINY = problems.suite("tiny", families=["linear_estimation"])
+
+
+def test_tiny_is_alamo_at_5_and_one_random_system_at_10():
+    assert [p.name for p in TINY] == ["alamo-k5", "random-k10-r0"]
+    alamo, rand = TINY
+    assert alamo.truth is None and len(alamo.data["ys"]) == 5
+    assert rand.truth.shape == (2,) and len(rand.data["ys"]) == 10
+    assert rand.member(rand.truth)[0] != Tri.FALSE
+    assert check(rand, rand.truth)
+
+
+def test_quick_has_more_steps_and_seeds_and_bad_suite_is_refused():
+    quick = family.tasks("quick", 0)
+    assert len(quick) > len(family.tasks("tiny", 0))
+    assert len({(t["system"], t["k"]) for t in quick}) >= 6
+    with pytest.raises(ValueError, match="suite"):
+        family.tasks("huge", 0)
+    with pytest.raises(ValueError, match="system"):
+        family.instance("lorenz", 0, 3)
+
+
+@pytest.mark.parametrize("p", TINY, ids=lambda p: p.name)
+def test_box_test_agrees_with_exact_membership(p):
+    X = p.domain.sample(400, np.random.default_rng(5))
+    tri = p.member(X)
+    assert np.any(tri == Tri.TRUE) and np.any(tri == Tri.FALSE)
+    for x, t in zip(X, tri, strict=True):
+        if t == Tri.TRUE:
+            assert check(p, x)
+        elif t == Tri.FALSE:
+            assert check_outside(p, x)
+    # A box test: the domain box is UNKNOWN, a box far away FALSE.
+    lo, hi = p.domain.lo, p.domain.hi
+    assert p.test(Interval(lo[0], hi[0]), Interval(lo[1], hi[1])) == Tri.UNKNOWN
+    assert p.test(Interval(hi[0] + 1, hi[0] + 2), Interval(lo[1], hi[1])) == Tri.FALSE
+
+
+@pytest.mark.parametrize("method", ["interval", "constrained_zonotope", "ellipsoid_volume"])
+def test_an_observer_is_never_refuted(method):
+    assert method in METHODS
+    result = problems.evaluate(
+        lambda p: observe(p.data["system"], p.data["X0"], p.data["ys"], method)[-1], TINY
+    )
+    assert [r["error"] for r in result.rows] == [None] * len(TINY)
+    assert {r["soundness"] for r in result.rows} <= {"proven", "undecided"}
