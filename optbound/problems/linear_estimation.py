@@ -13,6 +13,12 @@ rational it is, no rounding): a box is TRUE when every corner satisfies every ed
 half-plane, FALSE when the whole box violates one, decided in ``Fraction`` arithmetic. Only
 2-D systems for now: the exact polygon is 2-D (higher dimensions would need a certified
 H-representation of the constrained zonotope ``X_k``).
+
+References: ``"optimal_ellipsoid"`` is the MVEE of ``X_k``'s vertices
+(:func:`optbound.estimation.references.exact_mvee`); ``"best_box"`` the hull of the exact
+paving, which here is the exact polygon's interval hull rounded outward to floats
+(:func:`outward_hull`, the paving's domain): tighter than, and as certain as, the LP hull
+``references.interval_hull``.
 """
 
 from __future__ import annotations
@@ -24,7 +30,7 @@ import numpy as np
 from optbound._core import Box
 from optbound.estimation import exact_sets
 from optbound.estimation.exact_polygon import Point, exact_polygons
-from optbound.estimation.references import exact_mvee, interval_hull
+from optbound.estimation.references import exact_mvee
 from optbound.interval import Tri
 from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
@@ -149,7 +155,6 @@ def problem(task: dict) -> Problem:
         domain=domain,
         eps=float(np.max(domain.widths)) * RELATIVE_EPS,
         optimal=lambda _: exact_mvee(exact_set()).ellipsoid,
-        best_box=lambda _: interval_hull(exact_set()),
     )
 
 

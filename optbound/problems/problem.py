@@ -55,9 +55,6 @@ class Problem:
         ``optimal(problem) -> Ellipsoid``: the family's certified optimal outer ellipsoid,
         where it is not the S-procedure SDP of :attr:`intersection` (e.g. the SDP of a
         Minkowski sum, or the best of an SDP and the MVEE of the exact paving's boxes).
-    best_box : callable or None
-        ``best_box(problem) -> Box``: the family's certified interval hull of the true set,
-        where it has one tighter than the exact paving's hull (e.g. by certified LPs).
     """
 
     family: str
@@ -72,7 +69,6 @@ class Problem:
     intersection: tuple = field(default=(), repr=False)
     volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
     optimal: Callable[[Problem], Any] | None = field(default=None, repr=False)
-    best_box: Callable[[Problem], Box] | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
 
     def member(self, X) -> np.ndarray:
@@ -113,14 +109,13 @@ class Problem:
           (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
           intersection) the certified MVEE of the exact paving's box corners
           (``optimal.mvee``, which contains every box);
-        - ``"best_box"``: the family's :attr:`best_box` where it has one, else the hull of the
-          exact paving's inner and boundary boxes (floats, hence exact), the smallest box the
-          paving can prove.
+        - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
+          hence exact), the smallest box the paving can prove.
         """
         if "references" not in self._cache:
             self._cache["references"] = {
                 "optimal_ellipsoid": self._optimal_ellipsoid(),
-                "best_box": self.exact().hull() if self.best_box is None else self.best_box(self),
+                "best_box": self.exact().hull(),
             }
         return dict(self._cache["references"])
 
