@@ -207,11 +207,13 @@ def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
         raise CommandError(f"{type(exc).__name__}: {exc}") from None
 
 
-def _write(results: dict, out: Path) -> Path:
+def _write(results: dict, out: Path, save: bool = True) -> Path:
+    """Write the report (and, if ``save``, results.json); a filesystem error is a CommandError."""
     from optbound import report
 
     try:
-        report.save_results(results, out)
+        if save:
+            report.save_results(results, out)
         return report.write_report(results, out)
     except OSError as exc:
         raise CommandError(f"cannot write the report into {str(out)!r}: {exc}") from None
@@ -224,7 +226,7 @@ def _report(args: argparse.Namespace) -> int:
         results = report.load_results(args.dir)
     except ValueError as exc:
         args.subparser.error(str(exc))
-    path = report.write_report(results, args.dir)
+    path = _write(results, args.dir, save=False)
     _print_summary(results, path)
     return 0
 

@@ -233,3 +233,24 @@ def test_bench_leaves_the_rounding_mode_alone(bench_dir):
     one, half_ulp = 1.0, 2.0**-53
     assert one + half_ulp == one  # ties to even under round-to-nearest; 1 + ulp when upward
     assert float("1.2") == 1.2
+
+
+def test_report_into_a_read_only_folder_fails_with_one_line(tmp_path, capsys, monkeypatch):
+    """A read-only DIR (EROFS; chmod does not stop root, so the write is made to fail)."""
+    import errno
+    from pathlib import Path
+
+    from optbound.report import save_results
+    from tests.report.sample import sample_results
+
+    save_results(sample_results(), tmp_path)
+
+    def read_only(self, *args, **kwargs):
+        raise OSError(errno.EROFS, "Read-only file system", str(self))
+
+    monkeypatch.setattr(Path, "write_text", read_only)
+    monkeypatch.setattr(Path, "write_bytes", read_only)
+    assert main(["report", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("optbound report: error: ")
+    assert "Read-only file system" in err
