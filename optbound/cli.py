@@ -175,7 +175,15 @@ def _repro(args: argparse.Namespace) -> int:
         raise CommandError(str(exc)) from None
     out = _prepare(args)
     suite = "quick" if args.quick else "full"
-    results = _run(args, suite, 0, names=["papers"], where=lambda t: t["script"] in selected)
+    command = " ".join(["optbound repro", *args.papers, *(["--quick"] if args.quick else [])])
+    results = _run(
+        args,
+        suite,
+        0,
+        names=["papers"],
+        where=lambda t: t["script"] in selected,
+        command=command,
+    )
     path = _write(results, out)
     _print_summary(results, path)
     return 0

@@ -176,10 +176,24 @@ def test_unknown_paper_key_fails_clearly(tmp_path, capsys, monkeypatch):
     assert "unknown keys ['ZZ01']" in err
 
 
-def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys):
+def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys, monkeypatch):
+    import optbound.bench.runner
+
+    titles = []
+    progress = optbound.bench.runner.Progress
+    monkeypatch.setattr(
+        optbound.bench.runner,
+        "Progress",
+        lambda title, *args: titles.append(title) or progress(title, *args),
+    )
     argv = ["repro", "ljmw97", "--quick", "--out", str(tmp_path), "--jobs", "1", "--no-progress"]
     assert main(argv) == 0
+    assert titles == ["optbound repro ljmw97 --quick"]
     text = (tmp_path / "report.md").read_text()
+    assert text.startswith("# optbound paper reproductions\n")
+    assert "Re-run with `optbound repro ljmw97 --quick`" in text
+    assert "optbound bench" not in text
+    assert "tightness.csv" not in text and "speed.csv" not in text
     assert "## The papers' results, reproduced" in text
     assert "### LJMW97 Appendix A" in text and "## HS96" not in text
     assert "typed from the paper" in text

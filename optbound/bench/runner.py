@@ -4,7 +4,7 @@ The results dict is everything the report needs (``optbound report DIR`` rebuild
 from its JSON alone)::
 
     {"schema": 1,
-     "meta": {"suite", "seed", "jobs", "executor", "families_run", "complete",
+     "meta": {"command", "suite", "seed", "jobs", "executor", "families_run", "complete",
               "wall_time_s", "started", "load_average", "cpus", "processor", versions...},
      "families": {name: {"title", "kind", "status", "reason", "records", "figures",
                          "notes", "warnings", "errors", "task_seconds"}}}
@@ -45,6 +45,7 @@ def run_suite(
     executor: str = "process",
     scheduler: str | None = None,
     where: Callable[[dict], bool] | None = None,
+    command: str | None = None,
 ) -> dict:
     """Run every available family of ``suite`` and return the results dict.
 
@@ -67,6 +68,9 @@ def run_suite(
     where : callable, optional
         Run only the tasks for which ``where(task)`` is true (``optbound repro KEY`` selects
         papers this way); the run is then not complete.
+    command : str, optional
+        The command line that repeats this run, for the progress bar and the report
+        (default ``optbound bench --suite SUITE --seed SEED``); recorded as ``meta["command"]``.
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
@@ -76,6 +80,7 @@ def run_suite(
         raise ValueError(f"jobs must be a positive integer, got {jobs}")
     if executor not in EXECUTORS:
         raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
+    command = command or f"optbound bench --suite {suite} --seed {seed}"
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
     if names:
@@ -97,7 +102,7 @@ def run_suite(
     pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
     serial = [t for t in tasks if not t[0].parallel]
     costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
-    with Progress(f"optbound bench {suite}", costs, progress) as bar:
+    with Progress(command, costs, progress) as bar:
         with make_executor(executor, jobs, scheduler) as pool:
             futures = {
                 pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
@@ -114,6 +119,7 @@ def run_suite(
     for entry in out.values():
         _sort_by_task(entry)
     meta = {
+        "command": command,
         "suite": suite,
         "seed": seed,
         "jobs": jobs,

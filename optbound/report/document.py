@@ -53,8 +53,12 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    write_csv(results, out)
-    parts = [_header(results), "## Headline", markdown_table(HEADERS, headline_rows(results))]
+    csv_files = write_csv(results, out)
+    parts = [
+        _header(results, [p.name for p in csv_files]),
+        "## Headline",
+        markdown_table(HEADERS, headline_rows(results)),
+    ]
     pictures = []
     for name, fam in results["families"].items():
         parts.append(f"## {fam['title']}")
@@ -75,17 +79,21 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
     return path
 
 
-def _header(results: dict) -> str:
+def _header(results: dict, csv_files: list[str]) -> str:
+    """Title, run facts, and how to repeat the run (the command recorded in ``meta``)."""
     m = results["meta"]
+    # Reports written before meta recorded the command were all bench runs.
+    command = m.get("command", f"optbound bench --suite {m['suite']} --seed {m['seed']}")
+    title = "paper reproductions" if command.startswith("optbound repro") else "benchmark report"
+    raw = f" Raw records: {', '.join(f'`{name}`' for name in csv_files)}." if csv_files else ""
     return (
-        "# optbound benchmark report\n\n"
+        f"# optbound {title}\n\n"
         f"Suite **{m['suite']}**, seed {m['seed']}, {m['jobs']} job(s), started {m['started']}, "
         f"wall time {m['wall_time_s']:.1f} s (optbound {m['optbound']}, Python {m['python']}, "
         f"numpy {m['numpy']}, {m['machine']}).\n\n"
-        f"Re-run with `optbound bench --suite {m['suite']} --seed {m['seed']}`; rebuild this "
-        "report from `results.json` with `optbound report DIR`. Every instance is rebuilt by "
-        "its family's `instance(task)` from the seed shown. Raw records: `tightness.csv`, "
-        "`speed.csv`."
+        f"Re-run with `{command}`; rebuild this report from `results.json` with "
+        "`optbound report DIR`. Every instance is rebuilt by its family's `instance(task)` from "
+        f"the seed shown.{raw}"
     )
 
 

@@ -72,3 +72,19 @@ def test_a_family_without_tasks_in_the_suite_says_so(tmp_path):
     results["families"]["speed"].update(records=[], notes=[])
     text = write_report(results, tmp_path).read_text()
     assert "## Speed: analytic\n\nNo task in this suite." in text
+
+
+def test_header_names_the_command_and_only_the_csv_files_written(tmp_path):
+    results = sample_results()
+    text = write_report(results, tmp_path).read_text()
+    assert text.startswith("# optbound benchmark report\n")
+    assert "Re-run with `optbound bench --suite quick --seed 0`" in text  # meta without command
+    assert {p.name for p in tmp_path.glob("*.csv")} == {"tightness.csv", "speed.csv"}
+    assert "Raw records: `tightness.csv`, `speed.csv`." in text
+    speedless = {
+        "meta": {**results["meta"], "command": "optbound repro HS96"},
+        "families": {k: v for k, v in results["families"].items() if v["kind"] != "speed"},
+    }
+    text = write_report(speedless, tmp_path / "repro").read_text()
+    assert text.startswith("# optbound paper reproductions\n")
+    assert "Re-run with `optbound repro HS96`" in text and "speed.csv" not in text
