@@ -1,8 +1,9 @@
 """The ``optbound`` console script: ``optbound bench``, ``optbound repro`` and ``optbound report``.
 
-Errors the user can fix (a bad ``--out``, an unknown paper key, an unreachable Dask
-scheduler, a full disk) end the command with one line on stderr and exit code 2, before any
-work where they can be detected before it.
+Errors the user can fix (a bad ``--out``, an unknown paper key, dask not installed, an
+unreachable Dask scheduler, a full disk) end the command with one line on stderr and exit code
+2, before any work where they can be detected before it. Ctrl-C ends it with one line and exit
+code 130. Either way an ``--out`` folder the command created and left empty is removed.
 
 Building the parser imports no family, numba, scipy or cvxpy (the family names are declared in
 :data:`optbound.bench.registry.FAMILIES`), so ``--help`` and argument errors answer at once;
@@ -23,6 +24,7 @@ from optbound.bench.registry import FAMILIES
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
 EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for a Ctrl-C
 
 
 class CommandError(Exception):
@@ -190,12 +192,31 @@ def _repro(args: argparse.Namespace) -> int:
 
 
 def _prepare(args: argparse.Namespace) -> Path:
+    """Check the executor, then create and check ``--out``: all before any work.
+
+    The folders this creates are recorded in ``args.created`` so that a run that stops
+    before writing anything into them (an error, Ctrl-C) removes them again.
+    """
+    from optbound.bench.executors import check_available
     from optbound.report.outdir import OutDirError, prepare_out_dir
 
+    try:
+        check_available(args.executor, args.scheduler)
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
+    args.created = [p for p in (args.out, *args.out.parents) if not p.exists()]
     try:
         return prepare_out_dir(args.out, args.force)
     except OutDirError as exc:
         raise CommandError(str(exc)) from None
+
+
+def _remove_if_empty(folders: list[Path]) -> None:
+    """Remove ``folders`` (innermost first) while they exist and are empty."""
+    for folder in folders:
+        if not folder.is_dir() or any(folder.iterdir()):
+            return
+        folder.rmdir()
 
 
 def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
@@ -260,8 +281,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return args.handler(args)
     except CommandError as exc:
+        _remove_if_empty(getattr(args, "created", []))
         print(f"optbound {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
+    except KeyboardInterrupt:
+        _remove_if_empty(getattr(args, "created", []))
+        print(f"optbound {args.command}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":

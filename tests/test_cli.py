@@ -268,3 +268,61 @@ def test_report_into_a_read_only_folder_fails_with_one_line(tmp_path, capsys, mo
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith("optbound report: error: ")
     assert "Read-only file system" in err
+
+
+def test_scheduler_without_dask_fails_before_any_work(tmp_path, capsys, monkeypatch):
+    import importlib.util
+
+    real_find_spec = importlib.util.find_spec
+    monkeypatch.setattr(
+        importlib.util,
+        "find_spec",
+        lambda name, *a: None if name == "distributed" else real_find_spec(name, *a),
+    )
+    target = tmp_path / "new" / "out"
+    argv = ["bench", "--scheduler", "tcp://127.0.0.1:1", "--out", str(target)]
+    err = _fails_at_once(argv, capsys, monkeypatch)
+    assert 'pip install "optbound[dask]"' in err
+    assert not (tmp_path / "new").exists()
+
+
+def test_a_run_that_fails_removes_the_out_folder_it_created(tmp_path, capsys, monkeypatch):
+    import optbound.bench.runner
+
+    def unreachable(*args, **kwargs):
+        raise OSError("Timed out trying to connect to tcp://127.0.0.1:1")
+
+    monkeypatch.setattr(optbound.bench.runner, "run_suite", unreachable)
+    target = tmp_path / "new" / "out"
+    assert main(["bench", "--out", str(target)]) == 2
+    assert "Timed out" in capsys.readouterr().err
+    assert not (tmp_path / "new").exists()
+
+
+def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path):
+    """SIGINT to the whole process group, as a terminal's Ctrl-C sends it, mid-run."""
+    import os
+    import signal
+    import time
+    from pathlib import Path
+
+    target = tmp_path / "out"
+    argv = ["bench", "--suite", "quick", "--family", "recursive", "--jobs", "2"]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "optbound", *argv, "--out", str(target)],
+        cwd=Path(__file__).parents[1],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    deadline = time.monotonic() + 120
+    while not target.exists() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    time.sleep(3)  # the pool's workers are running tasks
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert err.splitlines()[-1] == "optbound bench: interrupted"
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err
+    assert not target.exists()

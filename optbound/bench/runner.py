@@ -28,7 +28,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 import optbound
-from optbound.bench.executors import EXECUTORS
+from optbound.bench.executors import check_available, ignore_interrupts
 from optbound.bench.executors import executor as make_executor
 from optbound.bench.family import SUITES, Family
 from optbound.bench.progress import Progress
@@ -78,8 +78,7 @@ def run_suite(
         raise ValueError(f"seed must be a non-negative integer, got {seed}")
     if jobs < 1:
         raise ValueError(f"jobs must be a positive integer, got {jobs}")
-    if executor not in EXECUTORS:
-        raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
+    check_available(executor, scheduler)  # before any work or progress bar
     command = command or f"optbound bench --suite {suite} --seed {seed}"
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
@@ -178,7 +177,7 @@ def _family_entry(fam: Family) -> dict:
 
 def _run_isolated(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
     """Run one task in a single-use child process, so its side effects die with it."""
-    with multiprocessing.get_context().Pool(1) as pool:
+    with multiprocessing.get_context().Pool(1, initializer=ignore_interrupts) as pool:
         return pool.apply(_run_registered, (item,))
 
 
