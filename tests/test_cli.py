@@ -326,3 +326,15 @@ def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path):
     assert err.splitlines()[-1] == "optbound bench: interrupted"
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
     assert not target.exists()
+
+
+def test_bench_into_a_pipe_writes_no_cursor_movements(tmp_path):
+    argv = ["bench", "--suite", "tiny", "--family", "strip", "--jobs", "1"]
+    run = subprocess.run(
+        [sys.executable, "-m", "optbound", *argv, "--out", str(tmp_path / "out")],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "\x1b[" not in run.stderr and "\r" not in run.stderr
+    assert "optbound bench --suite tiny --seed 0: strip done (" in run.stderr
