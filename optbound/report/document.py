@@ -89,11 +89,22 @@ def _header(results: dict, csv_files: list[str]) -> str:
     return (
         f"# optbound {title}\n\n"
         f"Suite **{m['suite']}**, seed {m['seed']}, {m['jobs']} job(s), started {m['started']}, "
-        f"wall time {m['wall_time_s']:.1f} s (optbound {m['optbound']}, Python {m['python']}, "
+        f"{_wall_time(m)} (optbound {m['optbound']}, Python {m['python']}, "
         f"numpy {m['numpy']}, {m['machine']}).\n\n"
         f"Re-run with `{command}`; rebuild this report from `results.json` with "
         "`optbound report DIR`. Every instance is rebuilt by its family's `instance(task)` from "
         f"the seed shown.{raw}"
+    )
+
+
+def _wall_time(meta: dict) -> str:
+    """What the run cost: the tasks alone, and (if run by the command) from its start."""
+    tasks = f"{meta['wall_time_s']:.1f} s running the tasks"
+    if "since_start_s" not in meta:
+        return f"wall time {tasks}"
+    return (
+        f"wall time {meta['since_start_s']:.1f} s from the command's start to the end of its "
+        f"tasks ({tasks}; the rest is start-up: imports, compiling, setting up the workers)"
     )
 
 
