@@ -20,7 +20,7 @@ from pathlib import Path
 
 from optbound.bench.executors import EXECUTORS
 from optbound.bench.family import SUITES
-from optbound.bench.registry import FAMILIES
+from optbound.bench.registry import FAMILIES, PAPERS
 
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
@@ -140,7 +140,10 @@ def build_parser() -> argparse.ArgumentParser:
         "write one paper-vs-optbound table per script plus its figures into --out.",
     )
     repro.add_argument(
-        "papers", nargs="*", metavar="KEY", help="paper keys, e.g. HS96 LJMW97 (default: all)"
+        "papers",
+        nargs="*",
+        metavar="KEY",
+        help=f"paper keys, any of {' '.join(PAPERS)}, case-insensitive (default: all)",
     )
     repro.add_argument(
         "--quick", action="store_true", help="the scripts' fast variants (seconds each)"

@@ -361,3 +361,14 @@ def test_printed_wall_time_is_the_commands_own(piped_run):
     assert meta["wall_time_s"] < meta["since_start_s"] <= printed
     assert f"wall time {meta['since_start_s']:.1f} s from the command's start" in header
     assert f"{meta['wall_time_s']:.1f} s running the tasks" in header
+
+
+def test_repro_help_lists_every_paper_key(capsys):
+    from optbound.bench.registry import PAPERS
+    from optbound.papers_repro._common import scripts
+
+    assert {s.paper for s in scripts()} == set(PAPERS)
+    with pytest.raises(SystemExit):
+        main(["repro", "--help"])
+    help_text = " ".join(capsys.readouterr().out.split())
+    assert f"any of {' '.join(PAPERS)}" in help_text

@@ -29,6 +29,10 @@ FAMILIES: dict[str, str] = {
     "papers": "optbound.bench.papers:FAMILY",
 }
 
+#: Keys of the papers whose results the ``papers`` family reproduces (``papers_repro/``), in
+#: report order, declared here for the same reason: ``optbound repro --help`` lists them.
+PAPERS = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12")
+
 #: Top-level packages of the source checkout that are not installed: a family defined there
 #: (``speed_analytic``, which times the kernels against the plain kernels of
 #: ``benchmarks/analytic_reference.py``) runs from the repository's root (``python -m
