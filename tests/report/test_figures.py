@@ -31,3 +31,18 @@ def test_panels_have_axis_labels_and_zoom_on_a_small_exact_set():
         assert ax.get_xlabel() and ax.get_ylabel()
         assert (len(ax.child_axes) == 1) == zoomed
         plt.close(fig)
+
+
+def _records(ratios, bound=None):
+    extra = {"bound": bound} if bound else {}
+    return [{"ratio": r, "variant": "v", **extra} for r in ratios]
+
+
+def test_histogram_titles_say_what_the_bound_is_and_use_a_linear_axis_far_from_1():
+    plt = figures.pyplot()
+    fig, (far, near) = plt.subplots(1, 2)
+    figures._gap_panel(far, _records([1.5, 2.0, 3.2], "optimal"), "optimal_pseudo_L4", "exact")
+    figures._gap_panel(near, _records([1.0 + 1e-7, 1.002, 1.3]), "volume", "SDP volume")
+    assert far.get_title() == "optimal optimal_pseudo_L4 vs exact" and far.get_xscale() == "linear"
+    assert near.get_title() == "analytic volume vs SDP volume" and near.get_xscale() == "symlog"
+    plt.close(fig)
