@@ -88,3 +88,15 @@ def test_header_names_the_command_and_only_the_csv_files_written(tmp_path):
     text = write_report(speedless, tmp_path / "repro").read_text()
     assert text.startswith("# optbound paper reproductions\n")
     assert "Re-run with `optbound repro HS96`" in text and "speed.csv" not in text
+
+
+def test_below_one_counts_are_explained_where_they_appear(tmp_path):
+    results = sample_results()
+    strip = results["families"]["strip"]["records"]
+    strip[0] = {**strip[0], "ratio": 1.0 - 1e-5}  # an SDP reference a little off the optimum
+    text = write_report(results, tmp_path).read_text()
+    section = text.split(f"## {results['families']['strip']['title']}")[1].split("\n## ")[0]
+    assert '"below 1" counts ratios under 1 − 1e-06' in section
+    assert "the reference's own inaccuracy" in section
+    text = write_report(sample_results(), tmp_path / "none").read_text()
+    assert '"below 1" counts ratios under 1 − 1e-06' not in text  # said only where it applies
