@@ -271,7 +271,19 @@ def _zoom(ax, fig_spec: dict, bounds: list, exact: tuple[np.ndarray, np.ndarray]
     inset.set_aspect("equal")
     inset.set_xticks([])
     inset.set_yticks([])
-    inset.set_title("zoom on the exact set", fontsize=6)
+    # Inside the inset: a title above it would reach past the panel's top edge, over the
+    # panel's own title (the inset sits in the panel's top-right corner).
+    inset.text(
+        0.5,
+        0.03,
+        "zoom on the exact set",
+        transform=inset.transAxes,
+        ha="center",
+        va="bottom",
+        fontsize=6,
+        bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1},
+        zorder=10,
+    )
     ax.indicate_inset_zoom(inset, edgecolor="0.3")
 
 

@@ -46,3 +46,20 @@ def test_histogram_titles_say_what_the_bound_is_and_use_a_linear_axis_far_from_1
     assert far.get_title() == "optimal optimal_pseudo_L4 vs exact" and far.get_xscale() == "linear"
     assert near.get_title() == "analytic volume vs SDP volume" and near.get_xscale() == "symlog"
     plt.close(fig)
+
+
+def test_the_zoom_label_lies_inside_its_panel_clear_of_the_title():
+    plt = figures.pyplot()
+    fig, ax = plt.subplots(layout="constrained")
+    figures._draw_instance(ax, _spec(0.05))
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (inset,) = ax.child_axes
+    labels = [t for t in [inset.title, *inset.texts] if t.get_text() == "zoom on the exact set"]
+    assert len(labels) == 1
+    label = labels[0].get_window_extent(renderer)
+    panel = ax.get_window_extent(renderer)
+    assert panel.x0 <= label.x0 and label.x1 <= panel.x1
+    assert panel.y0 <= label.y0 and label.y1 <= panel.y1
+    assert not label.overlaps(ax.title.get_window_extent(renderer))
+    plt.close(fig)
