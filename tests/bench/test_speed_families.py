@@ -56,7 +56,7 @@ def test_per_call_measures_seconds_per_call():
 
 
 def test_one_analytic_call_is_measured_once_and_the_sdp_ratio_uses_it():
-    from benchmarks import speed_analytic
+    from optbound.bench import speed_analytic
 
     for run in (speed_analytic.run_strip, speed_analytic.run_minkowski):
         records = run({"seed": 3, "batches": [10]})

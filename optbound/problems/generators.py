@@ -1,18 +1,31 @@
-"""Seeded random instances shared by the tightness families.
+"""Seeded random instances shared by the problem families (and the benchmark that runs them).
 
-Every generator takes a numpy ``Generator`` so that an instance is fully determined by the
-instance seed recorded next to its result (``np.random.default_rng(seed)``).
+Every generator takes a numpy ``Generator``, so an instance is fully determined by the
+instance seed recorded next to it (``np.random.default_rng(seed)``). The instance seeds of a
+family come from :func:`task_seeds`, the suite seed and the family's name.
 """
 
 from __future__ import annotations
 
+import zlib
+
 import numpy as np
 
-from optbound import Ellipsoid, Strip
+from optbound.sets import Ellipsoid, Strip
 
 # Strip position in the ellipsoid's own extent along the normal, u = (a^T x - a^T c) / h with
 # h = sqrt(a^T C a), so u in [-1, 1] spans the ellipsoid. Each kind draws (lo, hi) in u.
 STRIP_KINDS = ("narrow", "wide", "off-centre", "partial")
+
+
+def task_seeds(seed: int, name: str, count: int) -> list[int]:
+    """``count`` reproducible 32-bit instance seeds for family ``name`` under suite seed ``seed``.
+
+    The family name enters the seed sequence, so two families never share instances and
+    adding a family does not change the instances of the others.
+    """
+    state = np.random.SeedSequence([seed, zlib.crc32(name.encode())]).generate_state(count)
+    return [int(s) for s in state]
 
 
 def random_rotation(rng: np.random.Generator, dim: int) -> np.ndarray:
