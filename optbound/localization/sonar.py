@@ -31,9 +31,12 @@ import numpy as np
 from optbound.interval import (
     Interval,
     Paving,
+    Tri,
     constraint,
     min_outliers,
+    relaxed_test,
 )
+from optbound.interval._fenv import nearest
 from optbound.interval.paving import box_rows
 from optbound.interval.relaxed import relaxed_paving
 from optbound.localization import geometry as g
@@ -307,6 +310,38 @@ class SonarPaving(Paving):
         ]
         return sorted(out, key=lambda p: -p.volume_bounds()[1])
 
+    def witness(self, per_side: int = 3) -> np.ndarray | None:
+        """A float pose of this paving proven consistent with the readings, or ``None``.
+
+        Tries the centre of every box, then a ``per_side``³ grid in each box; a pose is
+        proven when the sonar tests (and the prior) are TRUE at the point box of the pose:
+        at least ``t - q`` readings are shown, in interval arithmetic, to contain the ranges
+        of that exact float pose. A component with a witness holds a point of the true set
+        [LJMW97, eq. (3)]; one without may be an artefact of the paving.
+        """
+        if not isinstance(per_side, (int, np.integer)) or per_side < 1:
+            raise ValueError(f"per_side must be a positive integer, got {per_side!r}")
+        boxes = self.outer()
+        if not boxes.shape[0]:
+            return None
+        lo, hi = boxes[:, :, 0], boxes[:, :, 1]
+        grid = (np.arange(per_side) + 0.5) / per_side
+        frac = np.stack(np.meshgrid(grid, grid, grid, indexing="ij"), -1).reshape(-1, 3)
+        for f in (np.full((1, 3), 0.5), frac):
+            poses = np.clip(lo[:, None] + f[None] * (hi - lo)[:, None], lo[:, None], hi[:, None])
+            poses = poses.reshape(-1, 3)
+            proven = np.flatnonzero(self._proven(poses) == Tri.TRUE)
+            if proven.size:
+                return poses[proven[0]]
+        return None
+
+    @nearest
+    def _proven(self, poses: np.ndarray) -> np.ndarray:
+        coords = [Interval._make(poses[:, k].copy(), poses[:, k].copy()) for k in range(3)]
+        tests, prior = self.problem["tests"], self.problem["prior"]
+        tri = relaxed_test(tests, self.q)(*coords)
+        return tri if prior is None else np.minimum(tri, prior(*coords))
+
     def _hypothesis(self, boxes: np.ndarray) -> tuple[tuple[int, ...], ...]:
         world, belt, Y, d_max = (self.problem[k] for k in ("world", "sonars", "Y", "d_max"))
         pose = tuple(Interval._make(boxes[:, k, 0], boxes[:, k, 1]) for k in range(3))
@@ -440,7 +475,14 @@ def localize(
         paving = relaxed_paving(
             tests, q, box, eps, prior=prior, contractors=contractors, max_boxes=max_boxes
         )
-    problem = dict(world=world, sonars=belt, Y=measurement_box(belt, ranges), d_max=d_max)
+    problem = dict(
+        world=world,
+        sonars=belt,
+        Y=measurement_box(belt, ranges),
+        d_max=d_max,
+        tests=tests,
+        prior=prior,
+    )
     return SonarPaving(paving, problem, int(q), wraps)
 
 
