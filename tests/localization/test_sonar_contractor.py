@@ -112,11 +112,9 @@ def test_pave_with_contractor_still_tiles_x0():
     paving = localize(world, sonars, d, [[-7, 4], [-1, 8], [-np.pi, np.pi]], 0.1, contract=True)
     boxes = np.concatenate([paving.inner, paving.boundary, paving.outside])
     rng = np.random.default_rng(0)
-    pts = np.column_stack([rng.uniform(-7, 4, 3000), rng.uniform(-1, 8, 3000)])
-    pts = np.column_stack([pts, rng.uniform(-np.pi, np.pi, 3000)])
-    inside = np.all(
-        (boxes[None, :, :, 0] < pts[:, None]) & (pts[:, None] < boxes[None, :, :, 1]), -1
-    )
+    pts = rng.uniform([-7, -1, -np.pi], [4, 8, np.pi], (300, 3))
+    lo, hi = boxes[None, :, :, 0], boxes[None, :, :, 1]
+    inside = np.all((lo < pts[:, None]) & (pts[:, None] < hi), axis=-1)
     assert np.all(inside.sum(axis=1) == 1)
 
 
