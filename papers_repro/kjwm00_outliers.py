@@ -336,12 +336,17 @@ def _figure(trials: list[dict], n: int, out_dir: Path) -> Path:
     labels = list(dict.fromkeys(t["label"] for t in trials))
     x = np.arange(len(labels))
     for i, m in enumerate(METHODS):
-        rate = [
-            np.mean([t[m]["success"] for t in trials if t["label"] == lab and m in t] or [0.0])
-            for lab in labels
-        ]
-        ax.bar(x + (i - 1) * 0.27, rate, 0.27, label=m)
-    ax.set_xticks(x, [lab.replace(", ", ",\n") for lab in labels], fontsize=8)
+        ran = [[t[m]["success"] for t in trials if t["label"] == lab and m in t] for lab in labels]
+        rate = [np.mean(r) if r else np.nan for r in ran]
+        ax.bar(x + (i - 1) * 0.27, rate, 0.27, label=m, color=f"C{i}")
+        for xi, r in zip(x, ran, strict=True):
+            if not r:
+                ax.text(xi + (i - 1) * 0.27, 0.02, "not run", rotation=90, ha="center", fontsize=7)
+    counts = [sum(t["label"] == lab for t in trials) for lab in labels]
+    ticks = [
+        lab.replace(", ", ",\n") + f"\n(n = {c})" for lab, c in zip(labels, counts, strict=True)
+    ]
+    ax.set_xticks(x, ticks, fontsize=8)
     ax.set_ylabel("share of trials keeping the truth")
     ax.set_ylim(0, 1.05)
     ax.set_title(f"KJWM00 (our scenarios): truth kept, {n} seeded trials per group", fontsize=10)
