@@ -40,7 +40,7 @@ from optbound.interval._fenv import nearest
 from optbound.interval.paving import box_rows
 from optbound.interval.relaxed import relaxed_paving
 from optbound.localization import geometry as g
-from optbound.localization.sonar_contractor import upper_range_contractor
+from optbound.localization._sonar_contractor import upper_range_contractor
 from optbound.sets import Box
 from optbound.sets import _validate as v
 
@@ -254,7 +254,7 @@ def sonar_contractors(world, sonars, ranges, d_max: float = D_MAX) -> list:
     """One sound contractor per sonar, for :func:`localize` (contraction before bisection).
 
     A sonar whose upper range bound is below ``d_max`` contracts ``(x, y)`` by
-    :func:`~optbound.localization.sonar_contractor.upper_range_contractor`; one that may read
+    :func:`~optbound.localization._sonar_contractor.upper_range_contractor`; one that may read
     ``d_max`` ("no face") removes nothing.
     """
     world = g.as_segments(world)

@@ -7,6 +7,7 @@ from hypothesis import strategies as st
 
 from optbound.interval import Interval, Tri
 from optbound.interval.relaxed import relaxed_contractor
+from optbound.localization._sonar_contractor import upper_range_contractor
 from optbound.localization.sonar import (
     D_MAX,
     localize,
@@ -14,7 +15,6 @@ from optbound.localization.sonar import (
     sonar_contractors,
     sonar_tests,
 )
-from optbound.localization.sonar_contractor import upper_range_contractor
 from optbound.scenarios import rooms
 from tests.localization.test_sonar import inside_pose, random_belt, random_room
 
