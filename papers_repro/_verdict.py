@@ -1,14 +1,15 @@
-"""Verdicts of the reproduction tables: reproduced / partly / not reproduced, from numbers.
+"""Per-claim verdicts of the reproduction tables: reproduced / partly / not reproduced.
 
-Every claim row of a script gets its verdict from the numbers printed beside it, by one of
-two rules stated here (and in the table's caption):
+A verdict is computed from the numbers printed beside it, by a rule stated in the report next
+to the table (the thresholds are the scripts' module constants, fixed before the runs). Rows
+that set a measurement beside no claim of the paper carry :data:`NO_CLAIM`.
 
-- a **rate** claim ("the truth is kept", "q equals the number of outliers") with k successes
-  in n trials against a target rate: *reproduced* when the 95 % Wilson interval of k / n lies
-  at or above the target, *not reproduced* when it lies below, *partly* when it straddles it;
-- a **count** claim (the paper's number of components) against our bracket ``[lo, hi]`` of
-  the true count: *reproduced* when ``lo == hi == paper``, *partly* when ``lo <= paper <= hi``
-  (consistent but not established), *not reproduced* otherwise.
+Two further rules: a **rate** claim with k successes in n seeded trials against a target
+rate is *reproduced* when the 95 % Wilson interval of k / n lies at or above the target, *not
+reproduced* when it lies below, *partly* when it straddles it (:func:`rate_verdict`); a
+**count** claim against our bracket ``[lo, hi]`` of the true count is *reproduced* when
+``lo == hi == paper``, *partly* when ``lo <= paper <= hi``, *not reproduced* otherwise
+(:func:`count_verdict`).
 """
 
 from __future__ import annotations
@@ -17,10 +18,50 @@ import math
 from collections.abc import Sequence
 
 from optbound.report.tables import markdown_table
-from papers_repro._common import CLAIM_HEADERS
 
 REPRODUCED, PARTLY, NOT_REPRODUCED = "reproduced", "partly", "not reproduced"
-VERDICT_HEADERS = (*CLAIM_HEADERS, "verdict")
+NO_CLAIM = "— (no claim)"
+HEADERS = ("quantity", "paper", "optbound", "verdict")
+
+
+def at_least(value: float, reproduced: float, partly: float) -> str:
+    """``reproduced`` if ``value >= reproduced``, ``partly`` if ``>= partly``, else not."""
+    if not reproduced >= partly:
+        raise ValueError(f"reproduced ({reproduced}) must be >= partly ({partly})")
+    if value >= reproduced:
+        return REPRODUCED
+    return PARTLY if value >= partly else NOT_REPRODUCED
+
+
+def at_most(value: float, reproduced: float, partly: float) -> str:
+    """``reproduced`` if ``value <= reproduced``, ``partly`` if ``<= partly``, else not."""
+    if not reproduced <= partly:
+        raise ValueError(f"reproduced ({reproduced}) must be <= partly ({partly})")
+    if value <= reproduced:
+        return REPRODUCED
+    return PARTLY if value <= partly else NOT_REPRODUCED
+
+
+def all_or_some(flags: Sequence[bool]) -> str:
+    """``reproduced`` when every flag holds, ``partly`` when some do, else not reproduced."""
+    flags = [bool(f) for f in flags]
+    if not flags:
+        raise ValueError("flags is empty: a verdict needs at least one test")
+    if all(flags):
+        return REPRODUCED
+    return PARTLY if any(flags) else NOT_REPRODUCED
+
+
+def table(rows: Sequence[Sequence[str]]) -> str:
+    """The ``quantity | paper | optbound | verdict`` table."""
+    allowed = {REPRODUCED, PARTLY, NOT_REPRODUCED, NO_CLAIM}
+    for row in rows:
+        if len(row) != len(HEADERS) or row[-1] not in allowed:
+            raise ValueError(f"a claim row needs {len(HEADERS)} cells ending in a verdict: {row}")
+    return markdown_table(HEADERS, rows)
+
+
+# ----- sampled rates and bracketed counts (KJWM00, LJMW97) ------------------------------------
 #: Normal quantile of the two-sided 95 % interval.
 Z95 = 1.959963984540054
 
@@ -66,6 +107,18 @@ def rate_text(k: int, n: int) -> str:
     return f"{k}/{n} ({share:.0%}, 95 % CI [{lo:.0%}, {hi:.0%}])"
 
 
-def verdict_table(rows: Sequence[Sequence[str]]) -> str:
-    """The ``quantity | paper | optbound | verdict`` table."""
-    return markdown_table(VERDICT_HEADERS, rows)
+__all__ = [
+    "HEADERS",
+    "NOT_REPRODUCED",
+    "NO_CLAIM",
+    "PARTLY",
+    "REPRODUCED",
+    "all_or_some",
+    "at_least",
+    "at_most",
+    "count_verdict",
+    "rate_text",
+    "rate_verdict",
+    "table",
+    "wilson",
+]

@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 
 from optbound.localization.visibility import track
+from optbound.papers_repro._common import DEFAULT_OUT, claim_table, pyplot, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import arena
-from papers_repro._common import DEFAULT_OUT, claim_table, pyplot, save_figure
 
 PAPER = "GLH12"
 STEPS = 1500

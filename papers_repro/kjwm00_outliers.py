@@ -39,16 +39,19 @@ from optbound.localization.sonar import (
     measurement_box,
     simulate_ranges,
 )
-from optbound.report.tables import markdown_table
-from optbound.scenarios import rooms
-from papers_repro._common import pyplot, run_cli, save_figure
-from papers_repro._verdict import (
+from optbound.papers_repro._common import pyplot, run_cli, save_figure
+from optbound.papers_repro._verdict import (
+    NO_CLAIM,
     NOT_REPRODUCED,
     REPRODUCED,
     rate_text,
     rate_verdict,
-    verdict_table,
 )
+from optbound.papers_repro._verdict import (
+    table as verdict_table,
+)
+from optbound.report.tables import markdown_table
+from optbound.scenarios import rooms
 
 PAPER = "KJWM00"
 WORLD = rooms.BELT_ROOM
@@ -277,7 +280,7 @@ def _claims(trials: list[dict]) -> list[tuple[str, str, str, str]]:
             "the same with 3-7 sonars (room-wide X0)",
             "'(extraordinarily) robust to outliers'",
             rate_text(kept_few, len(few)),
-            rate_verdict(kept_few, len(few), TARGET) if few else "—",
+            rate_verdict(kept_few, len(few), TARGET) if few else NO_CLAIM,
         ),
         (
             f"truth kept with <= {Q_FIXED} outliers and q = {Q_FIXED}",

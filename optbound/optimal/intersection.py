@@ -47,6 +47,7 @@ from collections.abc import Sequence
 import cvxpy as cp
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.optimal import _cvx, _small
 from optbound.optimal.certify import certify_lmi
 from optbound.optimal.emptiness import explain_failure, refuse_empty
@@ -56,7 +57,6 @@ from optbound.optimal.lower import sampled_lower_bound
 from optbound.optimal.result import OuterResult, objective_value
 from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid, QuadraticSet
-from optbound.sets import _validate as v
 from optbound.sets.base import QuadraticallyDescribed
 
 OBJECTIVES = ("volume", "trace", "projection")

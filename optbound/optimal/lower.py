@@ -78,11 +78,11 @@ from math import lgamma, log, pi
 import numpy as np
 from numba import njit
 
+from optbound._core import validate as v
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
 from optbound.optimal.khachiyan import _quad, core_set, covariance, khachiyan_weights
 from optbound.sets import Ellipsoid, QuadraticSet
-from optbound.sets import _validate as v
 
 _SAMPLES = 2_000  # first batch of samples for x0; four times more while too few are inside
 _MAX_SAMPLES = 512_000

@@ -4,8 +4,14 @@ import numpy as np
 import pytest
 
 from optbound.localization.sonar import localize
-from papers_repro import kjwm00_outliers as repro
-from papers_repro._verdict import NOT_REPRODUCED, PARTLY, REPRODUCED, rate_verdict
+from optbound.papers_repro import kjwm00_outliers as repro
+from optbound.papers_repro._verdict import (
+    NO_CLAIM,
+    NOT_REPRODUCED,
+    PARTLY,
+    REPRODUCED,
+    rate_verdict,
+)
 
 
 @pytest.fixture(scope="module")
@@ -45,7 +51,7 @@ def test_verdicts_are_computed_from_the_rows(result):
     assert claims[0][3] == rate_verdict(kept, len(belt), repro.TARGET)
     assert "our reading" in claims[3][1]
     for row in claims:
-        assert row[3] in (REPRODUCED, PARTLY, NOT_REPRODUCED, "—")
+        assert row[3] in (REPRODUCED, PARTLY, NOT_REPRODUCED, NO_CLAIM)
         assert row[3] in result["markdown"]
     assert f"{result['n']} seeded trials per group" in result["markdown"]
 

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from optbound.localization.sonar import measurement_box, simulate_ranges
-from papers_repro import ljmw97_triangle as repro
-from papers_repro._verdict import count_verdict
+from optbound.papers_repro import ljmw97_triangle as repro
+from optbound.papers_repro._verdict import count_verdict
 
 
 @pytest.fixture(scope="module")

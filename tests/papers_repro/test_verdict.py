@@ -2,14 +2,14 @@
 
 import pytest
 
-from papers_repro._verdict import (
+from optbound.papers_repro._verdict import (
     NOT_REPRODUCED,
     PARTLY,
     REPRODUCED,
     count_verdict,
     rate_text,
     rate_verdict,
-    verdict_table,
+    table,
     wilson,
 )
 
@@ -44,5 +44,5 @@ def test_count_verdict_brackets():
 
 def test_table_and_text():
     assert rate_text(3, 4).startswith("3/4 (75%, 95 % CI [")
-    table = verdict_table([("a", "b", "c", REPRODUCED)])
-    assert table.splitlines()[0] == "| quantity | paper | optbound | verdict |"
+    text = table([("a", "b", "c", REPRODUCED)])
+    assert text.splitlines()[0] == "| quantity | paper | optbound | verdict |"
