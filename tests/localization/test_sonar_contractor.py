@@ -41,12 +41,12 @@ def _boundary_reading(world, sonar, pose):
 def test_upper_range_contractor_keeps_checked_poses_on_the_boundary(seed):
     rng = np.random.default_rng(seed)
     world = random_room(rng)
+    pose = inside_pose(rng, world, clearance=0.4)
     if rng.random() < 0.5:  # a free-standing two-faced partition inside the room
         a, b = rng.uniform(-1.5, 1.5, 2), rng.uniform(-1.5, 1.5, 2)
         assume(np.linalg.norm(a - b) > 0.1)
         world = np.concatenate([world, [[a, b], [b, a]]])
     [sonar] = random_belt(rng, 1)
-    pose = inside_pose(rng, world, clearance=0.4)
     d = _boundary_reading(world, sonar, pose)
     assume(d is not None and d * (1 + sonar.rel_accuracy) < D_MAX)
     [contract] = sonar_contractors(world, [sonar], [d])
