@@ -6,8 +6,9 @@ import types
 import pytest
 
 from optbound.bench import registry
-from optbound.bench.family import SUITES, task_seeds
+from optbound.bench.family import SUITES
 from optbound.bench.registry import families
+from optbound.problems.generators import task_seeds
 
 
 def test_task_seeds_are_reproducible_and_depend_on_seed_and_family():
