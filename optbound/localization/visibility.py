@@ -93,6 +93,12 @@ def _check_depth(max_depth) -> int:
     return int(max_depth)
 
 
+def _check_passes(passes) -> int:
+    if isinstance(passes, bool) or not isinstance(passes, int | np.integer) or passes < 1:
+        raise ValueError(f"passes must be a positive integer, got {passes!r}")
+    return int(passes)
+
+
 def _check_measurements(y, m: int, name: str = "y") -> np.ndarray:
     arr = np.asarray(y)
     if arr.dtype != np.bool_:
@@ -272,6 +278,8 @@ def track(
     eps: float,
     *,
     max_depth: int = MAX_DEPTH,
+    passes: int = 1,
+    region=None,
 ) -> np.ndarray:
     """Pose tracking of a team [GLH12, Algorithm 1]: odometry, then LUVIA for every robot.
 
@@ -289,20 +297,33 @@ def track(
         (K, m, m) booleans: ``visibility[k, i, l]`` is ``y_il`` after step ``k``.
     env, eps, max_depth
         As for :func:`luvia`.
+    passes
+        Team contraction sweeps per step (not in the paper). A sweep contracts every robot in
+        turn; robots contracted early used the others' boxes from before their contraction,
+        so a new sweep can shrink them further. Sweeps are repeated until none changes a box
+        (a fixpoint of the team's contraction) or ``passes`` sweeps were run. 1 (default) is
+        [GLH12, Algorithm 1] as printed. Each contraction keeps every position consistent
+        with boxes that contain the truth, so every sweep keeps the guarantee.
+    region
+        Optional box ``[[x_lo, x_hi], [y_lo, y_hi]]`` known to contain every robot at every
+        step (e.g. the room); each odometry box is intersected with it (not in the paper).
 
     Returns
     -------
     (K + 1, m, 2, 2) array
         The boxes after each step (index 0 is ``boxes0``). Robots are contracted in order,
         each with the others' latest boxes (every contraction is guaranteed, so the order
-        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box (the
-        measurements are inconsistent with E⁻, E⁺ and the odometry).
+        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box, or if a
+        box misses ``region`` (the measurements are inconsistent with E⁻, E⁺, the odometry
+        and the region).
     """
     b = as_boxes(boxes0, "boxes0", volume=True)
     m = len(b)
     if m == 0:
         raise ValueError("boxes0 is empty: tracking needs at least one robot")
     env, eps, max_depth = _check_env(env), _check_eps(eps), _check_depth(max_depth)
+    passes = _check_passes(passes)
+    room = None if region is None else as_boxes([region], "region")[0]
     th = np.asarray(headings, dtype=float)
     if th.ndim != 2 or th.shape[1] != m:
         raise ValueError(f"headings must have shape (K, {m}), got {th.shape}")
@@ -317,12 +338,20 @@ def track(
     out[0] = b
     for k in range(steps):
         cur = odometry(out[k], dist[k], th[k], heading_error)
-        for i in range(m):
-            if m > 1:
+        if room is not None:
+            cur[..., 0] = np.maximum(cur[..., 0], room[:, 0])
+            cur[..., 1] = np.minimum(cur[..., 1], room[:, 1])
+            if np.any(cur[..., 0] > cur[..., 1]):
+                raise ValueError(f"step {k}: a robot's box misses region")
+        for _ in range(passes if m > 1 else 0):
+            before = cur.copy()
+            for i in range(m):
                 box = _luvia(i, vis[k, i], cur, env, eps, max_depth)
                 if box is None:
                     raise ValueError(f"step {k}: every position of robot {i} is refuted")
                 cur[i] = box
+            if np.array_equal(before, cur):
+                break
         out[k + 1] = cur
     return out
 
