@@ -267,11 +267,12 @@ def _factor_rows(factor_runs: dict) -> tuple[list[tuple], dict]:
         stats[name] = {**s, "ratio": float(ratio)}
         rows.append(
             (name, s["n"], f"{s['median']:.3g}", f"{s['q1']:.3g} – {s['q3']:.3g}",
-             f"{s['efficient']:.0%}", f"{ratio:.3g}", s["lost"], f"{s['cpu']:.1f}")
+             f"{s['efficient']:.0%}", f"{s['drift_free']:.0%}", f"{ratio:.3g}", s["lost"],
+             f"{s['cpu']:.1f}")
         )  # fmt: skip
     headers = ("factor (7 robots, 6 obstacles)", "runs", "final area median (m²)", "quartiles",
-               "efficient runs", "median ratio to baseline (same seed)", "truth lost",
-               "CPU s / run")  # fmt: skip
+               "efficient runs", "drift-free runs", "median ratio to baseline (same seed)",
+               "truth lost", "CPU s / run")  # fmt: skip
     return [headers, rows], stats
 
 
