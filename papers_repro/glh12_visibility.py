@@ -201,7 +201,7 @@ def _factor_figure(groups: dict, title: str, out_dir: Path) -> Path:
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.5))
     names = list(groups)
-    ax.boxplot([[r["final_area"] for r in groups[k]] for k in names], vert=False)
+    ax.boxplot([[r["final_area"] for r in groups[k]] for k in names], orientation="horizontal")
     ax.set_yticks(range(1, len(names) + 1), names, fontsize=7)
     ax.axvline(verdicts.EFFICIENT, color="k", lw=0.8, ls="--")
     ax.set_xscale("log")
