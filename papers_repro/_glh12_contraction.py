@@ -6,9 +6,10 @@ boxes of that step are the input, and for every robot:
 - ``odometry``: the area of its box before contraction;
 - ``luvia``: the area of the hull [GLH12, Algorithm 2] returns (``eps``, ``max_depth`` of the
   sweeps), every other robot's box as it is;
-- ``exact_lo`` / ``exact_hi``: the hull of the exact consistent set S_i of
-  :mod:`optbound.localization.visibility_paving`, bracketed by the hull of its inner boxes and
-  of its inner and boundary boxes; no contraction from this step's data alone can beat it;
+- ``exact_lo`` / ``exact_hi``: the hull of the exact consistent set S_i
+  (:func:`optbound.localization.visibility.exact_paving`), bracketed by the hull of its inner
+  boxes and of its inner and boundary boxes; no contraction from this step's data alone can
+  beat it;
 - ``set_hi``: the area of S_i's outer paving (below the hull when S_i is not a box).
 
 Per step, the whole team is also contracted once (one sweep) and to a fixpoint (sweeps until
@@ -19,8 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.localization.visibility import luvia, odometry, track
-from optbound.localization.visibility_paving import consistent_paving
+from optbound.localization.visibility import exact_paving, luvia, odometry, track
 from optbound.scenarios import arena
 
 FIXPOINT_PASSES = 50  # a cap never reached in our runs: sweeps stop when nothing changes
@@ -72,7 +72,7 @@ def study(params: dict, seed: int, at: list[int], paving_eps: float, split: int)
         for i in range(params["robots"]):
             y = run.visibility[k, i]
             hull = luvia(i, y, cur, run.env, eps, max_depth=depth)
-            paving = consistent_paving(i, y, cur, run.env, paving_eps, split=split)
+            paving = exact_paving(i, y, cur, run.env, paving_eps, split=split)
             rows.append(
                 {
                     "seed": seed,

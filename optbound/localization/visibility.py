@@ -8,7 +8,8 @@ Algorithm 3). A "visible" measurement is confronted with the inner characterizat
 when it contains no position consistent with the true environment E (:func:`luvia`,
 Algorithm 2). :func:`track` (Algorithm 1) alternates interval odometry with a compass and
 LUVIA for every robot. :func:`measure` is the noise-free measurement: the true visibility
-matrix of robots at given points.
+matrix of robots at given points. :func:`exact_paving` paves the exact set one LUVIA step
+contracts towards, the yardstick of how much a step could contract.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.interval import Interval, Tri, tri_not
+from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import (
     as_polygons,
@@ -388,8 +389,82 @@ def measure(points, obstacles) -> np.ndarray:
     return y
 
 
+def _cells(box: np.ndarray, split: int) -> np.ndarray:
+    """``box`` cut into a ``split`` x ``split`` grid of (split², 2, 2) cells covering it."""
+    xs = np.linspace(box[0, 0], box[0, 1], split + 1)
+    ys = np.linspace(box[1, 0], box[1, 1], split + 1)
+    xs[[0, -1]], ys[[0, -1]] = box[0], box[1]  # the grid covers the box exactly
+    gx, gy = np.meshgrid(np.arange(split), np.arange(split), indexing="ij")
+    gx, gy = gx.ravel(), gy.ravel()
+    return np.stack(
+        [np.stack([xs[gx], xs[gx + 1]], -1), np.stack([ys[gy], ys[gy + 1]], -1)], axis=1
+    )
+
+
+def exact_paving(robot: int, y, boxes, env: Environment, eps: float, *, split: int = 8) -> Paving:
+    """Pave the positions of ``robot`` consistent with one step's measurements and boxes.
+
+    The set LUVIA contracts towards, with one witness per measurement (the robots l are
+    distinct) and E⁻ for "visible", E⁺ for "not visible" [GLH12, Props. 15-16]:
+
+        S_i = {x ∈ [x_i] : for every l ≠ i there is an x_l ∈ [x_l] with
+               Seg(x, x_l) ∩ E⁻ = ∅ if y_il, Seg(x, x_l) ∩ E⁺ ≠ ∅ if not}.
+
+    Algorithm 2 bisects ``[x_i]`` only and tests each sub-box against the whole ``[x_l]``;
+    here each ``[x_l]`` is also cut into ``split`` x ``split`` cells, so a box is refuted when
+    every cell is (no witness anywhere) and proven inner when one cell witnesses all its
+    points. The hull of the inner boxes and that of the inner and boundary boxes bracket the
+    hull of S_i: the best any contraction from this step's data alone can return.
+
+    Parameters
+    ----------
+    robot, y, boxes, env
+        As for :func:`optbound.localization.visibility.luvia` (``y[robot]`` is ignored).
+    eps
+        Boxes whose widest side is at most ``eps`` (metres) are not bisected further.
+    split
+        Each other robot's box is cut into ``split`` x ``split`` cells (1: Algorithm 2's test).
+
+    Returns
+    -------
+    Paving
+        ``inner ⊂ S_i ⊂ inner ∪ boundary`` within ``boxes[robot]``.
+    """
+    b = as_boxes(boxes, "boxes", volume=True)
+    m = len(b)
+    if isinstance(robot, bool) or not isinstance(robot, int | np.integer) or not 0 <= robot < m:
+        raise ValueError(f"robot must be an index in [0, {m}), got {robot!r}")
+    y, env = _check_measurements(y, m), _check_env(env)
+    if isinstance(split, bool) or not isinstance(split, int) or split < 1:
+        raise ValueError(f"split must be a positive integer, got {split!r}")
+    inner, outer = as_polygons(env.inner), as_polygons(env.outer)
+    others = [(_cells(b[j], split), inner if y[j] else outer, bool(y[j])) for j in range(m)]
+    others = [o for j, o in enumerate(others) if j != robot]
+
+    def test(x, yy) -> np.ndarray:
+        n = len(x.lo)
+        xbox = np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+        proven = np.ones(n, dtype=bool)
+        refuted = np.zeros(n, dtype=bool)
+        for cells, polygons, visible in others:
+            c = len(cells)
+            meets = segments_meet_polygons(
+                np.repeat(xbox, c, axis=0), np.tile(cells, (n, 1, 1)), polygons
+            ).reshape(n, c)
+            good, bad = (Tri.FALSE, Tri.TRUE) if visible else (Tri.TRUE, Tri.FALSE)
+            proven &= np.any(meets == good, axis=1)
+            refuted |= np.all(meets == bad, axis=1)
+        out = np.full(n, Tri.UNKNOWN, dtype=np.int8)
+        out[proven] = Tri.TRUE
+        out[refuted] = Tri.FALSE
+        return out
+
+    return pave(test, b[robot], eps)
+
+
 __all__ = [
     "MAX_DEPTH",
+    "exact_paving",
     "luvia",
     "measure",
     "odometry",

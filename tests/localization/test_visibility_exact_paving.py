@@ -5,7 +5,6 @@ import pytest
 
 from optbound.localization import visibility as v
 from optbound.localization.environment import Environment
-from optbound.localization.visibility_paving import consistent_paving
 from tests.localization import exact_visibility as ex
 
 POLYS = [
@@ -41,7 +40,7 @@ def test_truth_kept_inner_inside_luvia_and_outside_refuted_exactly():
     for _ in range(6):
         truth, boxes, y = _instance(rng)
         for i in range(len(truth)):
-            p = consistent_paving(i, y[i], boxes, ENV, 0.1, split=4)
+            p = v.exact_paving(i, y[i], boxes, ENV, 0.1, split=4)
             outer = p.outer()
             assert np.any(np.all((outer[:, :, 0] <= truth[i]) & (truth[i] <= outer[:, :, 1]), 1))
             hull = v.luvia(i, y[i], boxes, ENV, 0.01)  # contains S_i, hence every inner box
@@ -71,8 +70,8 @@ def test_finer_splits_refute_no_less():
     truth, boxes, y = _instance(rng, half=0.9)
     shrank = 0
     for i in range(len(truth)):
-        one = consistent_paving(i, y[i], boxes, ENV, 0.1, split=1).outer()
-        fine = consistent_paving(i, y[i], boxes, ENV, 0.1, split=6).outer()
+        one = v.exact_paving(i, y[i], boxes, ENV, 0.1, split=1).outer()
+        fine = v.exact_paving(i, y[i], boxes, ENV, 0.1, split=6).outer()
         for box in fine:
             assert np.any(np.all((one[:, :, 0] <= box[:, 0]) & (box[:, 1] <= one[:, :, 1]), 1))
         shrank += len(fine) < len(one)
@@ -83,7 +82,7 @@ def test_finer_splits_refute_no_less():
     ("kwargs", "error", "match"),
     [
         ({"robot": 5}, ValueError, "robot"),
-        ({"y": np.ones(2, dtype=bool)}, ValueError, "y must be"),
+        ({"y": np.ones(2, dtype=bool)}, ValueError, "one entry per robot"),
         ({"env": None}, TypeError, "Environment"),
         ({"split": 0}, ValueError, "split"),
     ],
@@ -92,7 +91,7 @@ def test_bad_input(kwargs, error, match):
     _, boxes, y = _instance(np.random.default_rng(0), m=3)
     args = {"robot": 0, "y": y[0], "boxes": boxes, "env": ENV, "eps": 0.1, **kwargs}
     with pytest.raises(error, match=match):
-        consistent_paving(
+        v.exact_paving(
             args.pop("robot"),
             args.pop("y"),
             args.pop("boxes"),
