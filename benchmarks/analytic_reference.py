@@ -1,59 +1,50 @@
-"""Plain numba reference kernels for the speed benchmark: the same formulas, nothing else.
+"""The plain formulas of ``optbound.analytic.reference``, compiled, as the speed baseline.
 
 No validation, no certified error bounds, no margin, no output checks: what the analytic core
 would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
 reports our kernels' time as a ratio to these, measured in the same run (same threads).
-They are compiled with the same options as ours (``error_model="numpy"``: no zero-division
-branch per division). The strip reference runs one instance per loop iteration (LLVM does not
-vectorize across instances there; ours are laid out so that it does, see
-``optbound.analytic._lanes``); the Minkowski reference shares our lane-parallel p solver.
+The reference functions are compiled unchanged, with the same options as our kernels
+(``error_model="numpy"``: no zero-division branch per division). The strip reference runs one
+instance per loop iteration (LLVM does not vectorize across instances there; ours are laid out
+so that it does, see ``optbound.analytic._kernels.lanes``); the Minkowski reference shares our
+lane-parallel p solver and evaluates the member with the plain formula.
 """
 
 from __future__ import annotations
 
 from functools import partial
+from types import FunctionType
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
-from optbound.analytic._lanes import W, cholesky_lanes, load_matrices, store_matrices
-from optbound.analytic._minkowski_kernel import block_work, p_volume_lanes
-from optbound.analytic._spin import post_slices
-from optbound.analytic._strip_lambda import lam_volume
-from optbound.analytic._threads import run_sliced
+from optbound.analytic import reference
+from optbound.analytic._kernels import strip_kernel, threads
+from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
+from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
+from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
-
-@njit(cache=True, error_model="numpy", nogil=True)
-def strip_one(c, C, a, b, out_c, out_C, w):
-    """Clipped strip, volume lambda [HS96, eqs. (24), (26)], as in the float formula; ``w``
-    (n,) is scratch (allocated once per slice, not per instance)."""
-    n = c.shape[0]
-    G = 0.0
-    ac = 0.0
-    for i in range(n):
-        s = 0.0
-        for j in range(n):
-            s += C[i, j] * a[j]
-        w[i] = s
-        G += a[i] * s
-        ac += a[i] * c[i]
-    g = np.sqrt(G)
-    lo = max(b - ac - 1.0, -g)
-    hi = min(b - ac + 1.0, g)
-    half = max(0.5 * (hi - lo), 1e-6 * g)
-    eps = 0.5 * (lo + hi) / half
-    Gs = G / (half * half)
-    lam = lam_volume(Gs, eps, n)
-    u = 1.0 + lam * Gs
-    K = 1.0 + lam - lam * eps * eps / u
-    gam = lam / u / (half * half)
-    for i in range(n):
-        out_c[i] = c[i] + gam * half * eps * w[i]
-        for j in range(n):
-            out_C[i, j] = K * (C[i, j] - gam * w[i] * w[j])
+# Not cached on disk: numba would not notice an edit of the reference or of a kernel they call
+# (``optbound._jit_cache`` covers the package's own kernels only); compiling these takes seconds.
+_OPTIONS = {"error_model": "numpy", "nogil": True}
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
+def _compiled(function, **callees):
+    """A reference function compiled unchanged, its calls of other reference functions bound
+    to their compiled versions ``callees`` (a compiled function calls only compiled ones)."""
+    bound = FunctionType(function.__code__, {**function.__globals__, **callees}, function.__name__)
+    return njit(**_OPTIONS)(bound)
+
+
+minkowski_member = _compiled(reference.minkowski_member)
+strip_one = _compiled(
+    reference.intersect_strip_volume,
+    strip_lam_volume=_compiled(reference.strip_lam_volume),
+    strip_member=_compiled(reference.strip_member),
+)
+
+
+@njit(**_OPTIONS, _nrt=False)
 def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
     """The batch loop, with views without reference counting (as ours), so that the ratio
     compares the work per instance only."""
@@ -61,23 +52,20 @@ def _strip_loop(c, C, a, b, out_c, out_C, w, start, stop):
         strip_one(c[i], C[i], a[i], b[i], out_c[i], out_C[i], w)
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
-def strip_range(c, C, a, b, out_c, out_C, start, stop, posts):
-    """The batch loop on ``start..stop`` (``posts`` as in ``optbound.analytic._threads``)."""
-    post_slices(posts)
+@njit(**_OPTIONS)
+def strip_range(c, C, a, b, out_c, out_C, start, stop):
+    """The batch loop on ``start..stop`` (a slice of ``analytic._kernels.threads``)."""
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
-def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop, posts):
+@njit(**_OPTIONS)
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
-    same blocks of W lanes and work space (``optbound.analytic._minkowski_kernel.sum_range``),
-    so that the ratio compares the per-instance work only: Cholesky factors, p, the float
-    member."""
-    post_slices(posts)
-    n = c1.shape[1]
-    mats, vecs, rows, _, _ = block_work(n, min(W, stop - start))
-    C1s, C2s, L1, L2, S = mats[0], mats[1], mats[2], mats[3], mats[4]
+    same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
+    so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
+    member ``reference.minkowski_member``."""
+    mats, vecs, rows, _, _ = block_work(c1.shape[1], min(W, stop - start))
+    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
@@ -88,14 +76,9 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop, posts):
         for k in range(m):
             act[k] = 1.0
         p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs[:3], rows[3:])
-        for i in range(n):
-            for j in range(n):
-                for k in range(m):
-                    S[i, j, k] = (1.0 + p[k]) * (C1s[i, j, k] / p[k] + C2s[i, j, k])
-        store_matrices(S, m, out_C[base:])
         for k in range(m):
-            for i in range(n):
-                out_c[base + k, i] = c1[base + k, i] + c2[base + k, i]
+            i = base + k
+            minkowski_member(c1[i], C1[i], c2[i], C2[i], p[k], out_c[i], out_C[i])
 
 
 def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
@@ -111,3 +94,72 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
     out_c, out_C = np.empty(c1.shape), np.empty(C1.shape)
     run_sliced(partial(minkowski_range, c1, C1, c2, C2, out_c, out_C), len(c1))
     return out_c, out_C
+
+
+# ---------------------------------------------------------------- threading schemes compared
+# Our certified strip kernel (volume criterion, clipped) on the same slices, handed to the
+# threads two ways; ``benchmarks.speed_analytic.threading_timings`` times them interleaved.
+# The Python-side validation of ``intersect_strip_batch`` is left out of both alike.
+
+
+def _strip_outputs(n_batch: int, n: int) -> tuple:
+    return ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+
+
+_NO_LAM, _NO_IDX = np.zeros(1), np.zeros(0, np.int64)
+
+
+def strip_sliced(c, C, a, b) -> tuple:
+    """The strip kernel on ``threads.run_sliced`` (a thread pool, the library's scheme)."""
+    out = _strip_outputs(*c.shape)
+
+    def call(start, stop):
+        ws = threads.workspace(strip_kernel.workspace, c.shape[1])
+        return strip_kernel.fuse_range(c, C, a, b, False, True, strip_kernel.VOLUME, _NO_LAM,
+                                       _NO_IDX, 10.0, 0.5, out, ws, start, stop)  # fmt: skip
+
+    run_sliced(call, len(c))
+    return out
+
+
+@njit(**_OPTIONS, parallel=True)
+def _fuse_prange(c, C, a, b, lam, idx, out, ws, slices):
+    """The strip kernel on ``slices`` contiguous slices under numba's ``prange`` (one
+    iteration per thread of numba's threading layer), each with its own workspace."""
+    n_batch = c.shape[0]
+    for s in prange(slices):
+        own = (ws[0][s], ws[1][s], ws[2][s], ws[3][s], ws[4][s], ws[5][s], ws[6][s], ws[7][s])
+        start, stop = s * n_batch // slices, (s + 1) * n_batch // slices
+        strip_kernel.fuse_range(
+            c,
+            C,
+            a,
+            b,
+            False,
+            True,
+            strip_kernel.VOLUME,
+            lam,
+            idx,
+            10.0,
+            0.5,
+            out,
+            own,
+            start,
+            stop,
+        )
+
+
+_STACKED: dict = {}
+
+
+def strip_prange(c, C, a, b) -> tuple:
+    """The same slices under numba's ``prange`` (workspaces made once per dimension, as
+    ``threads.workspace``)."""
+    out = _strip_outputs(*c.shape)
+    n = c.shape[1]
+    slices = max(1, min(threads.cores(), len(c) // threads.MIN_SLICE))
+    if n not in _STACKED:
+        per_slice = [strip_kernel.workspace(n) for _ in range(threads.cores())]
+        _STACKED[n] = tuple(np.stack(parts) for parts in zip(*per_slice, strict=True))
+    _fuse_prange(c, C, a, b, _NO_LAM, _NO_IDX, out, _STACKED[n], slices)
+    return out

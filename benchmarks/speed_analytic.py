@@ -78,22 +78,29 @@ def batch_instances(rng: np.random.Generator, count: int, dim: int, cond: float 
     return centers, shapes, a * scale[:, None], b * scale
 
 
-def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
-    t_ours, t_ref = [], []
+def interleaved(*fns, repeat: int = REPEATS) -> list[float]:
+    """Median seconds of each ``fn()``, the functions called in turn ``repeat`` times."""
+    times = [[] for _ in fns]
     for _ in range(repeat):
-        for fn, out in ((ours, t_ours), (reference, t_ref)):
+        for fn, out in zip(fns, times, strict=True):
             start = time.perf_counter()
             fn()
             out.append(time.perf_counter() - start)
-    return float(np.median(t_ours)), float(np.median(t_ref))
+    return [float(np.median(t)) for t in times]
 
 
-def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """As :func:`alternating`, each sample the mean over back-to-back calls filling >= 20 ms
-    (results dropped at once): a sustained rate, not the latency of one call after idling."""
+def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
+    t_ours, t_ref = interleaved(ours, reference, repeat=repeat)
+    return t_ours, t_ref
+
+
+def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
+    """As :func:`interleaved`, each sample the mean over back-to-back calls filling >= 20 ms
+    (results dropped at once; the number of calls set by the first function): a sustained
+    rate, not the latency of one call after idling."""
     number = 1
-    while per_call(ours, repeat=1, min_time=0.0) * number < 0.02:
+    while per_call(fns[0], repeat=1, min_time=0.0) * number < 0.02:
         number *= 2
 
     def looped(fn):
@@ -103,8 +110,34 @@ def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, fl
 
         return run
 
-    t_ours, t_ref = alternating(looped(ours), looped(reference), repeat)
-    return t_ours / number, t_ref / number
+    return [t / number for t in interleaved(*map(looped, fns), repeat=repeat)]
+
+
+def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+    """:func:`interleaved_calls` of ours and the reference."""
+    t_ours, t_ref = interleaved_calls(ours, reference, repeat=repeat)
+    return t_ours, t_ref
+
+
+def threading_timings(rng: np.random.Generator, batches, rounds: int = 3 * REPEATS) -> list:
+    """Our strip kernel (3-D, volume) with the batch handed to the cores two ways: the thread
+    pool of ``analytic._kernels.threads.run_sliced`` (the library's) and numba's ``prange``
+    (the threading layer is numba's choice or ``NUMBA_THREADING_LAYER``). Each round times
+    both interleaved (one :func:`interleaved_calls` sample each), so the load of a shared
+    machine hits them alike; rows (B, pool rate [updates/s], median over rounds of prange /
+    pool time). Both schemes' outputs are checked bitwise equal first."""
+    from benchmarks import analytic_reference as ref
+
+    c, C, a, b = batch_instances(rng, max(batches), DIM)
+    rows = []
+    for count in batches:
+        args = tuple(x[:count] for x in (c, C, a, b))
+        pool, par = ref.strip_sliced(*args), ref.strip_prange(*args)
+        assert all(np.array_equal(x, y) for x, y in zip(pool, par, strict=True))
+        calls = (partial(ref.strip_sliced, *args), partial(ref.strip_prange, *args))
+        times = np.array([interleaved_calls(*calls, repeat=1) for _ in range(rounds)])
+        rows.append((count, count / np.median(times[:, 0]), np.median(times[:, 1] / times[:, 0])))
+    return rows
 
 
 def _ratio_records(what: str, count: int, ours: float, ref: float) -> list[dict]:
@@ -143,14 +176,13 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
-    from optbound.analytic._threads import NO_POSTS
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.intersect_strip(E, S),
-        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1, NO_POSTS),
+        lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
     )
     return _timings(one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches)
 
@@ -159,7 +191,6 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
     from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
-    from optbound.analytic._threads import NO_POSTS
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
@@ -167,7 +198,7 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     oc, oC = np.empty((1, DIM)), np.empty((1, DIM, DIM))
     one = (
         lambda: analytic.minkowski_sum(E1, E2),
-        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1, NO_POSTS),
+        lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
     )
     inputs = (c1, C1, c2, C2)
     return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches)
@@ -277,7 +308,7 @@ U = 2.0**-53
 
 
 def margin_distribution(seed: int = 0, count: int = 10**4) -> list[tuple]:
-    """Certified margins (relative inflation, see ``optbound.analytic._midrad``) over random
+    """Certified margins (relative inflation, see ``optbound.analytic._kernels.midrad``) over random
     3-D instances per input condition number, next to the output's condition number: storing
     a shape S in floats already costs about ``U cond(S)`` in its thin direction, the floor of
     any certified margin on a float matrix. Rows as in :func:`_margin_row`."""
@@ -345,8 +376,24 @@ def main(argv=None) -> None:
     parser.add_argument(
         "--phases", action="store_true", help="only the strip rate at B = 1e3 over 20 s"
     )
+    parser.add_argument(
+        "--threads",
+        action="store_true",
+        help="only the thread pool vs numba prange (strip, B = 1e3, 1e4, 1e5)",
+    )
     args = parser.parse_args(argv)
     rng = np.random.default_rng(args.seed)
+    if args.threads:
+        import numba
+
+        layer = os.environ.get("NUMBA_THREADING_LAYER", "default")
+        print(f"strip kernel, {DIM}-D, volume; median of per-round time ratios (layer: {layer})")
+        print("| B | thread pool (run_sliced) | prange / pool |")
+        print("|---|---|---|")
+        for count, rate, ratio in threading_timings(rng, BATCHES["quick"]):
+            print(f"| {count:.0e} | {rate / 1e6:.2f} M/s | {ratio:.2f} |")
+        print(f"(prange ran on numba's {numba.threading_layer()} layer)")
+        return
     if args.phases:
         print("t (s) | strip, B = 1e3, ours | reference")
         for t, ours, ref in phases(rng):

@@ -2,7 +2,7 @@
 
 ``@njit(cache=True)`` invalidates a cached function only when the file that defines it changes,
 not when a jitted function it calls in *another* file changes: the analytic kernels inline
-``analytic._midrad`` and ``sets._domain``, the polygon predicates inline
+``analytic._kernels.midrad`` and ``sets._domain``, the polygon predicates inline
 ``interval._compiled``, and they would silently run stale machine code after an edit of those.
 Before any kernel is loaded (this runs first in ``optbound/__init__.py``), one hash of every
 kernel source is compared with a stamp kept next to the caches; when it differs, every cached

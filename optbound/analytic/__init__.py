@@ -5,6 +5,11 @@ Every function returns a guaranteed outer bound: each member of the families use
 kappa family [HS96, eq. (14)], the strip family [HS96, eq. (24)], the bounding-ellipsoid filter
 [BH, eq. (7)]) contains the true set; the criteria only choose the member. Batched variants take
 a leading batch axis and are fully vectorized.
+
+The formulas are also written plainly, one instance and no certification, in
+:mod:`optbound.analytic.reference` (the tests' oracle); the compiled kernels that evaluate them
+fast and certified are fenced in the private package ``optbound.analytic._kernels``, whose
+docstring states the rules a kernel follows.
 """
 
 from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse

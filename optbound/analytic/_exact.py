@@ -3,7 +3,7 @@
 Used where speed does not matter and the formula involves a matrix inverse (the m-row
 bounding update [BH, eq. (7)]): every float input is read as the exact rational it is, the
 member is computed in ``fractions.Fraction`` without any rounding, and only the final rounding
-to floats is bounded and absorbed by ``_midrad.inflate``.
+to floats is bounded and absorbed by ``midrad.inflate``.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from optbound.analytic._midrad import inflate
+from optbound.analytic._kernels.midrad import inflate
 from optbound.sets._domain import check_ellipsoid
 from optbound.sets.ellipsoid import Ellipsoid
 

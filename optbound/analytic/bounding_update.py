@@ -148,7 +148,7 @@ def bounding_update(
         Guarantee: ``ellipsoid``, its floats read as exact numbers, contains the feasible set
         exactly. The member at the chosen (float) lambda is evaluated in exact rational
         arithmetic, rounded, and inflated by the certified margin of
-        ``optbound.analytic._midrad``. ``ellipsoid`` is None only when the feasible set is
+        ``optbound.analytic._kernels.midrad``. ``ellipsoid`` is None only when the feasible set is
         proven empty (s(lambda) < 0 exactly for some lambda). If s(lambda) = 0 (the set is at
         most one point) or the member leaves the supported domain, lambda = 0 is used: E
         itself, always a valid outer bound.

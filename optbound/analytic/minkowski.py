@@ -7,7 +7,7 @@ For any kappa in (0, 1), the ellipsoid with centre ``c1 + c2`` and shape
   of ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
   ``C1 v = l C2 v``), which is increasing in p and bracketed by ``[sqrt(min l), sqrt(max l)]``;
   solved by safeguarded Newton on a tridiagonal standard form, polished on ``C1 + p C2``
-  (``optbound.analytic._minkowski_kernel``). For two summands this member is the
+  (``optbound.analytic._kernels.minkowski_kernel``). For two summands this member is the
   minimum-volume ellipsoid among all outer ellipsoids (Durieu, Walter & Polyak 2001).
 - ``"trace"``: ``kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2))`` (closed form).
 - ``"size_xy_psi"``: the root of the cubic [HS96, eqs. (15)-(17)] for the size measure
@@ -21,8 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from optbound.analytic import _batch
-from optbound.analytic._minkowski_kernel import (
+from optbound.analytic._kernels import batch as _batch
+from optbound.analytic._kernels.minkowski_kernel import (
     BAD_KAPPA,
     OUT_OF_DOMAIN,
     P_GIVEN,
@@ -31,7 +31,7 @@ from optbound.analytic._minkowski_kernel import (
     P_XY_PSI,
     sum_range,
 )
-from optbound.analytic._threads import NO_POSTS, ellipsoid_outputs, run_sliced
+from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import check_ellipsoid, raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -142,7 +142,7 @@ def minkowski_sum(
 
     Guarantee: the returned ellipsoid, its floats read as exact numbers, contains E1 + E2
     exactly (for every criterion and every kappa in (0, 1)): the member is evaluated with
-    certified error bounds and inflated by a certified margin (``optbound.analytic._midrad``);
+    certified error bounds and inflated by a certified margin (``analytic._kernels.midrad``);
     near-degenerate results are widened to the output domain (``optbound.sets._domain``).
 
     Parameters
@@ -182,7 +182,7 @@ def minkowski_sum(
     # A batch of one through the batch kernel (bitwise the same results); an Ellipsoid's
     # arrays are read-only, as the batch passes its inputs.
     inputs = (E1.center[None], E1.shape[None], E2.center[None], E2.shape[None])
-    sum_range(*inputs, mode, p, planar, heading, out, 0, 1, NO_POSTS)
+    sum_range(*inputs, mode, p, planar, heading, out, 0, 1)
     (c,), (C,), (code,), (p_used,), (margin,) = out
     if code:
         _raise(int(code), 0, _NAMES_SINGLE, False)
@@ -226,8 +226,8 @@ def minkowski_sum_batch(
     out = ellipsoid_outputs(n_batch, n, np.int8, float, float)
     inputs = [_read_only(x) for x in (c1, C1, c2, C2)]  # the kernel's type (minkowski_sum)
 
-    def add(start: int, stop: int, posts: np.ndarray) -> int:
-        return sum_range(*inputs, mode, p, planar, heading, out, start, stop, posts)
+    def add(start: int, stop: int) -> int:
+        return sum_range(*inputs, mode, p, planar, heading, out, start, stop)
 
     out_c, out_C, code, p_used, margin = out
     bad = [i for i in run_sliced(add, n_batch) if i >= 0]

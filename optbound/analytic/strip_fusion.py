@@ -16,7 +16,7 @@ Conventions of this module (numerical decisions, all conservative):
 - Guarantee: the result's floats, read exactly, contain E ∩ S. The member is evaluated in the
   local frame of E's centre with certified error bounds (``eps = b - a^T c``, ``C a`` and
   each entry of the shape in twice the working precision, the centre in midpoint-radius
-  arithmetic) and inflated by a certified margin (``optbound.analytic._midrad``); ``margin``
+  arithmetic) and inflated by a certified margin (``optbound.analytic._kernels.midrad``); ``margin``
   reports it. It is about ``U cond(result)`` (each shape entry is rounded once; storing the
   result as floats alone costs that much in its thin direction). Near-degenerate
   results are widened to the output domain (``optbound.sets._domain``), never refused.
@@ -38,8 +38,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from optbound.analytic import _batch, _threads
-from optbound.analytic._strip_kernel import (
+from optbound.analytic._kernels import batch as _batch
+from optbound.analytic._kernels import threads as _threads
+from optbound.analytic._kernels.strip_kernel import (
     BAD_A,
     BAD_B,
     BAD_LAM,
@@ -56,7 +57,7 @@ from optbound.analytic._strip_kernel import (
     fuse_single,
     workspace,
 )
-from optbound.analytic._threads import ellipsoid_outputs, run_sliced
+from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 from optbound.sets import _validate as v
 from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
@@ -93,7 +94,7 @@ class StripFusion(BoundResult):
         Consistency measure [HS96, eq. (29)] in [0, 1]; 0 when inconsistent.
     margin : float
         Certified inflation of the float member, relative (``rho + mu / lambda_min``, see
-        ``optbound.analytic._midrad``); 0 when E itself is returned.
+        ``optbound.analytic._kernels.midrad``); 0 when E itself is returned.
     """
 
     set_attribute = "ellipsoid"
@@ -307,10 +308,10 @@ def intersect_strip_batch(
     steep, midp = _check_robust(steepness, midpoint)
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
 
-    def fuse(start: int, stop: int, posts: np.ndarray) -> int:
+    def fuse(start: int, stop: int) -> int:
         ws = _threads.workspace(workspace, n)
         return fuse_range(c, C, a, b, halfspace, clip, mode, lams, idx, steep, midp, out, ws,
-                          start, stop, posts)  # fmt: skip
+                          start, stop)  # fmt: skip
 
     out_c, out_C, code, case, cons, lam_used, empty, margin = out
     bad = [i for i in run_sliced(fuse, n_batch) if i >= 0]

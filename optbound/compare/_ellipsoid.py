@@ -7,12 +7,16 @@ from optbound.sets import Ellipsoid
 from optbound.sets.result import BoundResult
 
 
+def bound_set(bound):
+    """The set of a result (``BoundResult.set``, else ``.ellipsoid``), or ``bound`` itself."""
+    if isinstance(bound, BoundResult):
+        return bound.set
+    return getattr(bound, "ellipsoid", bound)
+
+
 def as_ellipsoid(name: str, bound) -> Ellipsoid:
     """The ellipsoid of ``bound`` (an Ellipsoid, OuterResult, analytic result ...)."""
-    if isinstance(bound, BoundResult):
-        ellipsoid = bound.set
-    else:
-        ellipsoid = getattr(bound, "ellipsoid", bound)
+    ellipsoid = bound_set(bound)
     if not isinstance(ellipsoid, Ellipsoid):
         raise ValueError(f"{name} must be an Ellipsoid or carry one in .ellipsoid, got {bound!r}")
     return ellipsoid

@@ -1,29 +1,75 @@
 """Size ratios between two bounds of one set (``A`` relative to ``B``; > 1 means A is larger).
 
 Volumes are compared through log volumes, so the ratio stays accurate for very small or very
-large ellipsoids in high dimension.
+large ellipsoids in high dimension. ``volume_ratio`` and ``log_volume_ratio`` take any pair of
+sets with a size measure (:func:`~optbound.compare.size.size_bracket`): closed forms for
+ellipsoids and boxes, the midpoint of the certified bracket for paving-backed sets;
+``volume_ratio_bracket`` is the certified bracket itself.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from math import exp
+from math import exp, log
 
 import numpy as np
 
-from optbound.compare._ellipsoid import as_ellipsoid, same_dim
+from optbound.compare._ellipsoid import as_ellipsoid, bound_set, same_dim
+from optbound.compare.size import size_bracket
+from optbound.sets import Box, Ellipsoid
 
 
-def log_volume_ratio(A, B) -> float:
-    """``log(vol A / vol B)``."""
-    A, B = as_ellipsoid("A", A), as_ellipsoid("B", B)
-    same_dim(A, B)
-    return A.log_volume() - B.log_volume()
+def _sized(name: str, S, **paving):
+    """``S`` (or its ``.ellipsoid``) and its certified volume bracket."""
+    S = bound_set(S)
+    try:
+        return S, size_bracket(S, **paving)
+    except TypeError as err:
+        raise ValueError(f"{name} must be a set with a size measure: {err}") from None
 
 
-def volume_ratio(A, B) -> float:
-    """``vol A / vol B``."""
-    return exp(log_volume_ratio(A, B))
+def _dims_agree(A, B) -> None:
+    if A.dim != B.dim:
+        raise ValueError(f"the two bounds have different dimensions, {A.dim} and {B.dim}")
+
+
+def log_volume_ratio(A, B, *, eps: float | None = None, domain=None) -> float:
+    """``log(vol A / vol B)``: exact formula for ellipsoids and boxes, else the midpoint (in
+    log) of :func:`volume_ratio_bracket` (``eps``, ``domain``: its paving's parameters)."""
+    A, B = bound_set(A), bound_set(B)
+    closed = (Ellipsoid, Box)
+    if isinstance(A, closed) and isinstance(B, closed):
+        _dims_agree(A, B)
+        return A.log_volume() - B.log_volume()
+    lo, hi = volume_ratio_bracket(A, B, eps=eps, domain=domain)
+    return 0.5 * (log(lo) + log(hi))
+
+
+def volume_ratio(A, B, *, eps: float | None = None, domain=None) -> float:
+    """``vol A / vol B`` (see :func:`log_volume_ratio`)."""
+    return exp(log_volume_ratio(A, B, eps=eps, domain=domain))
+
+
+def volume_ratio_bracket(A, B, *, eps: float | None = None, domain=None) -> tuple[float, float]:
+    """Certified bracket ``[vol_lo A / vol_hi B, vol_hi A / vol_lo B]`` of ``vol A / vol B``.
+
+    Raises
+    ------
+    ValueError
+        If either set has no size measure or the dimensions differ.
+    """
+    A, (a_lo, a_hi) = _sized("A", A, eps=eps, domain=domain)
+    B, (b_lo, b_hi) = _sized("B", B, eps=eps, domain=domain)
+    _dims_agree(A, B)
+    return ratio_bracket((a_lo, a_hi), (b_lo, b_hi))
+
+
+def ratio_bracket(num: tuple[float, float], den: tuple[float, float]) -> tuple[float, float]:
+    """``[num_lo / den_hi, num_hi / den_lo]`` rounded outward (``inf`` for a zero denominator)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lo = num[0] / den[1] if den[1] > 0 else 0.0
+        hi = num[1] / den[0] if den[0] > 0 else np.inf
+    return float(np.nextafter(lo, 0.0)), float(np.nextafter(hi, np.inf))
 
 
 def trace_ratio(A, B) -> float:

@@ -70,9 +70,12 @@ class Environment:
         """E⁻ and E⁺ of an exact map of convex polygons, shrunk and grown by ``margin``.
 
         Each edge line is moved by ``margin`` (outward for E⁺, inward for E⁻) and consecutive
-        lines are intersected, so E⁺ contains every point within ``margin`` of E and E⁻ every
-        point at depth ``margin`` in E. An obstacle too thin to shrink is left out of E⁻
-        (E⁻ may be empty [GLH12, Fig. 2]). The inclusions are then checked exactly.
+        lines are intersected, so E⁺ contains every point within ``margin`` of E. E⁻ is the
+        erosion of E by a disc of radius ``margin`` (the intersection of the inward-moved
+        half-planes, edges that vanish dropped), so it contains every point at depth
+        ``margin`` in E. An obstacle whose erosion is empty, or too thin to certify inside E,
+        is left out of E⁻ (E⁻ may be empty [GLH12, Fig. 2]; a smaller inner set is the safe
+        side). The inclusions are then checked exactly.
 
         Raises ``ValueError`` for a non-positive or non-finite ``margin`` or a non-convex
         polygon.
@@ -80,7 +83,7 @@ class Environment:
         if not isinstance(margin, int | float) or not np.isfinite(margin) or margin <= 0:
             raise ValueError(f"margin must be a positive finite number, got {margin!r}")
         exact = [_counter_clockwise(p, j) for j, p in enumerate(as_polygons(polygons))]
-        inner = [q for q in (_offset(p, -float(margin)) for p in exact) if q is not None]
+        inner = [q for q in (_erode(p, float(margin)) for p in exact) if q is not None]
         return cls(inner, [_offset(p, float(margin)) for p in exact], exact)
 
 
@@ -99,21 +102,52 @@ def _counter_clockwise(poly: np.ndarray, j: int) -> np.ndarray:
     return poly
 
 
-def _offset(poly: np.ndarray, d: float) -> np.ndarray | None:
-    """Move each edge line of a counter-clockwise convex polygon by ``d`` (outward if > 0).
-
-    Returns None when the inward offset collapses (the result is not convex any more).
-    """
-    a, b = poly, np.roll(poly, -1, axis=0)
-    t = (b - a) / np.linalg.norm(b - a, axis=1)[:, None]
-    n = np.column_stack([t[:, 1], -t[:, 0]])  # outward normal of a CCW polygon
-    c = np.einsum("ij,ij->i", n, a) + d  # moved lines n . x = c
+def _offset(poly: np.ndarray, d: float) -> np.ndarray:
+    """Move each edge line of a counter-clockwise convex polygon outward by ``d`` > 0."""
+    n, c = _edge_lines(poly, d)
     n0, c0 = np.roll(n, 1, axis=0), np.roll(c, 1, axis=0)  # previous edge's line
     det = n0[:, 0] * n[:, 1] - n0[:, 1] * n[:, 0]
     x = (c0 * n[:, 1] - n0[:, 1] * c) / det
     y = (n0[:, 0] * c - c0 * n[:, 0]) / det
-    out = np.column_stack([x, y])
-    if d < 0 and not np.all(_cross(out) > 0):
+    return np.column_stack([x, y])
+
+
+def _edge_lines(poly: np.ndarray, d: float) -> tuple[np.ndarray, np.ndarray]:
+    """Unit outward normals ``n`` and offsets ``c`` of the edge lines n . x = c moved by ``d``."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    t = (b - a) / np.linalg.norm(b - a, axis=1)[:, None]
+    n = np.column_stack([t[:, 1], -t[:, 0]])  # outward normal of a CCW polygon
+    return n, np.einsum("ij,ij->i", n, a) + d
+
+
+def _erode(poly: np.ndarray, r: float) -> np.ndarray | None:
+    """The points at depth >= ``r`` in a counter-clockwise convex polygon, or None.
+
+    That set is the intersection of the half-planes n_i . x <= c_i - r. Each moved edge line
+    is clipped by all the other half-planes; an edge survives if a piece of positive length
+    is left, and the surviving edges' start points, in edge order, are the vertices. None when
+    nothing (or no polygon that is certainly inside ``poly``) is left: leaving an obstacle out
+    of the inner set E⁻ is the safe side.
+    """
+    n, c = _edge_lines(poly, -r)
+    t = np.column_stack([-n[:, 1], n[:, 0]])  # edge directions
+    p = poly - r * n  # a point on each moved line
+    slack = c[None, :] - p @ n.T  # slack[i, j]: constraint j at line i's point
+    rate = t @ n.T  # rate[i, j]: d(n_j . x)/ds along line i
+    np.fill_diagonal(rate, 0.0)
+    np.fill_diagonal(slack, 0.0)
+    if np.any((rate == 0) & (slack < 0)):
+        return None  # a parallel opposite side is nearer than 2 r
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bound = slack / rate
+    s_lo = np.max(np.where(rate < 0, bound, -np.inf), axis=1)
+    s_hi = np.min(np.where(rate > 0, bound, np.inf), axis=1)
+    scale = np.abs(poly).max() + r
+    keep = s_hi - s_lo > 1e-9 * scale
+    if np.count_nonzero(keep) < 3:
+        return None
+    out = p[keep] + s_lo[keep, None] * t[keep]
+    if not np.all(_cross(out) > 0) or not polygon_inside(out, poly):
         return None
     return out
 

@@ -22,7 +22,8 @@ Three functions, from cheapest to exact:
 
 - :func:`linear_position`: least squares on eq. (6), exact on noise-free data, not a bound;
 - :func:`linear_position_bound`: a guaranteed (x, y) box from eq. (6) with interval-valued
-  ``H`` and ``z`` (preconditioned interval Gauss-Seidel);
+  ``H`` and ``z`` over all landmark pairs (preconditioned 2 x 2 interval system: exact
+  regularity test, Cramer's rule, Gauss-Seidel);
 - :func:`pose_paving`: the guaranteed (x, y, psi) set by interval set inversion of the bearing
   equations (the error propagation [HS96, Sect. 3] leaves out of scope).
 
@@ -54,10 +55,14 @@ REFINE = 3
 # ----------------------------------------------------------------------------- validation
 def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
     """Validate an (N, 2) array of finite real landmark positions."""
-    if np.iscomplexobj(np.asarray(value)):
+    try:
+        arr = np.asarray(value)
+    except ValueError:  # ragged nested sequences
+        raise ValueError(f"{name} must be an (N, 2) array, got rows of different lengths") from None
+    if np.iscomplexobj(arr):
         raise ValueError(f"{name} must be real, got complex values")
     try:
-        arr = np.asarray(value, dtype=float)
+        arr = arr.astype(float)
     except (TypeError, ValueError) as err:
         raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
     arr = v.finite_matrix(name, arr, (None, 2))
@@ -226,45 +231,67 @@ def _boxed(L: np.ndarray, shapes: np.ndarray) -> tuple[Interval, Interval]:
     )
 
 
-def _eq5_terms(Lx: Interval, Ly: Interval, alphas: np.ndarray, delta: float):
-    """Interval ``A_i``, ``g_i`` of eq. (5) for bearing errors ``|d alpha| <= delta``."""
-    n = alphas.shape[0]
-    nxt = (np.arange(n) + 1) % n
+def _cot(gamma: Interval) -> Interval:
+    """Tight ``cot`` of intervals inside one branch ``(k pi, (k + 1) pi)`` (it decreases there)."""
+    at_hi, at_lo = (np.cos(Interval(e)) / np.sin(Interval(e)) for e in (gamma.hi, gamma.lo))
+    return Interval(at_hi.lo, at_lo.hi)
+
+
+def _pair_equations(Lx: Interval, Ly: Interval, alphas: np.ndarray, delta: float):
+    """Eq. (5) of every landmark pair whose bearing difference provably avoids multiples of pi.
+
+    Eq. (5) holds for any pair ``(i, j)`` with ``gamma = alpha_j - alpha_i`` (the circle
+    through ``L_i``, ``L_j`` and the robot), and it is symmetric in ``i``, ``j``; taking all
+    pairs ``i < j`` makes the system independent of the landmarks' order. Returns ``(c, u,
+    w, base, cross)`` per usable pair, with ``g = c u + w`` and ``A = base + c cross``, so each
+    interval ``c = cot(gamma)`` enters every later sum once.
+    """
+    i, j = np.triu_indices(alphas.shape[0], 1)
     err = Interval(-2.0 * delta, 2.0 * delta) if delta > 0.0 else Interval(0.0)
-    gamma = Interval(alphas[nxt]) - Interval(alphas) + err
+    gamma = Interval(alphas[j]) - Interval(alphas[i]) + err
     sin_g = np.sin(gamma)
-    if np.any((sin_g.lo <= 0.0) & (sin_g.hi >= 0.0)):
-        raise ValueError(
-            "two bearings are equal modulo pi within the error bound: cot(gamma) of "
-            "[HS96, eq. (5)] is unbounded, no finite bound exists"
-        )
-    cot = np.cos(gamma) / sin_g
-    xi, yi, xj, yj = Lx, Ly, Lx[nxt], Ly[nxt]
-    A = xi * xj + yi * yj + cot * (xj * yi - yj * xi)
-    gx = cot * (yi - yj) + xj + xi
-    gy = cot * (xj - xi) + yj + yi
-    return A, gx, gy
+    usable = (sin_g.lo > 0.0) | (sin_g.hi < 0.0)
+    c = _cot(gamma[usable])
+    finite = np.isfinite(c.lo) & np.isfinite(c.hi)  # sin at an end point may round to 0
+    i, j, c = i[usable][finite], j[usable][finite], c[finite]
+    xi, yi, xj, yj = Lx[i], Ly[i], Lx[j], Ly[j]
+    u, w = (yi - yj, xj - xi), (xi + xj, yi + yj)
+    return c, u, w, xi * xj + yi * yj, xj * yi - yj * xi
 
 
-def _dot(R_row: np.ndarray, items: Interval) -> Interval:
-    """``sum_i R_row[i] * items[i]`` in outward-rounded interval arithmetic."""
-    terms = Interval(R_row) * items
+def _weighted_sum(D: np.ndarray, items: Interval) -> Interval:
+    """``sum_k D[k] items[k]`` for interval weights ``D`` (each entry an Interval)."""
+    terms = D * items
     total = terms[0]
-    for i in range(1, R_row.shape[0]):
-        total = total + terms[i]
+    for k in range(1, terms.shape[0]):
+        total = total + terms[k]
     return total
+
+
+def _zero_sum_weights(D: np.ndarray) -> Interval:
+    """Enclosures of weights ``R_k - R_{k-1}`` (``R`` the cumulative sums of ``D``, ``R_{-1} =
+    R_{K-1} = 0``): exactly zero-sum, so they cancel the ``|p|^2`` of eq. (5), and close to
+    ``D``. Combining eq. (5) with them is combining the differences of eq. (6) with ``R``."""
+    R = np.cumsum(D)
+    R[-1] = 0.0
+    return Interval(R) - Interval(np.r_[0.0, R[:-1]])
 
 
 def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes=None) -> Box:
     """Guaranteed (x, y) box from eq. (6) with interval-valued ``H`` and ``z`` [HS96, Sect. 3].
 
-    Every entry of eq. (5) is evaluated in outward-rounded interval arithmetic over the
+    Every term of eq. (5) is evaluated in outward-rounded interval arithmetic over the
     bearing errors ``|d alpha_i| <= delta_alpha`` and the landmark errors (each ellipse
-    [HS96, eq. (2)] enclosed in its bounding box). The true position solves ``H~ p = z~`` for
-    the true (unknown) ``H~ in [H]``, ``z~ in [z]``; with the midpoint pseudo-inverse ``R`` and
-    the midpoint solution ``p0``, ``q = p - p0`` solves ``(R H~) q = R (z~ - H~ p0)``, which is
-    enclosed by a preconditioned interval Gauss-Seidel iteration started from the box
-    ``|q| <= |b| / (1 - ||I - R H||)``.
+    [HS96, eq. (2)] enclosed in its bounding box), for every landmark pair whose bearing
+    difference provably avoids multiples of pi (so the order of the landmarks does not
+    matter), in coordinates centred on the landmarks. Eq. (5) is linear in ``(x, y, |p|^2)``;
+    the weighted least-squares inverse ``D`` of its midpoint (rows weighted by their interval
+    radius) is turned into exactly zero-sum weights, which cancel ``|p|^2`` as eq. (6) does.
+    With ``p0`` the midpoint solution, ``q = p - p0`` solves ``M q = b``, ``M = sum_k D_k
+    g_k^T``, ``b = sum_k D_k (A_k - g_k^T p0)``, where each ``cot(gamma_k)`` enters every entry
+    once (so the entries are tight). The 2 x 2 interval matrix ``M`` is regular iff its
+    determinant, evaluated with each entry once, excludes 0; ``q`` is then enclosed by
+    Cramer's rule and refined by interval Gauss-Seidel sweeps.
 
     Parameters
     ----------
@@ -279,55 +306,66 @@ def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes
     -------
     Box
         2-D box containing the true position (a guaranteed outer bound; it ignores the
-        correlations between entries of ``H`` and ``z``, so it is loose when errors are large
+        correlations between entries of ``M`` and ``b``, so it is loose when errors are large
         or the geometry is poor).
 
     Raises
     ------
     ValueError
-        Bad inputs, N < 3, an interval system that is not provably regular
-        (``||I - R [H]|| >= 1``: errors too large or the geometry near singular), or bearings
-        that no position fits within the bounds.
+        Bad inputs, N < 3, fewer than three landmark pairs whose bearings provably differ
+        from a multiple of pi, an interval matrix ``M`` that is not provably regular (errors
+        too large or the geometry near singular), or bearings that no position fits within
+        the bounds.
     """
     L = as_landmarks("landmarks", landmarks, min_count=3)
     a = as_angles("alphas", alphas, L.shape[0])
     delta = as_bound("delta_alpha", delta_alpha)
     shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
-    A, gx, gy = _eq5_terms(*_boxed(L, shapes), a, delta)
-    z, hx, hy = A[:-1] - A[1:], gx[:-1] - gx[1:], gy[:-1] - gy[1:]
-    Hc = np.column_stack([hx.midpoint(), hy.midpoint()])
-    p0 = np.linalg.lstsq(Hc, z.midpoint(), rcond=None)[0]
-    R = np.linalg.pinv(Hc)
-    resid = z - (hx * Interval(p0[0]) + hy * Interval(p0[1]))
-    b = [_dot(R[k], resid) for k in range(2)]
-    M = [[_dot(R[k], h) for h in (hx, hy)] for k in range(2)]
-    E = [[Interval(float(k == m)) - M[k][m] for m in range(2)] for k in range(2)]
-    norm = max(
-        float((abs(E[k][0]) + abs(E[k][1])).hi) for k in range(2)
-    )  # ||I - R [H]||_inf, rounded up
-    if not norm < 1.0:
+    mean = L.mean(axis=0)
+    Lx, Ly = _boxed(L, shapes)
+    c, u, w, base, cross = _pair_equations(Lx - mean[0], Ly - mean[1], a, delta)
+    if c.shape[0] < 3:
         raise ValueError(
-            "the interval system of [HS96, eq. (6)] is not provably regular "
-            f"(||I - R [H]|| = {norm:.3g} >= 1): the errors are too large for this geometry"
+            "fewer than three landmark pairs have bearings that provably differ from a multiple "
+            "of pi within the error bound: cot(gamma) of [HS96, eq. (5)] is unbounded, no "
+            "finite bound exists"
         )
-    mag_b = max(float(abs(b[k]).hi) for k in range(2))
-    beta = float((Interval(mag_b) / (Interval(1.0) - Interval(norm))).hi)
-    q = [Interval(-beta, beta), Interval(-beta, beta)]
+    g = [c * u[m] + w[m] for m in range(2)]
+    A = base + c * cross
+    # Weighted least squares on eq. (5) as linear in (x, y, |p|^2): rows scaled by 1 / radius.
+    radius = 0.5 * (A.width() + np.abs(L - mean).max() * (g[0].width() + g[1].width()))
+    scale = 1.0 / (radius + np.finfo(float).tiny)
+    lifted = np.column_stack([g[0].midpoint(), g[1].midpoint(), -np.ones(c.shape[0])])
+    D = (np.linalg.pinv(lifted * scale[:, None]) * scale)[:2]
+    p0 = D @ A.midpoint()
+    weights = [_zero_sum_weights(D[k]) for k in range(2)]
+    M = [[_weighted_sum(weights[k], g[m]) for m in range(2)] for k in range(2)]
+    rest = base - (w[0] * p0[0] + w[1] * p0[1]) + c * (cross - (u[0] * p0[0] + u[1] * p0[1]))
+    b = [_weighted_sum(weights[k], rest) for k in range(2)]
+    det = M[0][0] * M[1][1] - M[0][1] * M[1][0]
+    if not (det.lo > 0.0 or det.hi < 0.0):
+        raise ValueError(
+            "the interval system of [HS96, eq. (6)] is not provably regular (the determinant "
+            f"of the preconditioned 2 x 2 interval matrix spans [{det.lo:.3g}, {det.hi:.3g}]): "
+            "the errors are too large for this geometry"
+        )
+    q = [(b[0] * M[1][1] - M[0][1] * b[1]) / det, (M[0][0] * b[1] - M[1][0] * b[0]) / det]
     for _ in range(GAUSS_SEIDEL_SWEEPS):
         for k in range(2):
-            other = q[1 - k]
-            q[k] = intersection(q[k], (b[k] - M[k][1 - k] * other) / M[k][k])
-    # Each row must still admit the box: the true position satisfies every row of eq. (6).
+            if M[k][k].lo > 0.0 or M[k][k].hi < 0.0:
+                q[k] = intersection(q[k], (b[k] - M[k][1 - k] * q[1 - k]) / M[k][k])
+    # Every pair equation must still admit the box: the true position satisfies all of them.
     fits = not (bool(q[0].is_empty) or bool(q[1].is_empty))
     if fits:
         X, Y = Interval(p0[0]) + q[0], Interval(p0[1]) + q[1]
-        row = z - (hx * X + hy * Y)
+        row = g[0] * X + g[1] * Y - (X**2 + Y**2) - A
         fits = bool(np.all((row.lo <= 0.0) & (row.hi >= 0.0)))
     if not fits:
         raise ValueError(
             "the bearings are inconsistent with the error bounds: no position solves the "
             "interval system of [HS96, eq. (6)]"
         )
+    X, Y = X + mean[0], Y + mean[1]
     return Box(np.array([X.lo, Y.lo], dtype=float), np.array([X.hi, Y.hi], dtype=float))
 
 
@@ -471,6 +509,7 @@ def pose_paving(
     delta = as_bound("delta_alpha", delta_alpha)
     shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
     Lx, Ly = _boxed(L, shapes)
+    given = X0 is not None
     if X0 is None and prior is not None:
         X0 = prior.bounding_box()
     elif X0 is None:
@@ -483,6 +522,8 @@ def pose_paving(
         X0 = Box.from_array(X0)
     if X0.dim != 3 or not X0.is_bounded:
         raise ValueError(f"X0 must be a bounded 3-D box of (x, y, psi), got {X0}")
+    if given and not np.all(X0.widths > 0.0):
+        raise ValueError(f"X0 must have a positive width on every axis, got widths {X0.widths}")
     ks = _windows(X0.lo[2], X0.hi[2], a)
     test = [_bearing_test(L, shapes, a, delta, ks)]
     if prior is not None:

@@ -271,18 +271,31 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
     Order 1: one row ``w - |M|^2`` with the interval noise as a strip [BH, eq. (22)].
     Order 2: rows ``w - |M|^2`` and ``w^2 - |M|^4`` [BH, eqs. (24)-(26)] with the noise ellipse
     of the parabola arc ``eta([lo^2, hi^2])`` (``analytic.parabola_arc_ellipse``).
+
+    The arc's ellipse has axes of order ``r w0`` and ``r^2 / w0`` (``w0``, ``r``: midpoint and
+    half-width of ``[lo^2, hi^2]``), so its condition number grows like ``(w0 / r)^4``; for a
+    ring far larger than its thickness in the filter's frame (``|gamma_hat|`` near
+    ``pi - eps``, where circle 1 becomes a line, or a prior box small against the ring) it is
+    singular in float64. Such a ring contributes only its first row with the strip noise: the
+    same row as order 1, a valid and weaker constraint, so the bound stays guaranteed.
     """
     xm, ym = (ring.center - offset) / scale
     m2 = xm * xm + ym * ym
     s2 = scale * scale
     z_hat = ring.z_hat / s2
+    v_lo, v_hi = (b / s2 for b in ring.noise_interval())
+    strip = [z_hat - m2], [[(0.5 * (v_hi - v_lo)) ** 2]], [0.5 * (v_lo + v_hi)]
     if order == 1:
-        H = np.array([[-2.0 * xm, -2.0 * ym, 1.0, 1.0]])
-        v_lo, v_hi = (b / s2 for b in ring.noise_interval())
-        return H, [z_hat - m2], [[(0.5 * (v_hi - v_lo)) ** 2]], [0.5 * (v_lo + v_hi)]
+        return np.array([[-2.0 * xm, -2.0 * ym, 1.0, 1.0]]), *strip
+    first = [-2.0 * xm, -2.0 * ym, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]
+    arc = parabola_arc_ellipse(ring.lo**2 / s2, ring.hi**2 / s2)
+    try:
+        v.spd_matrix("V", arc.shape)
+    except ValueError:
+        return np.array([first]), *strip
     H = np.array(
         [
-            [-2.0 * xm, -2.0 * ym, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+            first,
             [
                 -4.0 * xm * m2,
                 -4.0 * ym * m2,
@@ -295,7 +308,6 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
             ],
         ]
     )
-    arc = parabola_arc_ellipse(ring.lo**2 / s2, ring.hi**2 / s2)
     eta_hat = np.array([z_hat, z_hat * z_hat])
     # z* = eta(z_hat) - [|M|^2, |M|^4]; v* = eta(z_hat) - eta(w) ranges over the reflected arc.
     return H, eta_hat - np.array([m2, m2 * m2]), arc.shape, eta_hat - arc.center
@@ -427,8 +439,15 @@ def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving)
 
     Boxes not proven inside at once (boundary boxes stick out of the exact set by up to their
     width) are bisected, and sub-boxes the exact tests prove disjoint from the set are dropped
-    (``PseudoEllipsoid.prove_covers``).
+    (``PseudoEllipsoid.prove_covers``). Raises ``TypeError`` naming an argument of another type.
     """
+    for name, value, kind in (
+        ("bound", bound, PseudoEllipsoid),
+        ("data", data, Measurements),
+        ("paving", paving, Paving),
+    ):
+        if not isinstance(value, kind):
+            raise TypeError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
     return bound.prove_covers(paving.outer(), exact_test(data))
 
 

@@ -19,6 +19,7 @@ pose leaves the set.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -155,7 +156,9 @@ class SetTracker:
         set is kept.
         """
         alpha = v.finite_scalar("alpha", alpha)
-        if int(landmark) != landmark or not 0 <= landmark < self.map.size:
+        if isinstance(landmark, bool) or not isinstance(landmark, numbers.Real):
+            raise TypeError(f"landmark must be an integer index, got {type(landmark).__name__}")
+        if not float(landmark).is_integer() or not 0 <= landmark < self.map.size:
             raise ValueError(f"landmark must be an index in [0, {self.map.size}), got {landmark}")
         predicted = self.set
         about = predicted.center

@@ -60,7 +60,8 @@ def visibility_test(boxes1, boxes2, obstacles) -> np.ndarray:
         (m, 2, 2) arrays of position boxes, ``[[x_lo, x_hi], [y_lo, y_hi]]`` per row
         (degenerate boxes are points).
     obstacles
-        List of polygons, each a (k, 2) array of vertices (closed solid sets); pass E⁻ or E⁺.
+        List of simple polygons of non-zero area, each a (k, 2) array of vertices (closed
+        solid sets); pass E⁻ or E⁺.
 
     Returns
     -------
@@ -240,22 +241,43 @@ def luvia(
     return _luvia(int(robot), y, b, _check_env(env), _check_eps(eps), _check_depth(max_depth))
 
 
+def _travel(distance, shape: tuple[int, ...], allowed: str) -> np.ndarray:
+    """``distance`` as travel intervals ``0 <= d_lo <= d_hi``, broadcast to ``shape + (2,)``.
+
+    Raises ``ValueError`` naming ``distance`` for another shape, non-finite bounds, a lower
+    bound above the upper one, or a negative travel (the model moves along the heading).
+    """
+    d = real_array(distance, "distance", "an array")
+    try:
+        d = np.broadcast_to(d, (*shape, 2))
+    except ValueError:
+        raise ValueError(f"distance must have shape {allowed}, got {d.shape}") from None
+    if not np.all(np.isfinite(d)):
+        raise ValueError("distance must be finite")
+    if np.any(d[..., 0] > d[..., 1]):
+        raise ValueError("distance: lower bound exceeds upper bound")
+    if np.any(d[..., 0] < 0.0):
+        raise ValueError(
+            "distance must be non-negative: the robot travels along its heading "
+            f"(got a lower bound {d[..., 0].min()})"
+        )
+    return d
+
+
 def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     """Interval odometry with a compass [GLH12, Alg. 1, l. 3]: ``x + d (cos θ, sin θ)``.
 
-    ``boxes`` (m, 2, 2); ``distance`` (m, 2) interval ``[d_lo, d_hi]`` travelled by each robot
-    (or one (2,) interval for all); ``heading`` (m,) compass readings (radians) with error at
+    ``boxes`` (m, 2, 2); ``distance`` (m, 2) interval ``0 <= d_lo <= d_hi`` travelled by each
+    robot (or one (2,) interval for all); ``heading`` (m,) compass readings (radians) with error at
     most ``heading_error``. Outward-rounded: the result contains every position reachable by
     a travel in ``[d]`` along a heading in ``[θ - δ, θ + δ]``.
     """
     b = as_boxes(boxes, "boxes")
     m = len(b)
-    d = np.broadcast_to(np.asarray(distance, dtype=float), (m, 2))
+    d = _travel(distance, (m,), "(2,) or (m, 2)")
     th = np.asarray(heading, dtype=float)
-    if th.shape != (m,) or not np.all(np.isfinite(th)) or not np.all(np.isfinite(d)):
-        raise ValueError(f"heading must be ({m},) finite readings and distance finite")
-    if np.any(d[:, 0] > d[:, 1]):
-        raise ValueError("distance: lower bound exceeds upper bound")
+    if th.shape != (m,) or not np.all(np.isfinite(th)):
+        raise ValueError(f"heading must be ({m},) finite readings")
     if (
         not isinstance(heading_error, int | float)
         or not np.isfinite(heading_error)
@@ -334,7 +356,10 @@ def track(
         raise TypeError(f"visibility must be booleans, got dtype {vis.dtype}")
     if vis.shape != (steps, m, m):
         raise ValueError(f"visibility must have shape ({steps}, {m}, {m}), got {vis.shape}")
-    dist = np.broadcast_to(np.asarray(distance, dtype=float), (steps, m, 2))
+    dist = real_array(distance, "distance", "an array")
+    dist = _travel(
+        dist[:, None] if dist.ndim == 2 else dist, (steps, m), "(2,), (K, 2) or (K, m, 2)"
+    )
     out = np.empty((steps + 1, m, 2, 2))
     out[0] = b
     for k in range(steps):

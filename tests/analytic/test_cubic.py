@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from optbound.analytic._cubic import real_roots
+from optbound.analytic._kernels.cubic import real_roots
 
 
 def _found(coeffs):

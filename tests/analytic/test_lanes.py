@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from numba import njit
 
-from optbound.analytic._lanes import (
+from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
     check_ellipsoids,
@@ -15,7 +15,7 @@ from optbound.analytic._lanes import (
     store_vectors,
     trace_inverse_lanes,
 )
-from optbound.analytic._midrad import inflate
+from optbound.analytic._kernels.midrad import inflate
 from optbound.sets._domain import check_ellipsoid
 
 
@@ -113,7 +113,7 @@ def _inflate_batch(S, D, c, d, T_out, margin_out, rows):
 @pytest.mark.parametrize("n", [1, 3, 4])
 @pytest.mark.parametrize("count", [1, 3 * W + 5])
 def test_inflate_lanes_matches_the_scalar_inflate(n, count):
-    """Same shapes and margins as ``_midrad.inflate`` (bitwise; -1.0 where the scalar version
+    """Same shapes and margins as ``midrad.inflate`` (bitwise; -1.0 where the scalar version
     refuses), in full blocks and in the remainder."""
     S, D, c, d = _inflate_cases(n, count, seed=n * 100 + count)
     T, margin = np.empty((count, n, n)), np.empty(count)

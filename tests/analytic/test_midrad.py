@@ -1,9 +1,9 @@
-"""Tests of the certified floating-point helpers of ``optbound.analytic._midrad``."""
+"""Tests of the certified floating-point helpers of ``optbound.analytic._kernels.midrad``."""
 
 import numpy as np
 import pytest
 
-from optbound.analytic._midrad import lambda_min_estimate
+from optbound.analytic._kernels.midrad import lambda_min_estimate
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 5])

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 from scipy.optimize import minimize_scalar
 
 from optbound import Ellipsoid, analytic
-from optbound.analytic._lanes import W
+from optbound.analytic._kernels.lanes import W
 from tests.analytic.instances import ellipsoid_pair, random_ellipsoid, sample_sum
 
 CONTAIN_TOL = 1e-9

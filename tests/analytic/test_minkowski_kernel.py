@@ -1,4 +1,4 @@
-"""Tests of the volume-optimal p solver of ``optbound.analytic._minkowski_kernel``.
+"""Tests of the volume-optimal p solver of ``optbound.analytic._kernels.minkowski_kernel``.
 
 References: the generalized eigenvalues of (C1, C2) from ``scipy.linalg.eigh`` (moderate
 instances) or at 50 digits with mpmath (extreme ones), and the root of
@@ -16,9 +16,8 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from optbound import Ellipsoid, analytic
-from optbound.analytic import _minkowski_kernel as K
-from optbound.analytic._lanes import W, cholesky_lanes
-from optbound.analytic._threads import NO_POSTS
+from optbound.analytic._kernels import minkowski_kernel as K
+from optbound.analytic._kernels.lanes import W, cholesky_lanes
 
 
 def _spd(rng, n: int, cond: float, scale: float) -> np.ndarray:
@@ -266,7 +265,7 @@ def _kernel_batch(c1, C1, c2, C2, mode, p_in):
     inputs = [np.array(x) for x in (c1, C1, c2, C2)]
     for x in inputs:
         x.flags.writeable = False
-    first = K.sum_range(*inputs, mode, p_in, np.array([0, 1]), np.array([2]), out, 0, B, NO_POSTS)
+    first = K.sum_range(*inputs, mode, p_in, np.array([0, 1]), np.array([2]), out, 0, B)
     bad = np.flatnonzero(out[2])
     assert first == (bad[0] if bad.size else -1)
     return out

@@ -1,6 +1,6 @@
 """The lane-parallel strip kernel: its lanes are independent of each other and of the block.
 
-Every instance is computed in one lane of a block of ``W`` (``optbound.analytic._lanes``).
+Every instance is computed in one lane of a block of ``W`` (``optbound.analytic._kernels.lanes``).
 These tests check what that layout must not change: a lane's result (error code included)
 is the single call's, bitwise, wherever the instance sits in the batch, whatever its
 neighbours are (valid or not), for every criterion, strips and half-spaces.
@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from benchmarks.speed_analytic import batch_instances
-from optbound.analytic import _strip_kernel as K
-from optbound.analytic._lanes import W
-from optbound.analytic._threads import NO_POSTS, ellipsoid_outputs
+from optbound.analytic._kernels import strip_kernel as K
+from optbound.analytic._kernels.lanes import W
+from optbound.analytic._kernels.threads import ellipsoid_outputs
 
 MODES = (K.VOLUME, K.GIVEN, K.ROBUST, K.TRACE, K.PROJECTION, K.ROBUST_PROJECTION)
 
@@ -44,7 +44,7 @@ def _batch(c, C, a, b, lam, halfspace, clip, mode, idx):
     out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
     ws = K.workspace(n)
     first = K.fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, 10.0, 0.5, out, ws, 0,
-                         n_batch, NO_POSTS)  # fmt: skip
+                         n_batch)  # fmt: skip
     bad = np.flatnonzero(out[2])
     assert first == (bad[0] if bad.size else -1)
     return out

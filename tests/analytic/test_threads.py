@@ -11,7 +11,7 @@ import pytest
 
 from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
-from optbound.analytic._threads import LEAD, MIN_SLICE, _cache_lines, run_sliced, slice_bounds
+from optbound.analytic._kernels.threads import MIN_SLICE, run_sliced, slice_bounds
 
 
 def _instances(count: int):
@@ -62,18 +62,17 @@ def test_a_forked_child_runs_sliced_batches():
 
 @pytest.mark.parametrize("n_batch", [2 * MIN_SLICE, 1000, 10**6 + 7])
 @pytest.mark.parametrize("slices", [2, 3, 8])
-def test_slice_bounds_cover_the_batch_with_the_callers_lead(n_batch, slices):
+def test_slice_bounds_cover_the_batch_in_equal_slices(n_batch, slices):
     bounds = slice_bounds(n_batch, slices)
     assert bounds[0] == 0 and bounds[-1] == n_batch and len(bounds) == slices + 1
     sizes = np.diff(bounds)
     assert np.all(sizes > 0)
-    assert abs(sizes[0] - LEAD - sizes[1]) <= 1  # the caller's slice: LEAD longer
-    assert np.ptp(sizes[1:]) <= 1
+    assert np.ptp(sizes) <= 1
 
 
 def test_run_sliced_returns_the_slices_in_order():
     n_batch = 4 * MIN_SLICE + 1
-    slices = run_sliced(lambda start, stop, posts: (start, stop, threading.get_ident()), n_batch)
+    slices = run_sliced(lambda start, stop: (start, stop, threading.get_ident()), n_batch)
     assert slices[0][0] == 0 and slices[-1][1] == n_batch
     assert all(a[1] == b[0] for a, b in itertools.pairwise(slices))
     assert slices[0][2] == threading.get_ident()  # the caller runs the first slice
@@ -84,7 +83,7 @@ CORES = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os
 
 @pytest.mark.skipif((CORES or 1) < 2, reason="one core: no worker")
 def test_an_error_in_a_worker_is_raised_in_the_caller_and_the_pool_survives():
-    def call(start, stop, posts):
+    def call(start, stop):
         if start > 0:
             raise ArithmeticError(f"slice {start}")
         return stop
@@ -92,11 +91,11 @@ def test_an_error_in_a_worker_is_raised_in_the_caller_and_the_pool_survives():
     n_batch = 2 * MIN_SLICE
     with pytest.raises(ArithmeticError, match="slice"):
         run_sliced(call, n_batch)
-    assert len(run_sliced(lambda start, stop, posts: stop - start, n_batch)) > 1
+    assert len(run_sliced(lambda start, stop: stop - start, n_batch)) > 1
 
 
 def test_concurrent_batches_agree_with_sequential_ones():
-    """A batch started while another holds the workers runs alone, with the same bits."""
+    """Batches started together share the workers, with the same bits."""
     c, C, a, b = _instances(4 * MIN_SLICE)
     expected = analytic.intersect_strip_batch(c, C, a, b).shapes
     got = [None] * 4
@@ -110,11 +109,3 @@ def test_concurrent_batches_agree_with_sequential_ones():
     for thread in threads:
         thread.join()
     assert all(np.array_equal(g, expected) for g in got)
-
-
-def test_flags_fill_cache_lines_of_their_own():
-    lines = _cache_lines(3)
-    assert lines.shape == (3, 8) and lines.flags.c_contiguous
-    assert lines.ctypes.data % 64 == 0
-    assert lines.base.ctypes.data + 64 <= lines.ctypes.data  # padding before
-    assert lines.ctypes.data + lines.nbytes <= lines.base.ctypes.data + lines.base.nbytes

@@ -291,3 +291,31 @@ def test_bearings_is_eq2_and_measure_its_contract_name():
     """``bearings`` is [BH, eq. (2)]; ``measure`` is the same function (model contract)."""
     assert np.allclose(rb.bearings(np.zeros(2), LANDMARKS, PAIRS), true_bearings(np.zeros(2)))
     assert rb.measure is rb.bearings
+
+
+@pytest.mark.parametrize("margin_deg", [0.001, 0.01])
+def test_order_2_near_pi_minus_eps_is_proven(margin_deg):
+    """|gamma_hat| within margin_deg of pi - eps: circle 1 is nearly a line, its ring's arc
+    ellipse is singular in float64; the order-2 filter still runs and is proven."""
+    L = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 3.0]])
+    pairs, eps = [(0, 1), (1, 2), (2, 0)], np.radians(2.0)
+    x = np.array([1.0, np.tan(0.5 * (eps + np.radians(margin_deg)))])
+    g = true_bearings(x, L, pairs)
+    assert np.pi - eps - abs(g[0]) < np.radians(0.015)
+    data = rb.measurements(L, pairs, g, eps)
+    box = rb.prior_box(data)
+    paving = rb.exact_paving(
+        L, pairs, g, eps, np.stack([box.lo, box.hi], 1), 0.01 * np.max(box.hi - box.lo)
+    )
+    bound = rb.localize(L, pairs, g, eps, order=2).bound
+    assert bound.lift.size == 8 and bound.contains(x)
+    assert rb.certify_contains(bound, data, paving).proven
+
+
+def test_order_2_with_a_prior_box_small_against_the_rings(sect5):
+    data, _ = sect5
+    box = Box([-1e-3, -1e-3], [1e-3, 1e-3])  # the true position is 0
+    paving = rb.exact_paving(LANDMARKS, PAIRS, GAMMAS, EPS, np.stack([box.lo, box.hi], 1), 1e-5)
+    bound = rb.localize(LANDMARKS, PAIRS, GAMMAS, EPS, order=2, prior=box).bound
+    assert bound.contains(np.zeros(2))
+    assert rb.certify_contains(bound, data, paving).proven

@@ -10,19 +10,23 @@ eqs. (19)-(20)] with the compiled outward-rounded interval operations of
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 from numba import njit
 
 from optbound.interval._compiled import imul, isub
-from optbound.localization.geometry.primitives import real_array
+from optbound.localization.geometry.primitives import intersect, real_array, side
 
 
 def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
     """Validate a list of polygons, each a (k, 2) array of k >= 3 finite real vertices.
 
     Raises ``TypeError`` if ``polygons`` is not a list/tuple, ``ValueError`` naming ``name``
-    for a wrong shape, non-finite or complex coordinates, or repeated consecutive vertices.
-    An empty list is valid (an environment without obstacles).
+    for a wrong shape, non-finite or complex coordinates, repeated consecutive vertices, or a
+    polygon that is not simple (:func:`_check_simple`): a solid obstacle needs a boundary
+    that does not cross itself and encloses some area. An empty list is valid (an
+    environment without obstacles).
     """
     if isinstance(polygons, np.ndarray) or not isinstance(polygons, list | tuple):
         raise TypeError(f"{name} must be a list of (k, 2) vertex arrays, got {type(polygons)}")
@@ -35,8 +39,44 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
             raise ValueError(f"{name}[{j}] must be finite")
         if np.any(np.all(arr == np.roll(arr, -1, axis=0), axis=1)):
             raise ValueError(f"{name}[{j}] has a zero-length edge (repeated vertex)")
+        _check_simple(arr, f"{name}[{j}]")
         out.append(arr)
     return out
+
+
+def _check_simple(poly: np.ndarray, name: str) -> None:
+    """Raise unless no two non-adjacent edges meet and the area is not zero, decided exactly.
+
+    The compiled interval ``intersect`` [GLH12, eq. (19)] clears most edge pairs at once; the
+    pairs it cannot separate (meeting, touching, collinear or close) are decided with
+    :func:`~.primitives.intersect` in Fractions. The area is the shoelace sum in Fractions.
+    """
+    k = poly.shape[0]
+    a, b = _edge_boxes(poly)
+    lo, _ = intersect_boxes(a, b, a, b)
+    i, j = np.triu_indices(k, 2)
+    keep = (j - i) % k != k - 1  # edges 0 and k - 1 are adjacent too
+    v = [(Fraction(float(x)), Fraction(float(y))) for x, y in poly]
+    for e1, e2 in zip(i[keep], j[keep], strict=True):
+        if lo[e1, e2] <= 0.0 and _segments_meet(v[e1], v[(e1 + 1) % k], v[e2], v[(e2 + 1) % k]):
+            raise ValueError(
+                f"{name} is self-intersecting: its edges {e1} and {e2} meet; an obstacle must "
+                "be a simple polygon"
+            )
+    if sum(v[n][0] * v[n - 1][1] - v[n - 1][0] * v[n][1] for n in range(k)) == 0:
+        raise ValueError(f"{name} has zero area (its vertices are collinear)")
+
+
+def _segments_meet(p1, p2, p3, p4) -> bool:
+    """Do the closed segments meet? Exact for Fraction points (collinear: extents overlap)."""
+    if intersect(p1, p2, p3, p4) > 0:
+        return False
+    if side(p1, p3, p4) == 0 and side(p2, p3, p4) == 0:
+        return all(
+            max(min(p1[c], p2[c]), min(p3[c], p4[c])) <= min(max(p1[c], p2[c]), max(p3[c], p4[c]))
+            for c in (0, 1)
+        )
+    return True
 
 
 def pack_polygons(polygons: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -6,7 +6,7 @@ All functions take the fused strip normalized to ``|a'^T (x - c) - e| <= 1``, i.
 an outer bound and is inflated by its own certified margin, so the guarantee never depends on
 the accuracy of these roots.
 
-The cubics are solved by :func:`optbound.analytic._cubic.real_roots`; the nonnegative real root
+The cubics are solved by :func:`.cubic.real_roots`; the nonnegative real root
 (or 0) with the smallest size measure wins, so the choice is never worse than lambda = 0 (E
 itself) or any other stationary point.
 """
@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._cubic import real_roots
+from optbound.analytic._kernels.cubic import real_roots
 from optbound.sets._domain import cholesky
 
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._midrad import (
+from optbound.analytic._kernels.midrad import (
     RADIUS_SAFETY,
     TINY,
     U,
@@ -177,7 +177,7 @@ def check_ellipsoids(c, C, L, m, code, s):
 @njit(cache=True, error_model="numpy", inline="always")
 def trace_inverse_lanes(L, m, total):
     """``tr(A^{-1}) = ||L^{-1}||_F^2`` per lane (A = L L^T, L from :func:`cholesky_lanes`), as
-    ``_midrad.lambda_min_estimate`` (whose reciprocal it is): column j of X = L^{-1} by
+    ``midrad.lambda_min_estimate`` (whose reciprocal it is): column j of X = L^{-1} by
     forward substitution, its strict lower part stored transposed in L's strict upper
     triangle. ``total`` (W,) receives the sums."""
     n = L.shape[0]
@@ -201,11 +201,11 @@ def trace_inverse_lanes(L, m, total):
 
 @njit(cache=True, error_model="numpy")
 def inflate_lanes(S, D, c, d, T, L, m, margin, rows):
-    """``_midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
+    """``midrad.inflate`` for the m lanes of a block: S, D, T, L (n, n, W), c, d (n, W);
     writes T (T may be S; L is work space) and each lane's margin (or -1.0 if T is too large
     for the domain) into ``margin`` (W,). ``rows``: 8 scratch rows (W,), separate arrays (see
-    ``_minkowski_kernel.block_work``). The same quantities as
-    ``_midrad.inflate`` (see there for the mathematics), computed lane by lane."""
+    ``minkowski_kernel.block_work``). The same quantities as
+    ``midrad.inflate`` (see there for the mathematics), computed lane by lane."""
     n = S.shape[0]
     trace, cmax, pivot, total = rows[0], rows[1], rows[2], rows[3]
     dd, DF, SF, mu = rows[4], rows[5], rows[6], rows[7]

@@ -16,7 +16,7 @@ ellipsoid and a segment, ``E(0, C*) + [-delta, delta] ⊆ E(0, (1+rho) C* + (1 +
 delta^T)``, for any rho > 0. No eigenvalue needs to be certified for this; rho only balances
 the two terms (rho = |d| / sqrt(lambda_min(S)), estimated).
 
-The strip member (``_strip_kernel._member_shape``) applies the same rule with the scale folded into
+The strip member (``strip_kernel._member_shape``) applies the same rule with the scale folded into
 its scalar factor, so that each entry of its shape is rounded only once (``output_floor``,
 ``segment_scale`` and ``segment_term`` are shared).
 

@@ -1,6 +1,6 @@
 """Compiled core of ellipsoid ∩ strip fusion [HS96, eqs. (24)-(29)], W instances at a time.
 
-A batch is processed in blocks of up to W instances, one per SIMD lane (``_lanes``): every
+A batch is processed in blocks of up to W instances, one per SIMD lane (``lanes``): every
 step below is a loop over the lanes with a straight-line body, and a lane never depends on
 another. A single call is a block of one lane through the same compiled code, so
 :func:`intersect_strip` and :func:`intersect_strip_batch` agree bitwise. Steps, all in the
@@ -12,10 +12,10 @@ local frame of the ellipsoid's centre c:
    ``[lo, hi]`` of ``a^T (x - c)`` that is fused contains that of E ∩ S *exactly*;
    disjointness is declared only when even the outward interval misses E's outward extent;
 3. clip (optionally) and floor the strip's width, normalize it to |a'^T x - b'| <= 1;
-4. choose lambda (``_strip_lambda``: volume [HS96, eq. (26)], trace, projection
+4. choose lambda (``strip_lambda``: volume [HS96, eq. (26)], trace, projection
    [HS96, eqs. (27)-(28)], robust [HS96, eq. (30)] on either, or given);
 5. evaluate the member [HS96, eq. (24)] with certified error bounds (each shape entry formed
-   in double-double and rounded once) and inflate it by the certified margin of ``_midrad``
+   in double-double and rounded once) and inflate it by the certified margin of ``midrad``
    (widened to the output domain if needed);
 6. any failure (K not provably positive, output too large) falls back to E itself (lambda = 0),
    which always contains E ∩ S.
@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._lanes import (
+from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
     check_ellipsoids,
@@ -35,7 +35,7 @@ from optbound.analytic._lanes import (
     load_vectors,
     trace_inverse_lanes,
 )
-from optbound.analytic._midrad import (
+from optbound.analytic._kernels.midrad import (
     RADIUS_SAFETY,
     TINY,
     U,
@@ -48,8 +48,7 @@ from optbound.analytic._midrad import (
     segment_scale,
     segment_term,
 )
-from optbound.analytic._spin import post_slices
-from optbound.analytic._strip_lambda import lam_projection, lam_trace, lam_volume
+from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
 from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
@@ -62,15 +61,61 @@ MIN_REL_WIDTH = 1e-6
 # lambda is capped here (a larger one only gives a bound >= 1e8 times E in some direction).
 LAM_MAX = 1e8
 LAMG_MAX = 1e16
-# The per-lane scalars of a block live in one flat array, row r at offset r W (``workspace``).
-# Constant offsets let LLVM prove that two rows never overlap; rows as views of a 2-D array
-# have a run-time stride, and the run-time overlap checks of ~20 rows in one loop exceed its
-# limit (the loop then stays scalar: measured 8x slower).
-N_ROWS = 47
-(STRIP_B, LAM_IN, EPS, REPS, GS, GT, RG, CONS, MID, HALF, GRAM, GRAM_LO, LAM, GAM, KH, KL, RK, OM,
- ACTIVE, DD, CMAX, AA, WW, TRC, TRINV, LMIN, LREF, RHO, CENTRE, SH, SL, SA, ALPHA, BETA, GAMMA,
- WIDEN, MARGIN, MU, EH, EL, S0, S1, S2, S3, S4, S5, S6,
- ) = (W * r for r in range(N_ROWS))  # fmt: skip
+# Layout of the per-lane scalars of a block: one flat array ``t`` (``workspace``), row r at
+# offset r W, so lane k of row ROW is ``t[ROW + k]``. Constant offsets let LLVM prove that two
+# rows never overlap; rows as views of a 2-D array have a run-time stride, and the run-time
+# overlap checks of ~20 rows in one loop exceed its limit (the loop then stays scalar: measured
+# 8x slower). Rows, in the order the steps write them (step numbers of the module docstring):
+(
+    STRIP_B,  # 1  the strip's b (input)
+    LAM_IN,  # 1  the given lambda (input, GIVEN mode)
+    EPS,  # 2  eps = b - a^T c (Dot2)
+    REPS,  # 2  certified radius of EPS
+    GS,  # 2  a^T C a, high part
+    GT,  # 2  a^T C a, low part
+    RG,  # 2  certified radius of GS + GT
+    CONS,  # 3  consistency [HS96, eq. (29)]
+    MID,  # 3  the fused strip: |a^T (x - c) - MID| <= HALF
+    HALF,  # 3
+    GRAM,  # 3  G = a^T C a as a double-double GRAM + GRAM_LO
+    GRAM_LO,  # 3
+    LAM,  # 4  lambda of the normalized strip [HS96, eq. (24)]
+    GAM,  # 4  gam = lambda / ((1 + lambda Gn) HALF^2)
+    KH,  # 5  the factor K as a double-double KH + KL within RK
+    KL,  # 5
+    RK,  # 5  (-1: 1 - gam G not provably positive)
+    OM,  # 5  1 - gam G
+    ACTIVE,  # 5  1.0 where the member is evaluated, else 0.0
+    DD,  # 5  squared norm of the centre's radii
+    CMAX,  # 5  |centre|_inf
+    AA,  # 5  |a|^2
+    WW,  # 5  |w|^2 (w = C a, high part)
+    TRC,  # 5  tr C
+    TRINV,  # 5  tr C^{-1}
+    LMIN,  # 5  estimate of lambda_min of the member (``_margin_terms``)
+    LREF,  # 5  the reference eigenvalue of the margin
+    RHO,  # 5  Schweppe's rho of the centre term (scale = 1 + rho)
+    CENTRE,  # 5  Schweppe's centre term (1 + 1/rho) DD
+    SH,  # 5  scale K as a double-double SH + SL within its radius
+    SL,  # 5
+    SA,  # 5  bound on |scale K|
+    ALPHA,  # 5  coefficients of the entries' error bound (``_member_shape``)
+    BETA,  # 5
+    GAMMA,  # 5
+    WIDEN,  # 5  the least mu that keeps the output in the domain
+    MARGIN,  # 5-6  certified relative margin (-1: not certified)
+    MU,  # 5  mu of T = scale C* + mu I
+    EH,  # 5  one shape entry before its rounding, EH + EL
+    EL,  # 5
+    S0,  # scratch rows, reused by each step (see where they are written)
+    S1,
+    S2,
+    S3,
+    S4,
+    S5,
+    S6,
+) = (W * r for r in range(47))  # fmt: skip
+N_ROWS = S6 // W + 1
 # What a lane's output is: the certified member, E itself (lambda = 0), or zeros (no ellipsoid).
 OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 
@@ -322,7 +367,7 @@ def _margin_terms(Kh, Kl, rK, om, gam, tr_inv, aa, trace_c, ww, dd, cmax):
     lambda_min(C*) is estimated without a factorization: by Sherman-Morrison ``(C - gam w
     w^T)^{-1} = C^{-1} + gam a a^T / om`` (w = C a, om = 1 - gam a^T C a), so ``tr(C*^{-1}) =
     (tr(C^{-1}) + gam |a|^2 / om) / K``, and ``1 / tr(X^{-1}) <= lambda_min(X) <= n /
-    tr(X^{-1})``. Only estimates: no guarantee rests on them (as in ``_midrad.inflate``)."""
+    tr(X^{-1})``. Only estimates: no guarantee rests on them (as in ``midrad.inflate``)."""
     lmin = Kh / (tr_inv + gam * aa / om)
     trace = Kh * max(trace_c - gam * ww, 0.0)
     floor = output_floor(trace, cmax)
@@ -360,7 +405,7 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
 
     so no rounding of lambda, u or the normalization enters the matrix.
 
-    Certified margin (the outward rule of ``_midrad``, evaluated so that each entry of the
+    Certified margin (the outward rule of ``midrad``, evaluated so that each entry of the
     shape is rounded once): with the centre's error |d| and rho = scale - 1 chosen first,
     T = scale C* + mu I + F must dominate ``(1 + rho) C* + (1 + 1/rho) |d|^2 I`` (Schweppe's
     bound for the centre, C* the exact member), i.e. ``mu >= (1 + 1/rho) |d|^2 + ||F||_2``.
@@ -522,7 +567,7 @@ def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
 def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out, ws, m):
     """Steps 1-6 for the m <= W instances of a block (lane k = instance k of the views c, C,
     a, b, lam_in and out, which start at the block), each step a loop over the lanes
-    (``_lanes``). Compiled without numba's reference counting (``_nrt=False``): every view
+    (``lanes``). Compiled without numba's reference counting (``_nrt=False``): every view
     (``V[0]``, ``t[EPS]``, ``C[k]``) otherwise increments and decrements its parent's counter
     atomically, a cache line both threads fight over. Nothing here allocates; the views live
     no longer than the call."""
@@ -598,7 +643,7 @@ def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
         lam_o[k] = t[LAM + k]
     for k in range(m):
         margin_o[k] = t[MARGIN + k]
-    # The outputs, selected per lane while they are stored (lanes innermost, as ``_lanes``).
+    # The outputs, selected per lane while they are stored (lanes innermost, as ``lanes``).
     for i in range(n):
         for k in range(m):
             member, source = oc[i, k], cs[i, k]
@@ -621,7 +666,7 @@ def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
     """Instances ``start..stop`` block by block, each block given views from its first
-    instance (``_lanes``: no wraparound code)."""
+    instance (``lanes``: no wraparound code)."""
     for base in range(start, stop, W):
         m = min(W, stop - base)
         lam_b = lam[base:] if mode == GIVEN else lam  # (B,) in that mode only
@@ -636,7 +681,7 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
     """One instance through the batch loop ``_fuse_loop`` (a batch of one: the same compiled
     code, so single and batched results agree bitwise and the kernel is compiled once), plus
     the result's Cholesky factor and its validation code (0 by construction: the member keeps
-    the result in the domain as ``_midrad.inflate`` does). ``ws`` is ``workspace(n)``."""
+    the result in the domain as ``midrad.inflate`` does). ``ws`` is ``workspace(n)``."""
     n = c.shape[0]
     out = (
         np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.zeros(1, np.int8),
@@ -656,12 +701,10 @@ def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop,
-               posts):  # fmt: skip
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
     """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller), ``ws`` the calling thread's ``workspace(n)``, ``posts`` as in ``_threads``.
+    caller), ``ws`` the calling thread's ``workspace(n)``.
     ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin). Returns the
     first instance with a non-zero code, or -1."""
-    post_slices(posts)
     _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)
     return first_error(out[2], start, stop)

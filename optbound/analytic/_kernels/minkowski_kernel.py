@@ -2,11 +2,11 @@
 
 Shared by :func:`minkowski_sum` (a batch of one) and :func:`minkowski_sum_batch`: the same
 compiled code, so single and batched results agree bitwise. A batch is processed in blocks of
-up to ``W`` instances, one per lane of lanes-last arrays (:mod:`optbound.analytic._lanes`), so
+up to ``W`` instances, one per lane of lanes-last arrays (``lanes``), so
 that every step is a SIMD loop over the lanes. Steps per block: validate both summands
-(``_lanes.check_ellipsoids``), choose p = (1 - kappa) / kappa, evaluate the member ``(1 + p)
+(``lanes.check_ellipsoids``), choose p = (1 - kappa) / kappa, evaluate the member ``(1 + p)
 (C1 / p + C2)`` and the centre ``c1 + c2`` in midpoint-radius arithmetic, inflate by the
-certified margin (``_lanes.inflate_lanes``, the lane form of ``_midrad.inflate``, which keeps
+certified margin (``lanes.inflate_lanes``, the lane form of ``midrad.inflate``, which keeps
 the output in the domain). A lane never depends on another (branches are selects), and the
 loops' vector bodies and scalar remainders perform the same IEEE operations (no fastmath), so
 a lane gives the same bits in any block.
@@ -36,7 +36,7 @@ for cond <= 1e2, <= ~1e-9 at cond 1e6 and 1e12, ~1e-5 where cond 1e12 meets summ
 apart in size (``tests/analytic/test_minkowski_kernel.py``); the volume is flat at its
 minimum, so its excess is of the order of the square of that.
 The ``size_xy_psi`` p is the best root of the cubic [HS96, eqs. (15)-(17)]
-(``_cubic.real_roots``).
+(``cubic.real_roots``).
 """
 
 from __future__ import annotations
@@ -44,8 +44,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._cubic import real_roots
-from optbound.analytic._lanes import (
+from optbound.analytic._kernels.cubic import real_roots
+from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
     check_ellipsoids,
@@ -57,8 +57,7 @@ from optbound.analytic._lanes import (
     store_matrices,
     store_vectors,
 )
-from optbound.analytic._midrad import U, mr_add, mr_div, mr_mul
-from optbound.analytic._spin import post_slices
+from optbound.analytic._kernels.midrad import U, mr_add, mr_div, mr_mul
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -523,7 +522,7 @@ def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
     """The loop over blocks, compiled without numba's reference counting (``_nrt=False``):
     every view and every work tuple taken per block would otherwise increment and decrement
     its parent's counter atomically (microseconds per block). Nothing here allocates. Each
-    block is given views from its first instance (``_lanes``: no wraparound code)."""
+    block is given views from its first instance (``lanes``: no wraparound code)."""
     for base in range(start, stop, W):
         m = min(W, stop - base)
         o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:])
@@ -532,17 +531,15 @@ def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop, posts):
+def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin), ``posts`` as in
-    ``_threads``. The entry point of both :func:`minkowski_sum` (a batch of one: the same
-    compiled code, so single and batched results agree bitwise) and
-    :func:`minkowski_sum_batch`; both pass their inputs read-only, so that numba compiles it
-    once. Returns the first instance with a non-zero code, or -1.
+    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin). The entry point of
+    both :func:`minkowski_sum` (a batch of one: the same compiled code, so single and batched
+    results agree bitwise) and :func:`minkowski_sum_batch`; both pass their inputs read-only,
+    so that numba compiles it once. Returns the first instance with a non-zero code, or -1.
 
     The work space is allocated here, not cached per thread as the strip's: its ~40 arrays
     cost as much to pass through numba's dispatcher (unboxing each) as to allocate."""
-    post_slices(posts)
     wk = block_work(c1.shape[1], min(W, stop - start))
     _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
     return first_error(out[2], start, stop)

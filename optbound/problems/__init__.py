@@ -1,0 +1,54 @@
+"""Public set-membership problems and the evaluation of any estimator on them.
+
+```python
+from optbound import problems, evaluate
+suite = problems.suite("tiny")                  # list[Problem], seeded like `optbound bench`
+p = suite[0]
+p.family, p.name, p.seed, p.dim, p.data, p.truth
+p.member(X)        # Tri per float point: proven in the true set?
+p.exact(eps=None)  # Paving: inner ⊂ true set ⊂ inner ∪ boundary
+p.references()     # {"optimal_ellipsoid": ..., "best_box": ...}, certified outer bounds
+result = evaluate(my_estimator, suite)          # size brackets, ratios, soundness per problem
+```
+
+Families: ``strip`` (ellipsoid ∩ strip) so far; each family module defines
+``problems(suite, seed) -> list[Problem]``.
+"""
+
+from __future__ import annotations
+
+from optbound.problems import strip
+from optbound.problems.audit import evaluate
+from optbound.problems.evaluation import Evaluation
+from optbound.problems.problem import Problem
+
+SUITES = ("tiny", "quick", "full")
+_FAMILIES = {strip.NAME: strip.problems}
+
+
+def families() -> list[str]:
+    """Names of the problem families, in suite order."""
+    return list(_FAMILIES)
+
+
+def suite(name: str, families: list[str] | None = None, seed: int = 0) -> list[Problem]:
+    """The problems of suite ``name`` ("tiny", "quick", "full"), every family or ``families``.
+
+    ``seed`` is the suite seed of ``optbound bench --seed`` (default 0): the same seed gives
+    the same instances as the benchmark.
+
+    Raises
+    ------
+    ValueError
+        For an unknown suite or family name.
+    """
+    if name not in SUITES:
+        raise ValueError(f"name must be one of {SUITES}, got {name!r}")
+    chosen = list(_FAMILIES) if families is None else list(families)
+    unknown = [f for f in chosen if f not in _FAMILIES]
+    if unknown:
+        raise ValueError(f"families: unknown {unknown}; known: {list(_FAMILIES)}")
+    return [p for family in chosen for p in _FAMILIES[family](name, seed)]
+
+
+__all__ = ["SUITES", "Evaluation", "Problem", "evaluate", "families", "suite"]

@@ -1,0 +1,88 @@
+"""Seeded random instances shared by the problem families (and the benchmark that runs them).
+
+Every generator takes a numpy ``Generator``, so an instance is fully determined by the
+instance seed recorded next to it (``np.random.default_rng(seed)``). The instance seeds of a
+family come from :func:`task_seeds`, the suite seed and the family's name.
+"""
+
+from __future__ import annotations
+
+import zlib
+
+import numpy as np
+
+from optbound.sets import Ellipsoid, Strip
+
+# Strip position in the ellipsoid's own extent along the normal, u = (a^T x - a^T c) / h with
+# h = sqrt(a^T C a), so u in [-1, 1] spans the ellipsoid. Each kind draws (lo, hi) in u.
+STRIP_KINDS = ("narrow", "wide", "off-centre", "partial")
+
+
+def task_seeds(seed: int, name: str, count: int) -> list[int]:
+    """``count`` reproducible 32-bit instance seeds for family ``name`` under suite seed ``seed``.
+
+    The family name enters the seed sequence, so two families never share instances and
+    adding a family does not change the instances of the others.
+    """
+    state = np.random.SeedSequence([seed, zlib.crc32(name.encode())]).generate_state(count)
+    return [int(s) for s in state]
+
+
+def random_rotation(rng: np.random.Generator, dim: int) -> np.ndarray:
+    """A Haar-distributed orthogonal matrix (QR of a Gaussian matrix, signs fixed)."""
+    q, r = np.linalg.qr(rng.standard_normal((dim, dim)))
+    return q * np.sign(np.diag(r))
+
+
+def random_ellipsoid(
+    rng: np.random.Generator, dim: int, cond: float, scale: float = 1.0
+) -> Ellipsoid:
+    """Randomly rotated ellipsoid whose shape matrix has condition number ``cond``.
+
+    The largest semi-axis is ``scale``; the eigenvalues of the shape matrix are log-spaced
+    from ``scale**2`` down to ``scale**2 / cond``. The centre is standard normal times ``scale``.
+    """
+    q = random_rotation(rng, dim)
+    eig = scale**2 * np.logspace(0.0, -np.log10(cond), dim)
+    shape = (q * eig) @ q.T
+    return Ellipsoid(scale * rng.standard_normal(dim), 0.5 * (shape + shape.T))
+
+
+def unit_direction(rng: np.random.Generator, dim: int) -> np.ndarray:
+    """A direction uniform on the unit sphere."""
+    d = rng.standard_normal(dim)
+    return d / np.linalg.norm(d)
+
+
+def strip_bounds(rng: np.random.Generator, kind: str) -> tuple[float, float]:
+    """Strip limits (lo, hi) in the ellipsoid's normalised extent u in [-1, 1].
+
+    ``narrow``: width 0.05-0.3, near the centre. ``wide``: both planes cut, close to the rim.
+    ``off-centre``: both planes cut, shifted by 0.4-0.8. ``partial``: only one plane cuts (the
+    other lies beyond the ellipsoid), HS96's partial consistency [HS96, Sect. 4].
+    """
+    if kind == "narrow":
+        width, mid = rng.uniform(0.05, 0.3), rng.uniform(-0.2, 0.2)
+    elif kind == "wide":
+        width, mid = rng.uniform(1.4, 1.8), rng.uniform(-0.05, 0.05)
+    elif kind == "off-centre":
+        width, mid = rng.uniform(0.2, 0.6), rng.choice([-1.0, 1.0]) * rng.uniform(0.4, 0.7)
+    elif kind == "partial":
+        lo = rng.uniform(-0.8, 0.6)
+        return (lo, rng.uniform(1.2, 2.5)) if rng.random() < 0.5 else (-rng.uniform(1.2, 2.5), -lo)
+    else:
+        raise ValueError(f"kind must be one of {STRIP_KINDS}, got {kind!r}")
+    return mid - 0.5 * width, mid + 0.5 * width
+
+
+def strip_through(E: Ellipsoid, direction: np.ndarray, lo: float, hi: float) -> Strip:
+    """The strip ``lo <= u <= hi`` in ``E``'s normalised extent along ``direction``."""
+    h = float(np.sqrt(direction @ E.shape @ direction))
+    m = float(direction @ E.center)
+    return Strip.from_bounds(direction, m + h * lo, m + h * hi)
+
+
+def random_strip(rng: np.random.Generator, E: Ellipsoid, kind: str) -> Strip:
+    """A random strip of the given kind (see :func:`strip_bounds`) cutting ``E``."""
+    direction = unit_direction(rng, E.dim)
+    return strip_through(E, direction, *strip_bounds(rng, kind))

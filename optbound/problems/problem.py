@@ -1,0 +1,113 @@
+"""``Problem``: one public set-membership instance, its exact set and its reference bounds.
+
+A problem is described once, by the three-valued interval test of its true set (``test``,
+built from the ``tri_test`` of its constituent sets). Both :meth:`Problem.member` (points)
+and :meth:`Problem.exact` (a SIVIA paving [LJMW97, Sect. 3.2]) evaluate that one test, so the
+membership of a point and the paving can never disagree.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from optbound.compare.size import paving_volume_bracket
+from optbound.compare.tri import point_test
+from optbound.interval import Paving, pave
+from optbound.sets import Box
+from optbound.sets import _validate as v
+
+
+@dataclass(frozen=True, eq=False)
+class Problem:
+    """A set-membership problem: what an estimator sees, and the exact set it must bound.
+
+    Attributes
+    ----------
+    family, name : str
+        Family (e.g. ``"strip"``) and instance name, unique within the family and suite.
+    seed : int
+        Instance seed: ``np.random.default_rng(seed)`` rebuilds the data.
+    dim : int
+        Dimension of the state.
+    data : mapping
+        What an estimator gets (numpy arrays and optbound sets; per family, documented there).
+    truth : np.ndarray or None
+        The simulated true state where there is one.
+    test : callable
+        ``test(*coords) -> Tri array`` on ``Interval`` coordinates: the true set's interval
+        test, the one description of the true set.
+    domain : Box
+        A box proven to contain the true set (where it is paved).
+    eps : float
+        Default paving resolution of :meth:`exact`.
+    intersection : tuple
+        Optbound sets whose intersection is the true set: the SDP reference's input, and
+        the closed-form soundness proofs' (``compare.prove_contains``).
+    volume : callable or None
+        ``volume() -> (lo, hi)``: a closed-form certified bracket of the true set's volume,
+        where the family has one (else the exact paving's bracket is used).
+    """
+
+    family: str
+    name: str
+    seed: int
+    dim: int
+    data: Mapping[str, Any]
+    truth: np.ndarray | None
+    test: Callable[..., np.ndarray] = field(repr=False)
+    domain: Box = field(repr=False)
+    eps: float = field(repr=False)
+    intersection: tuple = field(default=(), repr=False)
+    volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    def member(self, X) -> np.ndarray:
+        """Membership of the float points ``X`` (m, n) in the true set, as Tri values.
+
+        TRUE only if the point is proven in the set, FALSE only if proven outside (outward-
+        rounded interval arithmetic on degenerate boxes); a point on the boundary may be
+        UNKNOWN. A single point (n,) gives a length-1 array.
+        """
+        pts, _ = v.points("X", X, self.dim)
+        return point_test(self.test, pts)
+
+    def exact(self, eps: float | None = None) -> Paving:
+        """The paving ``inner ⊂ true set ⊂ inner ∪ boundary`` of the true set in ``domain``.
+
+        ``eps`` (default :attr:`eps`) is the box width where bisection stops. Cached per eps.
+        """
+        eps = self.eps if eps is None else v.finite_scalar("eps", eps)
+        if eps <= 0:
+            raise ValueError(f"eps must be positive, got {eps}")
+        key = ("exact", eps)
+        if key not in self._cache:
+            self._cache[key] = pave(self.test, self.domain, eps)
+        return self._cache[key]
+
+    def volume_bracket(self) -> tuple[float, float]:
+        """Certified ``(lo, hi)`` bracket of the true set's volume: the family's closed form,
+        else the exact paving's inner and outer volumes (rounded outward)."""
+        if self.volume is not None:
+            return self.volume()
+        return paving_volume_bracket(self.exact())
+
+    def references(self) -> dict[str, Any]:
+        """Reference bounds of the true set, all certified to contain it.
+
+        - ``"optimal_ellipsoid"``: the S-procedure SDP optimum of :attr:`intersection`
+          (``optimal.outer_ellipsoid``, certified and inflated if needed);
+        - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
+          hence exact), the smallest box the paving can prove.
+        """
+        if "references" not in self._cache:
+            from optbound import optimal  # cvxpy only when a reference is asked for
+
+            self._cache["references"] = {
+                "optimal_ellipsoid": optimal.outer_ellipsoid(list(self.intersection)).ellipsoid,
+                "best_box": self.exact().hull(),
+            }
+        return dict(self._cache["references"])

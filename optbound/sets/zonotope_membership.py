@@ -1,0 +1,123 @@
+"""Membership tests shared by the zonotope types: float LPs for points, proofs for boxes.
+
+:func:`tri_contains` proves a box inside or outside a zonotope with outward-rounded interval
+arithmetic on slabs ``|d^T (x - c)| <= sum_j |d^T g_j|``, each of which contains the zonotope
+for any direction ``d``:
+
+- FALSE (disjoint) when one slab misses the box; the directions tried are the axes and the
+  generators (and in 2-D the generator normals). By the separating-axis theorem these
+  directions decide disjointness of a box and a full-dimensional 2-D zonotope exactly (up to
+  the rounding margin); in higher dimensions a disjoint box may stay UNKNOWN;
+- TRUE (inside) only in 1-D (one slab is the zonotope) and in 2-D when the generators span the
+  plane: a 2-D zonotope is the intersection of the slabs of its generator normals
+  ``(-g_2, g_1)``, and these normals are exact in floats (a swap and a negation). In 3-D and
+  above the facet normals are rounded cross products, their slabs only contain the zonotope,
+  and no box is reported inside (UNKNOWN).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import linprog
+
+from optbound.interval import Interval
+from optbound.interval.tribool import from_masks
+from optbound.sets._certified import matmul, point
+from optbound.sets.lifting import box_array
+
+
+def lp_contains(
+    c: np.ndarray, G: np.ndarray, A: np.ndarray, b: np.ndarray, pts: np.ndarray, tol: float
+) -> np.ndarray:
+    """Float test per point: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is ``<= 1 + tol``."""
+    m = G.shape[1]
+    if m == 0:
+        return np.all(np.abs(pts - c) <= tol * np.maximum(1.0, np.abs(c)), axis=1)
+    eye = np.eye(m)
+    A_ub = np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]])
+    A_eq = np.column_stack([np.vstack([G, A]), np.zeros(G.shape[0] + A.shape[0])])
+    cost = np.zeros(m + 1)
+    cost[-1] = 1.0
+    inside = np.zeros(pts.shape[0], dtype=bool)
+    for k, x in enumerate(pts):
+        res = linprog(
+            cost,
+            A_ub=A_ub,
+            b_ub=np.zeros(2 * m),
+            A_eq=A_eq,
+            b_eq=np.concatenate([x - c, b]),
+            bounds=[(None, None)] * m + [(0.0, None)],
+            method="highs",
+        )
+        inside[k] = res.status == 0 and res.x[-1] <= 1.0 + tol
+    return inside
+
+
+def slab_contains(c: np.ndarray, G: np.ndarray, pts: np.ndarray, tol: float) -> np.ndarray | None:
+    """Float 2-D test on the facet slabs of the generator normals; None unless the zonotope
+    is a full-dimensional 2-D one (where the slabs intersect to exactly the zonotope)."""
+    if G.shape[0] != 2:
+        return None
+    N, spans = _normals_2d(G)
+    if not spans:
+        return None
+    h = np.abs(N @ G).sum(axis=1)
+    return np.all(np.abs((pts - c) @ N.T) <= (1.0 + tol) * h, axis=1)
+
+
+def _abs_sum(p: Interval) -> Interval:
+    """Enclosure of ``sum_k |p_k|`` for a 1-D Interval."""
+    acc = point(0.0)
+    for k in range(p.shape[0]):
+        acc = acc + abs(p[k])
+    return acc
+
+
+def _normals_2d(G: np.ndarray) -> tuple[np.ndarray, bool]:
+    """Normals ``(-g_2, g_1)`` of the non-zero generators (exact in floats) and whether the
+    generators span the plane."""
+    G = G[:, np.any(G != 0, axis=0)]
+    spans = G.shape[1] >= 2 and np.linalg.matrix_rank(G) == 2
+    return np.column_stack([-G[1], G[0]]), bool(spans)
+
+
+def _directions(G: np.ndarray) -> tuple[list[np.ndarray], bool]:
+    """Slab directions and whether their slabs intersect to exactly the zonotope."""
+    n = G.shape[0]
+    nonzero = G[:, np.any(G != 0, axis=0)]
+    dirs = [np.eye(n)[j] for j in range(n)] + list(nonzero.T)
+    if n == 1:
+        return dirs, True
+    if n == 2:
+        normals, spans = _normals_2d(G)
+        return dirs + list(normals), spans
+    return dirs, False
+
+
+def tri_contains(Z, boxes) -> np.ndarray:
+    """Tri values of ``box subset Z`` (TRUE), ``box ∩ Z = ∅`` (FALSE) per box (module doc)."""
+    n = Z.dim
+    B = box_array("boxes", boxes, n)
+    X = [Interval(B[:, j, 0], B[:, j, 1]) - Z.center[j] for j in range(n)]
+    dirs, exact = _directions(Z.generators)
+    inside = np.full(B.shape[0], exact)
+    outside = np.zeros(B.shape[0], dtype=bool)
+    for d in dirs:
+        s = point(0.0)
+        for j in range(n):
+            if d[j] != 0.0:
+                s = s + d[j] * X[j]
+        h = _abs_sum(matmul(d[None, :], Z.generators)[0])
+        outside |= (s.lo > h.hi) | (s.hi < -h.hi)
+        inside &= (s.hi <= h.lo) & (s.lo >= -h.lo)
+    return from_masks(inside & ~outside, outside)
+
+
+def plot_polygon(vertices: np.ndarray, ax, kwargs: dict):
+    """``ax.fill`` of a polygon (``fill=False`` unless given); the current axes if ``ax`` is
+    None. Returns matplotlib's list of patches."""
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        ax = plt.gca()
+    return ax.fill(vertices[:, 0], vertices[:, 1], **{"fill": False, **kwargs})
