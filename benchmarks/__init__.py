@@ -1,6 +1,7 @@
-"""The optbound benchmark suite: seeded instance families and speed runs.
+"""Measurement scripts run from a source checkout (``python -m benchmarks.<script>``).
 
-Each family lives in its own module and is listed in :mod:`benchmarks.registry`;
-``optbound bench`` runs them through :mod:`benchmarks.runner` and hands the results to
-:mod:`optbound.report`.
+Not installed: the benchmark families that ``optbound bench`` runs live in
+:mod:`optbound.bench`. The scripts here measure the compiled analytic kernels against plain
+reference kernels (``speed_analytic``, ``analytic_reference``), the cost of the SDP lower
+bound (``lower_bound_cost``) and the start-up time of the command (``cli_startup``).
 """

@@ -1,6 +1,6 @@
 """What ``lower_bound=True`` costs: an ``outer_ellipsoid`` call with and without it.
 
-Instances of the recursive family (``benchmarks/recursive_tightness.py``: a prior of condition
+Instances of the recursive family (``optbound/bench/recursive_tightness.py``: a prior of condition
 number 10 and k strips of normalised width 0.2 through one point). For each (n, k), the two
 kinds of call alternate on the same instances, so that machine load affects both alike; the
 ratio is the median over instances of (call with the bound) / (call without it), both with the
@@ -16,7 +16,7 @@ import time
 
 import numpy as np
 
-from benchmarks.recursive_tightness import instance
+from optbound.bench.recursive_tightness import instance
 
 CELLS = ((2, 10), (3, 10), (4, 50))
 SEEDS = 5

@@ -32,9 +32,9 @@ from functools import partial
 
 import numpy as np
 
-from benchmarks.family import Family, task_seeds
-from benchmarks.instances import random_ellipsoid, random_strip
-from benchmarks.timing import per_call, speed_record
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.instances import random_ellipsoid, random_strip
+from optbound.bench.timing import per_call, speed_record
 
 NAME = "speed_analytic"
 DIM = 3

@@ -2,11 +2,13 @@
 
 ``@njit(cache=True)`` invalidates a cached function only when the file that defines it changes,
 not when a jitted function it calls in *another* file changes: the analytic kernels inline
-``analytic._kernels.midrad`` and ``sets._domain``, the polygon predicates inline
-``interval._compiled``, and they would silently run stale machine code after an edit of those.
-Before any kernel is loaded (this runs first in ``optbound/__init__.py``), one hash of every
-kernel source is compared with a stamp kept next to the caches; when it differs, every cached
-kernel of the package is dropped (numba then recompiles each once).
+``analytic._kernels.midrad`` and ``_core.domain``, the polygon predicates inline
+``interval.compiled``, and they would silently run stale machine code after an edit of those.
+Before any kernel is loaded, one hash of every kernel source is compared with a stamp kept next
+to the caches; when it differs, every cached kernel of the package is dropped (numba then
+recompiles each once). Each subpackage that defines kernels imports :mod:`optbound._fresh`
+first thing in its ``__init__``, which runs :func:`refresh` once per process, on the first import
+of such a subpackage; ``import optbound`` alone reads and writes nothing.
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent
 STAMP = "optbound_kernels.stamp"
+#: The subpackages that define kernels; each imports :mod:`optbound._fresh` before them.
+KERNEL_PACKAGES = ("_core", "analytic", "interval", "localization", "optimal", "sets")
 
 
 def kernel_sources(root: Path = ROOT) -> list[Path]:

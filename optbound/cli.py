@@ -3,6 +3,10 @@
 Errors the user can fix (a bad ``--out``, an unknown paper key, an unreachable Dask
 scheduler, a full disk) end the command with one line on stderr and exit code 2, before any
 work where they can be detected before it.
+
+Building the parser imports no family, numba, scipy or cvxpy (the family names are declared in
+:data:`optbound.bench.registry.FAMILIES`), so ``--help`` and argument errors answer at once;
+the work of a command is imported by its handler.
 """
 
 from __future__ import annotations
@@ -12,9 +16,9 @@ import os
 import sys
 from pathlib import Path
 
-from benchmarks.executors import EXECUTORS
-from benchmarks.family import SUITES
-from benchmarks.registry import families
+from optbound.bench.executors import EXECUTORS
+from optbound.bench.family import SUITES
+from optbound.bench.registry import FAMILIES
 
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
@@ -83,7 +87,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench = sub.add_parser(
         "bench",
         help="run a benchmark suite and write a report",
-        description="Run the benchmark families of benchmarks/ and write report.md, "
+        description="Run the benchmark families of optbound.bench and write report.md, "
         "results.json, CSV and PNG figures into --out.",
     )
     bench.add_argument(
@@ -100,7 +104,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument(
         "--family",
         action="append",
-        choices=[fam.name for fam in families()],
+        choices=list(FAMILIES),
         help="run only this family (repeatable; default: all)",
     )
     bench.add_argument(
@@ -163,7 +167,7 @@ def _bench(args: argparse.Namespace) -> int:
 
 
 def _repro(args: argparse.Namespace) -> int:
-    from papers_repro._common import scripts
+    from optbound.papers_repro._common import scripts
 
     try:
         selected = {script.name for script in scripts(args.papers or None)}
@@ -187,7 +191,7 @@ def _prepare(args: argparse.Namespace) -> Path:
 
 
 def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
-    from benchmarks.runner import run_suite
+    from optbound.bench.runner import run_suite
 
     try:
         return run_suite(

@@ -1,5 +1,5 @@
 """Reproductions of the papers' figures and numbers with optbound, side by side with the papers.
 
 One module per paper result group; each has ``main(out_dir) -> dict`` and a command line
-(``python -m papers_repro.<module> --out DIR``). See ``papers_repro/README.md``.
+(``python -m optbound.papers_repro.<module> --out DIR``). See ``papers_repro/README.md``.
 """

@@ -33,11 +33,11 @@ from pathlib import Path
 import numpy as np
 
 from optbound.localization.visibility import track
+from optbound.papers_repro import _glh12_contraction as contraction
+from optbound.papers_repro import _glh12_verdicts as verdicts
+from optbound.papers_repro._common import DEFAULT_OUT, pyplot, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import arena
-from papers_repro import _glh12_contraction as contraction
-from papers_repro import _glh12_verdicts as verdicts
-from papers_repro._common import DEFAULT_OUT, pyplot, save_figure
 
 PAPER = "GLH12"
 STEPS = 1500

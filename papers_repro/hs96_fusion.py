@@ -24,10 +24,8 @@ from pathlib import Path
 import numpy as np
 
 from optbound import analytic, optimal
-from optbound.report.tables import markdown_table
-from optbound.sets import Ellipsoid, Strip
-from papers_repro._common import (
-    claim_table,
+from optbound.papers_repro import _verdict as verdict
+from optbound.papers_repro._common import (
     draw_ellipse,
     draw_strip,
     finish_axes,
@@ -35,6 +33,8 @@ from papers_repro._common import (
     run_cli,
     save_figure,
 )
+from optbound.report.tables import markdown_table
+from optbound.sets import Ellipsoid, Strip
 
 PAPER = "HS96"
 PRIOR = Ellipsoid([0.0, 0.0], [[4.0, 1.2], [1.2, 1.5]])
@@ -52,6 +52,8 @@ FIG2_CENTRES = (0.0, 0.5, 1.0, 1.45)
 SWEEP_POINTS = 401
 QUICK_SWEEP_POINTS = 101
 XLIM, YLIM = (-3.2, 3.2), (-2.4, 2.4)
+#: Verdict threshold: "large" changes / "reduced" impact = a factor of at least this.
+MUCH = 2.0
 
 
 def half_extent_along_normal(E: Ellipsoid = PRIOR) -> float:
@@ -262,6 +264,7 @@ def _sweep(out_dir: Path, points: int = SWEEP_POINTS) -> tuple[dict, Path]:
         "sensitivity_clipped": sens["clipped"],
         "outlier_keeps_true_common": keeps["common"],
         "outlier_keeps_true_robust": keeps["robust"],
+        "outliers": int(np.sum(outlier)),
     }
     return sweep, save_figure(fig, out_dir, "hs96_sweep_offset.png")
 
@@ -275,46 +278,72 @@ def _markdown(fig1: list[dict], fig2: list[dict], sweep: dict) -> str:
         (
             f"Fig. 1.1 {r['paper_label']}: case",
             f"'{r['paper_label'][3:]}'",
-            f"{r['case']} (CM = {r['consistency']:.2f})",
+            f"{r['case']} (CM = {r['consistency']:.2f}); reproduced if the case is the paper's",
+            verdict.all_or_some([r["case"] == r["paper_case"]]),
         )
         for r in fig1
     ]
     first, last = fig2[0], fig2[-1]
+    common = [r["common_area"] / r["prior_area"] for r in fig2]
+    robust = [r["robust_area"] / r["prior_area"] for r in fig2]
+    toward = [r["lam_robust"] / r["lam_common"] for r in fig2]
+    s_common, s_robust = sweep["sensitivity_common"], sweep["sensitivity_robust"]
+    keep_common, keep_robust = (
+        sweep["outlier_keeps_true_common"],
+        sweep["outlier_keeps_true_robust"],
+    )
     claims += [
         (
             "Fig. 2, most consistent position: robust / common area",
             "— (Fig. 2, no numbers)",
             f"{first['robust_area'] / first['common_area']:.3f} (CM = {first['consistency']:.2f})",
+            verdict.NO_CLAIM,
         ),
         (
             "Fig. 2, least consistent position: robust / common area",
             "— (Fig. 2, no numbers)",
             f"{last['robust_area'] / last['common_area']:.3g} (CM = {last['consistency']:.2f})",
+            verdict.NO_CLAIM,
         ),
         (
             "Fig. 2: common area / prediction area, positions 1 → 4",
             "'experiences large changes when the measurement set just changes slightly'",
-            " → ".join(f"{r['common_area'] / r['prior_area']:.3g}" for r in fig2),
+            " → ".join(f"{a:.3g}" for a in common)
+            + f"; reproduced if max / min ≥ {MUCH:g}, partly if > 1",
+            verdict.at_least(max(common) / min(common), MUCH, 1.0 + 1e-9),
         ),
         (
-            "Fig. 2: robust area / prediction area, positions 1 → 4",
+            "Fig. 2: robust area / prediction area; robust λ / common λ, positions 1 → 4",
             "'growing tendency towards the prediction set with falling degree of consistency'",
-            " → ".join(f"{r['robust_area'] / r['prior_area']:.3g}" for r in fig2),
+            " → ".join(f"{a:.3g}" for a in robust)
+            + "; "
+            + " → ".join(f"{x:.3g}" for x in toward)
+            + "; λ = 0 is the prediction itself: reproduced if the λ ratio never rises from "
+            "position to position and ends below its start, partly if it ends below",
+            verdict.all_or_some([bool(np.all(np.diff(toward) <= 0)), toward[-1] < toward[0]])
+            if toward[-1] < toward[0]
+            else verdict.NOT_REPRODUCED,
         ),
         (
             "sweep: max / min area over the offsets (common, robust)",
             "—",
             f"{sweep['area_range_common']:.3g}, {sweep['area_range_robust']:.3g}",
+            verdict.NO_CLAIM,
         ),
         (
             "sweep: max |Δ ln area| per strip width of shift (common, robust)",
             "'large changes' (common) vs 'reduced impact' (robust)",
-            f"{sweep['sensitivity_common']:.3g}, {sweep['sensitivity_robust']:.3g}",
+            f"{s_common:.3g}, {s_robust:.3g}; reproduced if common ≥ {MUCH:g}× robust, partly if "
+            "larger",
+            verdict.at_least(s_common / s_robust, MUCH, 1.0 + 1e-9),
         ),
         (
             "outlier offsets where the EBS still holds the true state (common, robust)",
             "'outliers lead to an extremely small EBS'; robust: 'reduced impact'",
-            f"{sweep['outlier_keeps_true_common']:.0%}, {sweep['outlier_keeps_true_robust']:.0%}",
+            f"{keep_common:.0%}, {keep_robust:.0%} of {sweep['outliers']} outlier offsets; "
+            "reproduced if the common scheme loses the true state at most of them and the robust "
+            "one keeps it more often, partly if one holds",
+            verdict.all_or_some([keep_common < 0.5, keep_robust > keep_common]),
         ),
     ]
     fig1_table = markdown_table(
@@ -359,7 +388,7 @@ def _markdown(fig1: list[dict], fig2: list[dict], sweep: dict) -> str:
     return "\n\n".join(
         [
             "## HS96 fusion: Fig. 1 cases, Fig. 2 common vs robust scheme",
-            claim_table(claims),
+            verdict.table(claims),
             "Areas in Fig. 1 (prediction area " + _fmt(PRIOR.volume()) + "):",
             fig1_table,
             f"Areas in Fig. 2 (strip half-width {FIG2_HALF_WIDTH} h, raw strip as in HS96):",

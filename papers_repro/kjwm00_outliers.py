@@ -32,9 +32,9 @@ from optbound.localization.sonar import (
     measurement_box,
     simulate_ranges,
 )
+from optbound.papers_repro._common import claim_table, pyplot, run_cli, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import rooms
-from papers_repro._common import claim_table, pyplot, run_cli, save_figure
 
 PAPER = "KJWM00"
 WORLD = rooms.BELT_ROOM

@@ -17,8 +17,8 @@ from matplotlib.patches import Patch
 
 from optbound.interval import Paving, sivia
 from optbound.interval.plot import COLORS
+from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 from optbound.report.tables import markdown_table
-from papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 
 PAPER = "LJMW97"
 X0 = [[-2.5, 2.5], [-2.0, 2.0]]

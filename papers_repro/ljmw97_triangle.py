@@ -29,9 +29,9 @@ from matplotlib.patches import Wedge
 
 from optbound.localization.geometry import to_world
 from optbound.localization.sonar import SonarPaving, clearance_test, localize, simulate_ranges
+from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import rooms
-from papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 
 PAPER = "LJMW97"
 WORLD = rooms.TRIANGLE

@@ -1,7 +1,7 @@
 """Run every reproduction script into one folder and write ``summary.md`` with all tables.
 
-The scripts are found by :func:`papers_repro._common.scripts` (every module with ``PAPER`` and
-``main``), the same discovery as ``optbound repro``.
+The scripts are found by :func:`optbound.papers_repro._common.scripts` (every module with
+``PAPER`` and ``main``), the same discovery as ``optbound repro``.
 """
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from papers_repro._common import DEFAULT_OUT, scripts
+from optbound.papers_repro._common import DEFAULT_OUT, scripts
 
 
 def run_all(out_dir: Path | str = DEFAULT_OUT, quick: bool = False) -> Path:

@@ -49,7 +49,7 @@ def _clip_effect() -> str:
 
 
 def _sivia_codac() -> str:
-    from benchmarks.sivia_codac import run, table
+    from optbound.bench.sivia_codac import run, table
 
     return table(run())
 
@@ -118,7 +118,7 @@ def _localization() -> str:
     """The localization family's BH instance (tiny suite, seed 0): every bound's area ratio."""
     import os
 
-    from benchmarks import localization_tightness as lt
+    from optbound.bench import localization_tightness as lt
     from optbound.report.tables import markdown_table
 
     (task,) = lt.tasks("tiny", 0)

@@ -4,14 +4,16 @@ The tiny suite runs the same families through the same code path as quick, only 
 """
 
 import json
+import subprocess
+import sys
 
 import pytest
 
-from benchmarks.registry import families
-from benchmarks.runner import run_suite
+from optbound.bench.registry import FAMILIES, families
+from optbound.bench.runner import run_suite
 from optbound.cli import main
 from optbound.report import load_results
-from tests.benchmarks.test_family import FULL_ONLY
+from tests.bench.test_family import FULL_ONLY
 
 TIGHTNESS = [f.name for f in families() if f.kind == "tightness"]
 
@@ -117,12 +119,12 @@ def test_report_of_a_corrupt_results_file_fails_clearly(tmp_path, capsys):
 
 def _fails_at_once(argv, capsys, monkeypatch) -> str:
     """Run ``argv``, expect exit code 2 with one line on stderr, and no task run."""
-    import benchmarks.runner
+    import optbound.bench.runner
 
     def no_work(*args, **kwargs):
         raise AssertionError("work started before the arguments were checked")
 
-    monkeypatch.setattr(benchmarks.runner, "run_suite", no_work)
+    monkeypatch.setattr(optbound.bench.runner, "run_suite", no_work)
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith(f"optbound {argv[0]}: error: ")
@@ -195,6 +197,30 @@ def test_bench_includes_the_papers(bench_dir):
     papers = load_results(bench_dir)["families"]["papers"]
     assert papers["status"] == "ok" and papers["records"]
     assert all(rec["quick"] for rec in papers["records"])
+
+
+@pytest.mark.parametrize(
+    "argv", [["--help"], ["bench", "--help"], ["repro", "--help"], ["bench", "--family", "nope"]]
+)
+def test_help_and_argument_errors_import_no_family_numba_scipy_or_cvxpy(argv):
+    """The parser is built from static names: answering ``--help`` or refusing an argument
+    imports none of the heavy libraries and no family module."""
+    heavy = ["numba", "scipy", "cvxpy", *{t.partition(":")[0] for t in FAMILIES.values()}]
+    code = (
+        "import sys\n"
+        "from optbound.cli import main\n"
+        "try:\n"
+        f"    main({argv!r})\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        f"loaded = [m for m in {heavy!r} if m in sys.modules]\n"
+        "assert not loaded, loaded\n"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True, stdout=subprocess.DEVNULL)
+
+
+def test_every_registered_name_is_its_family_name():
+    assert [fam.name for fam in families()] == list(FAMILIES)
 
 
 def test_no_command_prints_help(capsys):

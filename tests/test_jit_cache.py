@@ -1,11 +1,16 @@
 """Stale numba caches of the kernels are dropped when any kernel source changes."""
 
+import subprocess
+import sys
+
+import pytest
+
 from optbound import _jit_cache
 
 
 def test_kernel_sources_cover_cross_file_kernels():
     names = {p.name for p in _jit_cache.kernel_sources()}
-    assert {"midrad.py", "_domain.py", "_compiled.py", "polygons.py"} <= names
+    assert {"midrad.py", "domain.py", "compiled.py", "polygons.py"} <= names
 
 
 def test_a_changed_source_drops_the_kernel_caches(tmp_path):
@@ -24,3 +29,31 @@ def test_a_changed_source_drops_the_kernel_caches(tmp_path):
     source.write_text("from numba import njit  # edited\n")
     assert _jit_cache.refresh([tmp_path], [source])
     assert not cached.exists()
+
+
+def test_every_kernel_source_is_in_a_kernel_package():
+    packages = {p.relative_to(_jit_cache.ROOT).parts[0] for p in _jit_cache.kernel_sources()}
+    assert packages - {"_jit_cache.py"} <= set(_jit_cache.KERNEL_PACKAGES)
+
+
+@pytest.mark.parametrize("package", _jit_cache.KERNEL_PACKAGES)
+def test_the_check_runs_before_any_kernel_of_the_package_is_loaded(package):
+    """Importing a kernel subpackage runs ``optbound._fresh`` (which runs ``refresh``) to
+    completion before any module that defines kernels, those of other packages included
+    (``sys.modules`` is in order of completed imports)."""
+    kernels = [
+        ".".join(("optbound", *p.relative_to(_jit_cache.ROOT).with_suffix("").parts))
+        for p in _jit_cache.kernel_sources()
+        if p.name != "_jit_cache.py"  # it names njit in its text and defines no kernel
+    ]
+    own = [k for k in kernels if k.startswith(f"optbound.{package}.")]
+    code = (
+        "import importlib, sys\n"
+        f"for name in {own!r}:\n"
+        "    importlib.import_module(name)\n"
+        "order = list(sys.modules)\n"
+        f"loaded = [k for k in {kernels!r} if k in sys.modules]\n"
+        "assert all(order.index('optbound._fresh') < order.index(k) for k in loaded)\n"
+    )
+    assert own
+    subprocess.run([sys.executable, "-c", code], check=True)

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from optbound.interval._fenv import round_to_nearest
+from optbound.interval.fenv import round_to_nearest
 from tests.readme_tables import BLOCK, GENERATORS, blocks
 
 README = Path(__file__).resolve().parents[1] / "README.md"

@@ -12,6 +12,8 @@ fast and certified are fenced in the private package ``optbound.analytic._kernel
 docstring states the rules a kernel follows.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.analytic.arc_noise import ArcNoise, parabola_arc_ellipse
 from optbound.analytic.bounding_update import BoundingUpdate, bounding_update
 from optbound.analytic.lifted import LiftedUpdate, lifted_update
@@ -46,3 +48,5 @@ __all__ = [
     "minkowski_sum_batch",
     "parabola_arc_ellipse",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -13,8 +13,8 @@ from fractions import Fraction
 
 import numpy as np
 
+from optbound._core import check_ellipsoid
 from optbound.analytic._kernels.midrad import inflate
-from optbound.sets._domain import check_ellipsoid
 from optbound.sets.ellipsoid import Ellipsoid
 
 Matrix = list[list[Fraction]]

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from optbound.sets import _validate as v
+from optbound._core import validate as v
 
 # Relative inflation of the shape so that the three contact points, at level exactly 1 in
 # exact arithmetic, stay inside after the rounding of centre and shape (a few ulps each).

@@ -29,8 +29,8 @@ from fractions import Fraction
 import numpy as np
 from scipy.optimize import brentq
 
+from optbound._core import validate as v
 from optbound.analytic._exact import enclose, matmul, rational, solve, transpose
-from optbound.sets import _validate as v
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.result import BoundResult
 

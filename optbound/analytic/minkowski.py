@@ -21,6 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import check_ellipsoid, raise_for
+from optbound._core import validate as v
 from optbound.analytic._kernels import batch as _batch
 from optbound.analytic._kernels.minkowski_kernel import (
     BAD_KAPPA,
@@ -32,8 +34,6 @@ from optbound.analytic._kernels.minkowski_kernel import (
     sum_range,
 )
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
-from optbound.sets import _validate as v
-from optbound.sets._domain import check_ellipsoid, raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.result import BoundResult
 
@@ -99,7 +99,7 @@ def _raise(code: int, index: int, names, batched: bool) -> None:
     if code == OUT_OF_DOMAIN:
         raise ValueError(
             "the sum leaves the supported domain (semi-axes up to 1e60, see "
-            "optbound.sets._domain)" + where
+            "optbound._core.domain)" + where
         )
     raise_for(code % 10, *names[code // 10], where)
 
@@ -143,7 +143,7 @@ def minkowski_sum(
     Guarantee: the returned ellipsoid, its floats read as exact numbers, contains E1 + E2
     exactly (for every criterion and every kappa in (0, 1)): the member is evaluated with
     certified error bounds and inflated by a certified margin (``analytic._kernels.midrad``);
-    near-degenerate results are widened to the output domain (``optbound.sets._domain``).
+    near-degenerate results are widened to the output domain (``optbound._core.domain``).
 
     Parameters
     ----------

@@ -19,7 +19,7 @@ Conventions of this module (numerical decisions, all conservative):
   arithmetic) and inflated by a certified margin (``optbound.analytic._kernels.midrad``); ``margin``
   reports it. It is about ``U cond(result)`` (each shape entry is rounded once; storing the
   result as floats alone costs that much in its thin direction). Near-degenerate
-  results are widened to the output domain (``optbound.sets._domain``), never refused.
+  results are widened to the output domain (``optbound._core.domain``), never refused.
 - ``clip=True`` first clips each plane to the ellipsoid's (outward) extent: a plane missing the
   ellipsoid moves to the tangent plane. This does not change E ∩ S but shrinks the result a lot
   in the partial case. A half-space is always clipped (its open side ends at E's extent).
@@ -38,6 +38,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import raise_for
+from optbound._core import validate as v
 from optbound.analytic._kernels import batch as _batch
 from optbound.analytic._kernels import threads as _threads
 from optbound.analytic._kernels.strip_kernel import (
@@ -58,8 +60,6 @@ from optbound.analytic._kernels.strip_kernel import (
     workspace,
 )
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
-from optbound.sets import _validate as v
-from optbound.sets._domain import raise_for
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.result import BoundResult
 from optbound.sets.strip import Halfspace, Strip

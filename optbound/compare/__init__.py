@@ -5,6 +5,7 @@ and :func:`prove_contains` proves or refutes (with a counterexample) that a boun
 set. Pure numpy/scipy/mpmath (no cvxpy), so reports can compare bounds without the SDP stack.
 """
 
+from optbound._lazy import attach
 from optbound.compare._ellipsoid import bound_set
 from optbound.compare.containment import contains, max_level
 from optbound.compare.metrics import (
@@ -35,3 +36,5 @@ __all__ = [
     "volume_ratio",
     "volume_ratio_bracket",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -4,7 +4,7 @@
 in the constrained-zonotope representation (Scott et al., Automatica 2016, Prop. 1): the
 affine map, the Minkowski sum with W and the generalized intersection with
 ``y_k - V = <y_k - c_V, G_V>`` under ``R = C``. No reduction is applied; the floats only add
-rounding generators (``optbound.sets._certified``), so each returned set contains the exact
+rounding generators (``optbound.sets.certified``), so each returned set contains the exact
 set and exceeds it by rounding only.
 """
 
@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.estimation.system import LinearSystem
-from optbound.sets._certified import sum_centers
-from optbound.sets.box import Box
+from optbound.sets.certified import sum_centers
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
 from optbound.sets.zonotope import Zonotope
 

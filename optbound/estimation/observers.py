@@ -23,10 +23,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
 from optbound.sets.base import EmptySetError
-from optbound.sets.box import Box
 from optbound.sets.zonotope import Zonotope
 
 METHODS = ("interval", "zonotope", "constrained_zonotope")
@@ -66,7 +66,7 @@ def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
     """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the F-radius gain (module
     docstring, Alamo et al. 2005, Property 3)."""
     from optbound.interval import Interval
-    from optbound.sets._certified import enclose, error_generators, matmul, point, split
+    from optbound.sets.certified import enclose, error_generators, matmul, point, split
 
     mid, s = split(Interval(lo, hi))
     c, G = Z.center, Z.generators

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets.box import Box
+from optbound._core import Box
+from optbound._core import validate as v
 from optbound.sets.zonotope import Zonotope, as_zonotope
 
 

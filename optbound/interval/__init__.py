@@ -8,13 +8,15 @@
 - :func:`relaxed_test`, :func:`min_outliers`: the relaxed intersection of KJWM00.
 
 Every interval operation and paving runs in round-to-nearest and restores the caller's
-rounding mode afterwards (:mod:`optbound.interval._fenv`), so optbound and codac (which sets
+rounding mode afterwards (:mod:`optbound.interval.fenv`), so optbound and codac (which sets
 round-upward when imported) work in one process; ``codac_interop`` converts between them.
 The submodules are imported in round-to-nearest too, so that their constants (and the float
 literals Python parses while compiling them) are the intended ones.
 """
 
-from optbound.interval._fenv import round_to_nearest
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
+from optbound.interval.fenv import round_to_nearest
 
 with round_to_nearest():
     from optbound.interval.functions import (
@@ -84,3 +86,5 @@ __all__ = [
     "tri_not",
     "tri_or",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

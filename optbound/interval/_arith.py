@@ -13,7 +13,6 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, vectorize
 
-from optbound.interval._compiled import down1, fmax, fmin, up1
 from optbound.interval._rounding import (
     TRANSCENDENTAL_ULPS,
     down,
@@ -21,12 +20,13 @@ from optbound.interval._rounding import (
     up,
     up_nonneg,
 )
+from optbound.interval.compiled import down1, fmax, fmin, up1
 
 INF = np.inf
 
 
 # Compiled ufuncs for +, - and * (numpy broadcasts their operands without copies): the same
-# IEEE operations as ``_rounding.down``/``up`` with one ulp (bit for bit, see ``_compiled``),
+# IEEE operations as ``_rounding.down``/``up`` with one ulp (bit for bit, see ``compiled``),
 # fused into one pass instead of ~20 numpy temporaries per product on SIVIA's box arrays.
 _F2 = ["float64(float64, float64)"]
 _F4 = ["float64(float64, float64, float64, float64)"]

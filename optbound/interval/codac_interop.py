@@ -20,7 +20,7 @@ optbound                       codac
 
 Importing codac sets the process's rounding mode to round-upward (its backend, gaol, relies
 on it); optbound's interval code switches to round-to-nearest for its own work and restores
-the mode afterwards (:mod:`optbound.interval._fenv`), so both libraries can be used side by
+the mode afterwards (:mod:`optbound.interval.fenv`), so both libraries can be used side by
 side.
 """
 
@@ -28,9 +28,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from optbound._core import Box
 from optbound.interval.interval import Interval, as_interval
 from optbound.interval.paving import Paving
-from optbound.sets import Box
 
 #: codac's names of the three box lists of a paving, and optbound's.
 PAVING_PARTS = (("inner", "inner"), ("bound", "boundary"), ("outer_complem", "outside"))

@@ -13,7 +13,7 @@ import operator
 import numpy as np
 
 from optbound.interval import _arith, _transcendental
-from optbound.interval._fenv import nearest
+from optbound.interval.fenv import nearest
 from optbound.interval.interval import INF, UFUNC_IMPL, Interval, as_interval
 from optbound.interval.tribool import from_masks
 
@@ -22,7 +22,7 @@ from optbound.interval.tribool import from_masks
 def _lift(kernel, *args, may_empty: bool = False, domain=None, **params) -> Interval:
     """Apply a bound-array kernel to intervals, propagating empty and partial entries.
 
-    Runs in round-to-nearest whatever the caller's rounding mode (:mod:`._fenv`).
+    Runs in round-to-nearest whatever the caller's rounding mode (:mod:`.fenv`).
 
     ``may_empty`` marks kernels that can return empty entries (domain restrictions); only then
     is the result scanned for them, which keeps the common path to the kernel's own ops.

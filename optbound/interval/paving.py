@@ -10,21 +10,10 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from optbound.sets import Box
+from optbound._core import Box
 
 #: Candidate box pairs examined at once by :meth:`Paving.components` (bounds memory).
 _PAIR_CHUNK = 4_000_000
-
-
-def box_rows(name: str, value, allow_infinite: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Validate a box given as a :class:`Box` or ``(k, 2)`` ``[lo, hi]`` rows; return lo, hi."""
-    try:
-        box = value if isinstance(value, Box) else Box.from_array(value)
-    except ValueError as err:
-        raise ValueError(f"{name}: {err}") from None
-    if not allow_infinite and not box.is_bounded:
-        raise ValueError(f"{name} must be a bounded box, got {box}")
-    return np.array(box.lo), np.array(box.hi)
 
 
 def box_volumes(boxes: np.ndarray) -> np.ndarray:

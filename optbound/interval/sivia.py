@@ -17,13 +17,13 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from optbound.interval._fenv import nearest
+from optbound._core import Box, box_rows
+from optbound._core import validate as v
 from optbound.interval._rounding import check_round_to_nearest
+from optbound.interval.fenv import nearest
 from optbound.interval.interval import Interval, as_interval
-from optbound.interval.paving import Paving, box_rows
+from optbound.interval.paving import Paving
 from optbound.interval.tribool import Tri, from_masks, tri_and
-from optbound.sets import Box
-from optbound.sets import _validate as v
 
 #: codac's default bisection ratio: the split point sits at 49 % of the widest side, which
 #: keeps bisection lines off the symmetry axes of the usual test sets.
@@ -118,7 +118,7 @@ def pave(
     ------
     RuntimeError
         If round-to-nearest cannot be set. The paving runs in round-to-nearest and the
-        caller's rounding mode is restored afterwards (:mod:`optbound.interval._fenv`), so
+        caller's rounding mode is restored afterwards (:mod:`optbound.interval.fenv`), so
         it computes correctly after ``import codac``, which sets round-upward.
 
     Returns

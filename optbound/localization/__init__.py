@@ -65,6 +65,8 @@ from __future__ import annotations
 import importlib
 import warnings
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+
 __all__ = [
     "association",
     "environment",

@@ -314,4 +314,70 @@ def associate(
     return AssociationResult(out, V, spurious, search.nodes, unpruned, search.leaves)
 
 
-__all__ = ["SPURIOUS", "Association", "AssociationResult", "associate", "visibility_matrix"]
+@dataclass(frozen=True)
+class AssociationScore:
+    """How an association compares with the true one (:func:`score`).
+
+    Attributes
+    ----------
+    paired : int
+        True bearings paired with their own landmark.
+    true_bearings : int
+        Bearings that came from a landmark.
+    discarded : int
+        Spurious bearings declared spurious.
+    spurious : int
+        Spurious bearings.
+    """
+
+    paired: int
+    true_bearings: int
+    discarded: int
+    spurious: int
+
+    @property
+    def accuracy(self) -> float:
+        """Fraction of all bearings correctly associated or correctly discarded."""
+        return (self.paired + self.discarded) / (self.true_bearings + self.spurious)
+
+
+def score(pairs, labels) -> AssociationScore:
+    """Compare an association with the truth, bearing by bearing.
+
+    Parameters
+    ----------
+    pairs : array_like of int, shape (N,)
+        The association's landmark per bearing (``Association.pairs``; ``SPURIOUS`` = -1).
+    labels : array_like of int, shape (N,)
+        The true landmark per bearing, ``SPURIOUS`` for a false measurement.
+
+    Returns
+    -------
+    AssociationScore
+        A true bearing counts as correct only when paired with its own landmark; a spurious
+        one only when declared ``SPURIOUS`` [HS96, Sect. 3: "discards false measurements"].
+    """
+    p = np.asarray(pairs)
+    t = np.asarray(labels)
+    if p.ndim != 1 or t.shape != p.shape:
+        raise ValueError(f"pairs and labels must be 1-D of equal length, got {p.shape}, {t.shape}")
+    if p.size == 0:
+        raise ValueError("pairs is empty: there is no bearing to score")
+    false = t == SPURIOUS
+    return AssociationScore(
+        paired=int(np.sum((p == t) & ~false)),
+        true_bearings=int(np.sum(~false)),
+        discarded=int(np.sum((p == SPURIOUS) & false)),
+        spurious=int(np.sum(false)),
+    )
+
+
+__all__ = [
+    "SPURIOUS",
+    "Association",
+    "AssociationResult",
+    "AssociationScore",
+    "associate",
+    "score",
+    "visibility_matrix",
+]

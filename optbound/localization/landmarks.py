@@ -38,9 +38,9 @@ import math
 import numpy as np
 from numba import njit
 
+from optbound._core import validate as v
 from optbound.interval import Interval, Paving, Tri, atan2, intersection, pave, sqrt
 from optbound.sets import Box, Ellipsoid
-from optbound.sets import _validate as v
 
 #: Default relative singularity threshold: smallest singular value of H over the size of the
 #: terms that cancel in it (see :func:`linear_position`).
@@ -55,17 +55,7 @@ REFINE = 3
 # ----------------------------------------------------------------------------- validation
 def as_landmarks(name: str, value, min_count: int = 1) -> np.ndarray:
     """Validate an (N, 2) array of finite real landmark positions."""
-    try:
-        arr = np.asarray(value)
-    except ValueError:  # ragged nested sequences
-        raise ValueError(f"{name} must be an (N, 2) array, got rows of different lengths") from None
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex values")
-    try:
-        arr = arr.astype(float)
-    except (TypeError, ValueError) as err:
-        raise TypeError(f"{name} must be an (N, 2) array of numbers: {err}") from None
-    arr = v.finite_matrix(name, arr, (None, 2))
+    arr = v.finite_matrix(name, v.real_array(name, value, "an (N, 2) array"), (None, 2))
     if arr.shape[0] < min_count:
         raise ValueError(f"{name} needs at least {min_count} landmarks, got {arr.shape[0]}")
     return arr
@@ -94,10 +84,8 @@ def as_shapes(name: str, value, count: int) -> np.ndarray:
     """
     if value is None:
         return np.zeros((count, 2, 2))
-    arr = np.asarray(value)
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex values")
-    arr = np.broadcast_to(arr.astype(float), (count, 2, 2)) if arr.shape == (2, 2) else arr
+    arr = v.real_array(name, value)
+    arr = np.broadcast_to(arr, (count, 2, 2)) if arr.shape == (2, 2) else arr
     if arr.shape != (count, 2, 2):
         raise ValueError(f"{name} must have shape ({count}, 2, 2) or (2, 2), got {arr.shape}")
     if not np.all(np.isfinite(arr)):
@@ -462,6 +450,21 @@ def heading_bound(L, Lx, Ly, alphas, delta, xy: Box) -> Interval:
     return out - round(float(out.midpoint()) / (2 * np.pi)) * TWO_PI  # centre in [-pi, pi]
 
 
+def pose_test(landmarks, alphas, delta_alpha: float, landmark_shapes=None, psi_range=None):
+    """The three-valued test of :func:`pose_paving`'s set on ``Interval`` ``(x, y, psi)`` boxes.
+
+    ``psi_range`` ``(lo, hi)`` (default ``(-pi, pi)``): the headings the test must handle
+    (boxes of other headings can only lose TRUE answers, never get a wrong one). Arguments
+    as in :func:`linear_position_bound`.
+    """
+    L = as_landmarks("landmarks", landmarks, min_count=1)
+    a = as_angles("alphas", alphas, L.shape[0])
+    delta = as_bound("delta_alpha", delta_alpha)
+    shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
+    lo, hi = (-np.pi, np.pi) if psi_range is None else psi_range
+    return _bearing_test(L, shapes, a, delta, _windows(lo, hi, a))
+
+
 def pose_paving(
     landmarks,
     alphas,
@@ -559,4 +562,5 @@ __all__ = [
     "linear_position_bound",
     "localize",
     "pose_paving",
+    "pose_test",
 ]

@@ -16,7 +16,7 @@ feedback of [HS96, Sect. 4] also used by ``tracker.SetTracker``.
 **Not guaranteed.** The strip of the tangent plane is not the crescent: the exact feasible set
 can stick out of it (curvature of the bearing circles), so the result can miss part of the
 exact set, and the true position. Only the ellipsoid-strip fusion itself is an outer bound.
-``benchmarks/localization_tightness.py`` measures how often the truth and the exact set's
+``optbound/bench/localization_tightness.py`` measures how often the truth and the exact set's
 boxes fall outside.
 """
 

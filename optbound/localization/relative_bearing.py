@@ -48,11 +48,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from optbound._core import validate as v
 from optbound.analytic import lifted_update, parabola_arc_ellipse
 from optbound.interval import Paving, constraint, pave, tri_and
 from optbound.localization.geometry import bearing_residual, bearing_sides, wrap_angle
 from optbound.sets import Box, Ellipsoid, PolynomialLifting, PseudoEllipsoid, QuadraticSet
-from optbound.sets import _validate as v
 from optbound.sets.pseudo_ellipsoid import CoverProof
 from optbound.sets.result import BoundResult
 
@@ -483,7 +483,7 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
     - ``boxes``: ``optimal.mvee`` of the corners of every inner and boundary box, certified to
       contain them, hence (being convex) every box and the exact set.
 
-    Cost: one SDP with ``lower_bound=True`` (about 0.1-0.5 s) plus one MVEE over the corners.
+    Cost: one SDP with ``lower_bound=True`` plus one MVEE over the corners.
     """
     from optbound import optimal  # cvxpy is imported only when a reference is asked for
 

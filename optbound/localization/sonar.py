@@ -26,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import box_array, box_rows
+from optbound._core import validate as v
 from optbound.interval import (
     Interval,
     Paving,
@@ -35,10 +37,8 @@ from optbound.interval import (
     relaxed_test,
     tri_and,
 )
-from optbound.interval.paving import box_rows
 from optbound.localization import geometry as g
 from optbound.sets import Box
-from optbound.sets import _validate as v
 
 #: Default maximal range d_max [m]: what a sonar returns when its cone meets no reflecting
 #: face [LJMW97, eq. (2)] (the Polaroid sensors' usual limit).
@@ -68,7 +68,7 @@ class Sonar:
     rel_accuracy: float
 
     def __post_init__(self):
-        pos = _finite_array("position", self.position)
+        pos = v.finite_array("position", self.position)
         if pos.shape != (2,):
             raise ValueError(f"position must be a pair (x, y), got shape {pos.shape}")
         object.__setattr__(self, "position", (float(pos[0]), float(pos[1])))
@@ -81,19 +81,6 @@ class Sonar:
         if not 0.0 <= alpha < 1.0:
             raise ValueError(f"rel_accuracy must lie in [0, 1), got {alpha}")
         object.__setattr__(self, "rel_accuracy", alpha)
-
-
-def _finite_array(name: str, value) -> np.ndarray:
-    """``value`` as a finite real float array; a clear ``ValueError`` naming ``name`` if not."""
-    if np.iscomplexobj(value):
-        raise ValueError(f"{name} must be real, got complex values")
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as err:
-        raise ValueError(f"{name} must be an array of numbers: {err}") from None
-    if not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be finite")
-    return arr
 
 
 def _belt(sonars) -> list[Sonar]:
@@ -159,22 +146,11 @@ def simulate_ranges(world, sonars, pose, d_max: float = D_MAX) -> np.ndarray:
     world = g.as_segments(world)
     belt = _belt(sonars)
     d_max = _d_max(d_max)
-    poses = _finite_array("pose", pose)
+    poses = v.finite_array("pose", pose)
     if poses.shape[-1:] != (3,) or poses.ndim not in (1, 2):
         raise ValueError(f"pose must be (x, y, theta) or an (m, 3) array, got {poses.shape}")
     per_segment = _ranges(world, belt, tuple(np.moveaxis(poses, -1, 0)), d_max)
     return per_segment.min(axis=-1)
-
-
-def _pose_boxes(boxes) -> np.ndarray:
-    arr = _finite_array("boxes", boxes)
-    if arr.ndim != 3 or arr.shape[1:] != (3, 2):
-        raise ValueError(
-            f"boxes must have shape (m, 3, 2) ([lo, hi] of x, y, theta), got {arr.shape}"
-        )
-    if np.any(arr[:, :, 0] > arr[:, :, 1]):
-        raise ValueError("boxes must have lo <= hi on every side")
-    return arr
 
 
 def _min_over_segments(per_segment: Interval) -> Interval:
@@ -190,7 +166,7 @@ def range_inclusion(world, sonars, boxes, d_max: float = D_MAX) -> Interval:
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
-    arr = _pose_boxes(boxes)
+    arr = box_array("boxes", boxes, 3)
     pose = tuple(Interval._make(arr[:, k, 0], arr[:, k, 1]) for k in range(3))
     return _min_over_segments(_ranges(world, belt, pose, _d_max(d_max)))
 
@@ -198,7 +174,7 @@ def range_inclusion(world, sonars, boxes, d_max: float = D_MAX) -> Interval:
 def measurement_box(sonars, ranges) -> np.ndarray:
     """(t, 2) rows ``[d (1 - alpha), d (1 + alpha)]`` rounded outward [LJMW97, eq. (3)]."""
     belt = _belt(sonars)
-    d = _finite_array("ranges", ranges)
+    d = v.finite_array("ranges", ranges)
     if d.shape != (len(belt),):
         raise ValueError(f"ranges must have shape ({len(belt)},) (one per sonar), got {d.shape}")
     if np.any(d <= 0.0):
@@ -268,7 +244,7 @@ class SonarPaving(Paving):
 
     def contains(self, pose) -> bool:
         """Whether the pose ``(x, y, theta)``, theta read modulo 2 pi, is in inner ∪ boundary."""
-        p = _finite_array("pose", pose)
+        p = v.finite_array("pose", pose)
         if p.shape != (3,):
             raise ValueError(f"pose must be (x, y, theta), got shape {p.shape}")
         boxes = self.outer()

@@ -25,11 +25,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound import analytic
+from optbound._core import validate as v
 from optbound.localization.geometry import wrap_angle
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import as_bound
 from optbound.sets import Ellipsoid, Strip
-from optbound.sets import _validate as v
 
 CRITERIA = ("projection", "volume", "robust")
 XY = (0, 1)

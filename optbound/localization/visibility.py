@@ -17,11 +17,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound._core import box_array, real_array
 from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import (
     as_polygons,
-    real_array,
     segment_pair_meets,
     segments_meet_polygons,
 )
@@ -29,26 +29,6 @@ from optbound.localization.geometry import (
 #: Default bound on nested bisections per LUVIA call, whatever ``eps``: a box is cut into at
 #: most 2**MAX_DEPTH sub-boxes, which bounds the cost when boxes grow large.
 MAX_DEPTH = 10
-
-
-def as_boxes(boxes, name: str, *, volume: bool = False) -> np.ndarray:
-    """Validate an (m, 2, 2) array of boxes ``[[x_lo, x_hi], [y_lo, y_hi]]`` per row.
-
-    ``volume=True`` also requires ``lo < hi`` on both axes (a robot's position box).
-    Raises ``ValueError`` naming ``name`` for a wrong shape, non-finite, complex or
-    unordered bounds.
-    """
-    arr = np.ascontiguousarray(real_array(boxes, name, "an (m, 2, 2) array"))
-    if arr.ndim != 3 or arr.shape[1:] != (2, 2):
-        raise ValueError(f"{name} must have shape (m, 2, 2) ([[x_lo, x_hi], [y_lo, y_hi]] rows)")
-    if not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be finite")
-    if np.any(arr[:, :, 0] > arr[:, :, 1]):
-        raise ValueError(f"{name}: a lower bound exceeds its upper bound")
-    if volume and np.any(arr[:, :, 0] >= arr[:, :, 1]):
-        bad = np.flatnonzero(np.any(arr[:, :, 0] >= arr[:, :, 1], axis=1)).tolist()
-        raise ValueError(f"{name}: box(es) {bad} have no volume (lo >= hi on an axis)")
-    return arr
 
 
 def visibility_test(boxes1, boxes2, obstacles) -> np.ndarray:
@@ -71,7 +51,7 @@ def visibility_test(boxes1, boxes2, obstacles) -> np.ndarray:
         UNKNOWN otherwise. Proven with [GLH12, eqs. (6)-(7)] in outward-rounded arithmetic,
         plus the cases eq. (19) alone misses: a segment inside an obstacle, touching.
     """
-    b1, b2 = as_boxes(boxes1, "boxes1"), as_boxes(boxes2, "boxes2")
+    b1, b2 = box_array("boxes1", boxes1, 2), box_array("boxes2", boxes2, 2)
     if b1.shape != b2.shape:
         raise ValueError(f"boxes1 and boxes2 must have the same shape, got {b1.shape}, {b2.shape}")
     return tri_not(segments_meet_polygons(b1, b2, as_polygons(obstacles)))
@@ -229,7 +209,7 @@ def luvia(
         containing every position of it consistent with the measurements, the other boxes
         and E; None when every sub-box is refuted (the data contradict the boxes).
     """
-    b = as_boxes(boxes, "boxes", volume=True)
+    b = box_array("boxes", boxes, 2, volume=True)
     m = len(b)
     if m == 0:
         raise ValueError("boxes is empty: LUVIA needs a team of robots")
@@ -247,7 +227,7 @@ def _travel(distance, shape: tuple[int, ...], allowed: str) -> np.ndarray:
     Raises ``ValueError`` naming ``distance`` for another shape, non-finite bounds, a lower
     bound above the upper one, or a negative travel (the model moves along the heading).
     """
-    d = real_array(distance, "distance", "an array")
+    d = real_array("distance", distance)
     try:
         d = np.broadcast_to(d, (*shape, 2))
     except ValueError:
@@ -272,7 +252,7 @@ def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     most ``heading_error``. Outward-rounded: the result contains every position reachable by
     a travel in ``[d]`` along a heading in ``[θ - δ, θ + δ]``.
     """
-    b = as_boxes(boxes, "boxes")
+    b = box_array("boxes", boxes, 2)
     m = len(b)
     d = _travel(distance, (m,), "(2,) or (m, 2)")
     th = np.asarray(heading, dtype=float)
@@ -340,13 +320,13 @@ def track(
         box misses ``region`` (the measurements are inconsistent with E⁻, E⁺, the odometry
         and the region).
     """
-    b = as_boxes(boxes0, "boxes0", volume=True)
+    b = box_array("boxes0", boxes0, 2, volume=True)
     m = len(b)
     if m == 0:
         raise ValueError("boxes0 is empty: tracking needs at least one robot")
     env, eps, max_depth = _check_env(env), _check_eps(eps), _check_depth(max_depth)
     passes = _check_passes(passes)
-    room = None if region is None else as_boxes([region], "region")[0]
+    room = None if region is None else box_array("region", [region], 2)[0]
     th = np.asarray(headings, dtype=float)
     if th.ndim != 2 or th.shape[1] != m:
         raise ValueError(f"headings must have shape (K, {m}), got {th.shape}")
@@ -356,7 +336,7 @@ def track(
         raise TypeError(f"visibility must be booleans, got dtype {vis.dtype}")
     if vis.shape != (steps, m, m):
         raise ValueError(f"visibility must have shape ({steps}, {m}, {m}), got {vis.shape}")
-    dist = real_array(distance, "distance", "an array")
+    dist = real_array("distance", distance)
     dist = _travel(
         dist[:, None] if dist.ndim == 2 else dist, (steps, m), "(2,), (K, 2) or (K, m, 2)"
     )
@@ -402,7 +382,7 @@ def measure(points, obstacles) -> np.ndarray:
     (m, m) bool array
         Symmetric, True on the diagonal.
     """
-    pts = real_array(points, "points", "an (m, 2) array")
+    pts = real_array("points", points, "an (m, 2) array")
     if pts.ndim != 2 or pts.shape[1] != 2:
         raise ValueError(f"points must have shape (m, 2), got {pts.shape}")
     m = len(pts)
@@ -455,7 +435,7 @@ def exact_paving(robot: int, y, boxes, env: Environment, eps: float, *, split: i
     Paving
         ``inner ⊂ S_i ⊂ inner ∪ boundary`` within ``boxes[robot]``.
     """
-    b = as_boxes(boxes, "boxes", volume=True)
+    b = box_array("boxes", boxes, 2, volume=True)
     m = len(b)
     if isinstance(robot, bool) or not isinstance(robot, int | np.integer) or not 0 <= robot < m:
         raise ValueError(f"robot must be an index in [0, {m}), got {robot!r}")

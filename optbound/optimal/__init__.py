@@ -12,6 +12,8 @@ Every answer is certified in float64 and inflated if needed (``certify``), and c
 ``OuterResult``. This is the only subpackage that imports cvxpy.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._lazy import attach
 from optbound.optimal.enclosing import mvee
 from optbound.optimal.errors import CertificationError, EmptyIntersectionError, SolverError
 from optbound.optimal.intersection import outer_ellipsoid
@@ -30,3 +32,5 @@ __all__ = [
     "optimal_pseudo_ellipsoid",
     "outer_ellipsoid",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

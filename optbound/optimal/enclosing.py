@@ -12,16 +12,16 @@ from __future__ import annotations
 import cvxpy as cp
 import numpy as np
 
+from optbound._core import COND_MAX, MAG, RATIO_MAX
+from optbound._core import validate as v
 from optbound.optimal import _cvx
 from optbound.optimal.certify import certify_points
 from optbound.optimal.result import OuterResult
 from optbound.optimal.template import Template, cached_template
 from optbound.sets import Ellipsoid
-from optbound.sets import _validate as v
-from optbound.sets._domain import COND_MAX, MAG, RATIO_MAX
 
 # Relative singular value below which a point cloud counts as flat: its enclosing ellipsoid
-# would be (nearly) degenerate, beyond the supported condition number (optbound.sets._domain).
+# would be (nearly) degenerate, beyond the supported condition number (optbound._core.domain).
 _FLAT_RTOL = 10.0 / np.sqrt(COND_MAX)
 
 

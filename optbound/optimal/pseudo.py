@@ -25,12 +25,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from optbound._core import box_array
 from optbound.optimal.certify import certify_points
 from optbound.optimal.enclosing import mvee
 from optbound.optimal.khachiyan import khachiyan_mvee
 from optbound.optimal.lower import volume_lower_bound
 from optbound.sets import Ellipsoid, PolynomialLifting, PseudoEllipsoid
-from optbound.sets.lifting import box_array
 from optbound.sets.result import BoundResult
 
 # Points passed to the SDP at first (the farthest out in a rough enclosing ellipsoid), and

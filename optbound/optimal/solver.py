@@ -31,10 +31,16 @@ Dual values are not recovered (they keep those of an earlier solve), so only cal
 primal values opt in. Any Clarabel status but "Solved" falls back to the full path with its
 retries and refusals. ``tests/optimal/test_solver.py`` checks that both paths give the same
 statuses, values and certified ellipsoids.
+
+The fast path reads cvxpy's private compiled program (``Problem._cache``, ``ParamConeProg``,
+``ReducedMat``, the inverse reductions), which cvxpy may change in any release: it is used
+only under the cvxpy releases of :data:`FAST_PATH_CVXPY`, on which those tests passed; under
+any other cvxpy every solve takes the public ``problem.solve`` path (same answers, slower).
 """
 
 from __future__ import annotations
 
+import re
 import time
 import warnings
 from functools import cache
@@ -42,15 +48,33 @@ from functools import cache
 import cvxpy as cp
 import numpy as np
 import scipy.sparse as sp
-from cvxpy.lin_ops.lin_op import CONSTANT_ID
-from cvxpy.reductions.solution import Solution
-from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import CLARABEL, dims_to_solver_cones
 
 from optbound.optimal.errors import SolverError
 
+#: cvxpy releases (major, minor) on which the fast path was verified.
+FAST_PATH_CVXPY = ((1, 9),)
+
+
+def fast_path_supported(version: str) -> bool:
+    """Whether cvxpy ``version`` (e.g. ``"1.9.3"``) is one of :data:`FAST_PATH_CVXPY`."""
+    match = re.match(r"(\d+)\.(\d+)", version)
+    return match is not None and (int(match[1]), int(match[2])) in FAST_PATH_CVXPY
+
+
+#: Whether ``solve(..., primal_only=True)`` may take the fast path under the installed cvxpy.
+FAST_PATH = fast_path_supported(cp.__version__)
+
+if FAST_PATH:  # private modules, imported only where their layout was verified
+    from cvxpy.lin_ops.lin_op import CONSTANT_ID
+    from cvxpy.reductions.solution import Solution
+    from cvxpy.reductions.solvers.conic_solvers.clarabel_conif import (
+        CLARABEL,
+        dims_to_solver_cones,
+    )
+
 SOLVERS = ("CLARABEL", "SCS")
 #: Clarabel's own solve time (its ``solve_time``, seconds) of the last fast-path solve in this
-#: process, or None; ``benchmarks/sdp_cache.py`` divides a whole call's time by it.
+#: process, or None; ``optbound/bench/sdp_cache.py`` divides a whole call's time by it.
 last_clarabel_seconds: float | None = None
 # Clarabel gained PSD cones in 0.5.0; log det needs them together with exponential cones.
 _MIN_CLARABEL = (0, 5, 0)
@@ -278,7 +302,7 @@ def solve(problem: cp.Problem, solver: str, primal_only: bool = False) -> float:
     """Solve ``problem`` in place and return the wall time of all attempts in seconds.
 
     With ``primal_only`` (the caller reads no dual values), re-solves with Clarabel take the
-    fast path described in the module docstring.
+    fast path described in the module docstring (under a verified cvxpy, :data:`FAST_PATH`).
 
     Raises
     ------
@@ -287,7 +311,7 @@ def solve(problem: cp.Problem, solver: str, primal_only: bool = False) -> float:
         refused); an infeasible problem is not retried.
     """
     name = check_solver(solver)
-    fast = primal_only and name == "CLARABEL"
+    fast = primal_only and name == "CLARABEL" and FAST_PATH
     statuses = []
     start = time.perf_counter()
     if fast and _fast_solve(problem):

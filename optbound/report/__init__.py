@@ -5,6 +5,7 @@
 ``DIR/results.json`` alone.
 """
 
+from optbound._lazy import attach
 from optbound.report.document import REPORT_FILE, write_report
 from optbound.report.headline import headline_rows
 from optbound.report.readme import headline_refusal, source_readme, update_readme
@@ -22,3 +23,5 @@ __all__ = [
     "write_csv",
     "write_report",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -199,6 +199,46 @@ def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = 
     return data
 
 
+def corrupt_scan(
+    alphas, truth, spurious_rate: float, missing_rate: float, rng: np.random.Generator
+) -> tuple[np.ndarray, np.ndarray]:
+    """A scan with missing and spurious bearings injected ([HS96, Sect. 3]: false measurements).
+
+    Each true bearing is dropped with probability ``missing_rate`` (an occluded or unseen
+    reflector); then ``Binomial(n, spurious_rate)`` spurious bearings, ``n`` the scan's number
+    of true bearings, are added uniformly in ``[0, 2 pi)`` (reflections off other objects).
+
+    Parameters
+    ----------
+    alphas : array_like, shape (n,)
+        The scan's bearings (``OfficeData.scans[k][0]``).
+    truth : array_like of int, shape (n,)
+        Their landmark indices (``OfficeData.scans[k][1]``).
+    spurious_rate, missing_rate : float
+        Rates in ``[0, 1]``.
+    rng : numpy.random.Generator
+
+    Returns
+    -------
+    (alphas, labels) : ndarray (m,), ndarray of int (m,)
+        The corrupted scan (kept true bearings first, spurious ones after) and each bearing's
+        landmark index, ``-1`` for a spurious bearing (``association.SPURIOUS``).
+    """
+    alphas = np.asarray(alphas, dtype=float)
+    truth = np.asarray(truth, dtype=int)
+    if alphas.ndim != 1 or truth.shape != alphas.shape:
+        raise ValueError(
+            f"alphas and truth must be 1-D of equal length, got {alphas.shape} and {truth.shape}"
+        )
+    for name, rate in (("spurious_rate", spurious_rate), ("missing_rate", missing_rate)):
+        if not 0.0 <= rate <= 1.0:
+            raise ValueError(f"{name} must be in [0, 1], got {rate}")
+    keep = rng.uniform(size=alphas.size) >= missing_rate
+    n_spurious = int(rng.binomial(alphas.size, spurious_rate))
+    fake = rng.uniform(0.0, 2.0 * np.pi, n_spurious)
+    return np.r_[alphas[keep], fake], np.r_[truth[keep], np.full(n_spurious, -1)]
+
+
 @dataclass
 class TrackResult:
     """Per-scan outputs of :func:`track` (after the scan's updates)."""
@@ -302,6 +342,7 @@ __all__ = [
     "OdometryBounds",
     "OfficeData",
     "TrackResult",
+    "corrupt_scan",
     "course_pose",
     "dead_reckoning",
     "lap_length",

@@ -7,11 +7,15 @@ an ellipsoid in the lifted space of a ``PolynomialLifting`` [BH, eq. (10)]. ``Zo
 operation is guaranteed in floating point.
 
 The set protocol (what a type must define, may add and gets for free) is written down in
-``optbound.sets.base``; the base of every bound result in ``optbound.sets.result``.
+``optbound.sets.base``; the base of every bound result in ``optbound.sets.result``. ``Box`` is
+defined in :mod:`optbound._core` (every layer, interval arithmetic included, uses boxes) and
+exported here unchanged.
 """
 
+from optbound import _fresh  # noqa: F401  (drops stale kernel caches before any is loaded)
+from optbound._core import Box
+from optbound._lazy import attach
 from optbound.sets.base import ConvexSet, QuadraticDescription
-from optbound.sets.box import Box
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
 from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.lifting import PolynomialLifting
@@ -35,3 +39,5 @@ __all__ = [
     "Strip",
     "Zonotope",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -51,77 +51,37 @@ Registration
 ------------
 A type becomes public by one line in ``optbound/sets/__init__.py`` (import and ``__all__``);
 nothing in ``optimal`` or ``compare`` names concrete set types for dispatch.
+
+:class:`ConvexSet`, :class:`QuadraticDescription` and ``LinearRange`` are defined in
+:mod:`optbound._core.convex` (``Box``, a core type every layer uses, implements them) and
+exported here with the rest of the protocol.
 """
 
 from __future__ import annotations
 
-from abc import ABC, abstractmethod
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
 
+from optbound._core.convex import ConvexSet, LinearRange, QuadraticDescription
+
 if TYPE_CHECKING:
     from optbound.sets.ellipsoid import Ellipsoid
-    from optbound.sets.quadratic import QuadraticSet
 
-#: One linear range ``lo <= a^T x <= hi``: a finite non-zero normal ``a`` (n,) and float ends,
-#: of which one may be infinite (``-inf``/``+inf``: a half-space).
-LinearRange = tuple[np.ndarray, float, float]
+__all__ = [
+    "BoxProver",
+    "ConvexSet",
+    "EmptySetError",
+    "LinearRange",
+    "Outlined",
+    "QuadraticDescription",
+    "QuadraticallyDescribed",
+    "VolumeBracket",
+]
 
 
 class EmptySetError(ValueError):
     """A set was found to be empty where a non-empty one is needed (e.g. to clip to it)."""
-
-
-@dataclass(frozen=True)
-class QuadraticDescription:
-    """A set as the intersection of quadratic inequalities and linear ranges in ``[x; 1]``.
-
-    The set equals ``{x : q(x) <= 0 for q in forms} ∩ {x : lo <= a^T x <= hi for (a, lo, hi)
-    in ranges}`` exactly: a description that is only an outer approximation would make the
-    SDP layer's bounds contain a larger set than asked for (still outer bounds, but of the
-    wrong set), one that is smaller would make them unsound.
-
-    Attributes
-    ----------
-    forms : tuple of QuadraticSet
-        Used by the S-procedure as they are, one multiplier each [Boyd, El Ghaoui, Feron &
-        Balakrishnan 1994, Sect. 2.6.3].
-    ranges : tuple of LinearRange
-        Kept apart from ``forms`` because the SDP layer first clips each range to the bounded
-        members of an intersection (``optbound.optimal.lift``), which makes the S-procedure
-        tight where the raw product form ``(a^T x - lo)(a^T x - hi) <= 0`` is not
-        [HS96, Sect. 4].
-    """
-
-    forms: tuple[QuadraticSet, ...] = ()
-    ranges: tuple[LinearRange, ...] = ()
-
-
-class ConvexSet(ABC):
-    """A closed convex subset of R^n (the required part of the protocol: module docstring)."""
-
-    @property
-    @abstractmethod
-    def dim(self) -> int:
-        """Dimension n of the ambient space."""
-
-    @abstractmethod
-    def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
-        """Membership of each row of ``X`` (shape (m, n)); a single point gives a bool.
-
-        ``tol`` is a relative slack on the defining inequality, so boundary points pass.
-        """
-
-    @abstractmethod
-    def support(self, d) -> np.ndarray | float:
-        """Support function ``max {d^T x : x in set}`` for each row of ``d`` (may be +inf)."""
-
-    def extent(self, a) -> tuple[float, float]:
-        """Range ``[min a^T x, max a^T x]`` of the linear functional ``a`` over the set."""
-        a = np.asarray(a, dtype=float)
-        return -float(self.support(-a)), float(self.support(a))
 
 
 @runtime_checkable

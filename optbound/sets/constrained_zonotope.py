@@ -10,16 +10,18 @@ zonotope.
 As for :class:`~optbound.sets.Zonotope`, every returned set is *guaranteed* in floating
 point: products and sums are enclosed in interval arithmetic, centre/generator errors become
 extra axis-aligned generators, constraint errors become slack generators (one per affected
-row), see ``optbound.sets._certified``. Support values and the bounding box come from HiGHS
-LPs certified by weak duality (:func:`~optbound.sets._certified.max_bound`).
+row), see ``optbound.sets.certified``. Support values and the bounding box come from HiGHS
+LPs certified by weak duality (:func:`~optbound.sets.certified.max_bound`).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._certified import (
+from optbound._core import Box, box_array, real_array
+from optbound._core import validate as v
+from optbound.sets.base import ConvexSet, EmptySetError
+from optbound.sets.certified import (
     affine_image,
     compact,
     enclose,
@@ -32,10 +34,6 @@ from optbound.sets._certified import (
     split,
     sum_centers,
 )
-from optbound.sets._domain import real_array
-from optbound.sets.base import ConvexSet, EmptySetError
-from optbound.sets.box import Box
-from optbound.sets.lifting import box_array
 from optbound.sets.zonotope import Zonotope, as_zonotope, center_generators
 from optbound.sets.zonotope_reduction import generator_budget, reduce_generators
 
@@ -149,13 +147,13 @@ class ConstrainedZonotope(ConvexSet):
 
     def is_empty(self) -> bool:
         """True only if the set is *proven* empty (a Farkas certificate checked with outward
-        rounding, see :func:`~optbound.sets._certified.proven_empty`); False means "not
+        rounding, see :func:`~optbound.sets.certified.proven_empty`); False means "not
         proven empty", the safe answer for an outer bound."""
         return proven_empty(self._A, self._b)
 
     def support(self, d) -> np.ndarray | float:
         """Certified upper bound of ``max d^T x`` per row of ``d`` (``-inf`` if proven
-        empty): ``d^T c`` plus the LP bound of :func:`~optbound.sets._certified.max_bound`."""
+        empty): ``d^T c`` plus the LP bound of :func:`~optbound.sets.certified.max_bound`."""
         dirs, single = v.points("d", d, self.dim)
         h = np.empty(dirs.shape[0])
         for k, dk in enumerate(dirs):

@@ -12,11 +12,10 @@ from math import lgamma, log, pi
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._domain import check_ellipsoid, raise_for, real_array
+from optbound._core import Box, check_ellipsoid, raise_for, real_array
+from optbound._core import validate as v
 from optbound.sets._triangular import lower_inverse
 from optbound.sets.base import ConvexSet, QuadraticDescription
-from optbound.sets.box import Box
 
 
 class Ellipsoid(ConvexSet):
@@ -34,7 +33,7 @@ class Ellipsoid(ConvexSet):
     ValueError
         If either argument is non-finite, the dimensions disagree, ``shape`` is not symmetric
         positive definite, or the ellipsoid lies outside the supported domain (condition
-        number, magnitudes, centre against size: see ``optbound.sets._domain``).
+        number, magnitudes, centre against size: see ``optbound._core.domain``).
     TypeError
         If an argument is complex or not numeric.
     """

@@ -24,7 +24,8 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from optbound.sets import _validate as v
+from optbound._core import box_array
+from optbound._core import validate as v
 
 
 class PolynomialLifting:
@@ -191,23 +192,11 @@ class PolynomialLifting:
 
     def box_image(self, boxes) -> np.ndarray:
         """Guaranteed enclosure of ``T(box)`` per box: (m, n, 2) boxes -> (m, L, 2)."""
-        from optbound.interval import Interval  # sets must not import interval at load time
+        from optbound.interval import Interval  # on first use: keeps `import optbound` light
 
         B = box_array("boxes", boxes, self.dim)
         comps = self.components(*(Interval(B[:, j, 0], B[:, j, 1]) for j in range(self.dim)))
         return np.stack([np.stack([c.lo, c.hi], axis=-1) for c in comps], axis=1)
-
-
-def box_array(name: str, boxes, dim: int) -> np.ndarray:
-    """Validate an (m, dim, 2) array of finite ``[lo, hi]`` boxes with ``lo <= hi``."""
-    B = np.asarray(boxes, dtype=float)
-    if B.ndim != 3 or B.shape[1:] != (dim, 2):
-        raise ValueError(f"{name} must have shape (m, {dim}, 2), got {B.shape}")
-    if not np.all(np.isfinite(B)):
-        raise ValueError(f"{name} must be finite")
-    if np.any(B[:, :, 0] > B[:, :, 1]):
-        raise ValueError(f"{name} must have lo <= hi")
-    return B
 
 
 def _polynomials(exps: np.ndarray, coef: np.ndarray, u: list) -> list:

@@ -25,10 +25,10 @@ from functools import cached_property
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets.box import Box
+from optbound._core import Box, as_box, box_array
+from optbound._core import validate as v
 from optbound.sets.ellipsoid import Ellipsoid
-from optbound.sets.lifting import PolynomialLifting, box_array
+from optbound.sets.lifting import PolynomialLifting
 
 # Relative outward margin of the bounding box read off the lifted shape (covers the rounding
 # of sqrt, of the product by scale and of the sum with offset, each a few ulps).
@@ -265,7 +265,7 @@ class PseudoEllipsoid:
         """Fast (not guaranteed) area estimate: the fraction of grid cell centres inside P."""
         if self.dim != 2:
             raise ValueError(f"grid_area is for n = 2, this set has n = {self.dim}")
-        box = self.bounding_box() if X0 is None else _as_box(X0)
+        box = self.bounding_box() if X0 is None else as_box("X0", X0)
         xs, ys = (
             box.lo[j] + (np.arange(resolution) + 0.5) / resolution * (box.hi[j] - box.lo[j])
             for j in range(2)
@@ -280,7 +280,7 @@ class PseudoEllipsoid:
 
         if self.dim != 2:
             raise ValueError(f"boundary() is for 2-D sets, this one has n = {self.dim}")
-        box = self.bounding_box() if X0 is None else _as_box(X0)
+        box = self.bounding_box() if X0 is None else as_box("X0", X0)
         pad = 0.02 * (box.hi - box.lo)
         xs = np.linspace(box.lo[0] - pad[0], box.hi[0] + pad[0], resolution)
         ys = np.linspace(box.lo[1] - pad[1], box.hi[1] + pad[1], resolution)
@@ -315,10 +315,6 @@ def _bisect(boxes: np.ndarray) -> np.ndarray:
     left[rows, axis, 1] = mid
     right[rows, axis, 0] = mid
     return np.concatenate([left, right])
-
-
-def _as_box(X0) -> Box:
-    return X0 if isinstance(X0, Box) else Box.from_array(X0)
 
 
 def _dot(weights: np.ndarray, terms: list):

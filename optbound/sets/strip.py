@@ -6,8 +6,8 @@ import math
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._domain import MAG
+from optbound._core import MAG
+from optbound._core import validate as v
 from optbound.sets.base import ConvexSet, QuadraticDescription
 
 

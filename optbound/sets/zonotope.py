@@ -2,7 +2,7 @@
 
 Every operation that returns a set is *guaranteed*: its floats, read as exact numbers, give a
 set containing the exact result. Rounding errors of products and sums are moved into extra
-axis-aligned generators (see ``optbound.sets._certified``); the support function and the
+axis-aligned generators (see ``optbound.sets.certified``); the support function and the
 bounding box are outward-rounded. ``contains`` is a float test (a linear program per point,
 with the relative slack ``tol``); :meth:`Zonotope.tri_contains` is the proven one.
 """
@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._certified import (
+from optbound._core import Box, real_array
+from optbound._core import validate as v
+from optbound.sets.base import ConvexSet
+from optbound.sets.certified import (
     affine_image,
     compact,
     magnitude,
@@ -22,9 +24,6 @@ from optbound.sets._certified import (
     split,
     sum_centers,
 )
-from optbound.sets._domain import real_array
-from optbound.sets.base import ConvexSet
-from optbound.sets.box import Box
 from optbound.sets.zonotope_reduction import generator_budget, reduce_generators
 
 

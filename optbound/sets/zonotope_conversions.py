@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound.interval import Interval
-from optbound.sets._certified import magnitude, matmul, point, row_sum_up
+from optbound.sets.certified import magnitude, matmul, point, row_sum_up
 
 
 def _transpose(iv: Interval) -> Interval:

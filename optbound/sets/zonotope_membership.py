@@ -20,10 +20,10 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linprog
 
+from optbound._core import box_array
 from optbound.interval import Interval
 from optbound.interval.tribool import from_masks
-from optbound.sets._certified import matmul, point
-from optbound.sets.lifting import box_array
+from optbound.sets.certified import matmul, point
 
 
 def lp_contains(

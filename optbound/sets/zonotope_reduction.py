@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets import _validate as v
-from optbound.sets._certified import error_generators, row_sum_up
+from optbound._core import validate as v
+from optbound.sets.certified import error_generators, row_sum_up
 
 REDUCTION_METHODS = ("girard", "combastel")
 

@@ -17,7 +17,7 @@ from math import comb
 
 import numpy as np
 
-from optbound.sets._certified import row_sum_up
+from optbound.sets.certified import row_sum_up
 from optbound.sets.zonotope_reduction import reduce_generators
 
 

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from optbound import Ellipsoid, Halfspace, Strip, analytic
-from optbound.sets._domain import COND_MAX, RATIO_MAX
+from optbound._core import COND_MAX, RATIO_MAX
 from tests.analytic import exact as X
 from tests.analytic.test_strip_fusion import CRITERIA
 

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 from numba import njit
 
+from optbound._core import check_ellipsoid
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
@@ -16,7 +17,6 @@ from optbound.analytic._kernels.lanes import (
     trace_inverse_lanes,
 )
 from optbound.analytic._kernels.midrad import inflate
-from optbound.sets._domain import check_ellipsoid
 
 
 @njit(error_model="numpy")

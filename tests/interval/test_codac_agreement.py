@@ -1,13 +1,13 @@
 """optbound's SIVIA reproduces codac 2's pavings (areas) with aligned bisection and eps rules.
 
-Only agreement is tested here; the speed comparison is a benchmark (benchmarks/sivia_codac.py).
+Only agreement is tested here; the speed comparison is a benchmark (optbound/bench/sivia_codac.py).
 """
 
 import importlib.util
 
 import pytest
 
-from benchmarks.sivia_codac import run
+from optbound.bench.sivia_codac import run
 from optbound.interval._rounding import check_round_to_nearest
 
 

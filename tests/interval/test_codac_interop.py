@@ -24,7 +24,7 @@ ROOT = Path(__file__).resolve().parents[2]
 PAVE = """
 import json, numpy as np
 from optbound import interval as iv
-from optbound.interval._fenv import get_rounding
+from optbound.interval.fenv import get_rounding
 mode = get_rounding()
 p = iv.sivia(lambda x, y: (x**2 + y**2, 2 * x**2 + y**2), [[-np.inf, 1], [1, np.inf]],
              [[-2.5, 2.5], [-2, 2]], eps=0.02)

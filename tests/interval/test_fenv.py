@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from optbound.interval._fenv import FE_TONEAREST, get_rounding, round_to_nearest, set_rounding
+from optbound.interval.fenv import FE_TONEAREST, get_rounding, round_to_nearest, set_rounding
 
 pytestmark = pytest.mark.skipif(get_rounding() is None, reason="no C fenv on this platform")
 

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from optbound.localization.association import SPURIOUS, associate, visibility_matrix
+from optbound.localization.association import SPURIOUS, associate, score, visibility_matrix
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.scenarios import office
 from optbound.sets import Ellipsoid
@@ -91,3 +91,41 @@ def test_bad_input():
         visibility_matrix(Ellipsoid([0, 0, 0], np.eye(3)), [0.1], MAP, grid=(0, 3))
     with pytest.raises(ValueError, match="alphas"):
         associate(Ellipsoid([0, 0, 0], np.eye(3)), [0.1, np.nan, 0.3], MAP, DELTA)
+
+
+def test_score_counts_pairs_and_discards_bearing_by_bearing():
+    # bearing 0 correctly paired, 1 spurious and discarded, 2 paired with the wrong landmark,
+    # 3 a true bearing declared spurious, 4 spurious but paired.
+    s = score([3, SPURIOUS, 5, SPURIOUS, 7], [3, SPURIOUS, 4, 2, SPURIOUS])
+    assert (s.paired, s.true_bearings, s.discarded, s.spurious) == (1, 3, 1, 2)
+    assert s.accuracy == pytest.approx(2 / 5)
+    assert score([1, 2], [1, 2]).accuracy == 1.0
+
+
+def test_score_refuses_mismatched_or_empty_input():
+    with pytest.raises(ValueError, match="equal length"):
+        score([1, 2], [1])
+    with pytest.raises(ValueError, match="empty"):
+        score([], [])
+
+
+def test_injected_spurious_and_missing_bearings_are_scored_correctly():
+    # A tiny injected case: 5 of the visible landmarks, one dropped, one far-off false bearing.
+    rng = np.random.default_rng(11)
+    pose = office.course_pose(3.0)[0]
+    alphas, seen = _scan(pose, rng, keep=6)
+    b = np.sort(_scan(pose, rng)[0])
+    gaps = np.diff(np.r_[b, b[0] + 2 * np.pi])
+    false = np.mod(b[np.argmax(gaps)] + gaps.max() / 2, 2 * np.pi)
+    alphas = np.r_[np.delete(alphas, 2), false]
+    labels = np.r_[np.delete(seen, 2), SPURIOUS]
+    best = min(
+        associate(_prior(pose), alphas, MAP, DELTA).associations, key=lambda a: a.max_residual
+    )
+    s = score(best.pairs, labels)
+    assert (s.paired, s.true_bearings, s.discarded, s.spurious) == (5, 5, 1, 1)
+    assert s.accuracy == 1.0
+    # A wrong association is scored as such: pair the false bearing with a landmark instead.
+    wrong = best.pairs.copy()
+    wrong[-1] = seen[2]
+    assert score(wrong, labels).accuracy == pytest.approx(5 / 6)

@@ -183,6 +183,28 @@ def test_area_criterion_is_proven_too(sect5):
     assert rb.certify_contains(res.bound, data, paving).proven
 
 
+def test_area_criterion_is_proven_where_its_area_is_flat_up_to_the_lambda_cap():
+    # The fifth geometry of the BH reproduction's sweep (seed 2026): on its first ring the grid
+    # area is flat from lambda ~ 1 to the cap, whose member (cond ~5e8) made the later updates
+    # degenerate and the containment unprovable. The flat minimum now takes the smallest
+    # lambda as small as the minimum, far below the cap, and the bound is proven.
+    from optbound.analytic import lifted
+    from optbound.scenarios import bh_geometry as bh
+
+    rng = np.random.default_rng(2026)
+    for _ in range(5):
+        L, pairs, gam, eps, _x = bh.random_instance(rng)
+    res = rb.localize(L, pairs, gam, eps, order=2, criterion="area")
+    assert res.lams[0] < 0.01 * lifted.AREA_T_MAX / (1 - lifted.AREA_T_MAX)
+    data = rb.measurements(L, pairs, gam, eps)
+    box = rb.prior_box(data)
+    X0 = np.stack([box.lo, box.hi], axis=1)
+    hull = rb.exact_paving(L, pairs, gam, eps, X0, np.max(box.hi - box.lo) / 40).hull()
+    X1 = np.stack([hull.lo, hull.hi], axis=1)
+    paving = rb.exact_paving(L, pairs, gam, eps, X1, np.max(hull.hi - hull.lo) / 100)
+    assert rb.certify_contains(res.bound, data, paving).proven
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_random_geometries_are_proven(seed):
     rng = np.random.default_rng(seed)

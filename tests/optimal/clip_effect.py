@@ -1,7 +1,7 @@
 """Effect of ``clip`` on the S-procedure reference with many strips (README, optimal section).
 
 ``python -m tests.optimal.clip_effect`` rebuilds instances of the benchmark's recursive family
-(``benchmarks/recursive_tightness.py``: a prior ellipsoid of condition number 10 and k strips of
+(``optbound/bench/recursive_tightness.py``: a prior ellipsoid of condition number 10 and k strips of
 normalised width 0.2 around one true point) for ``SEEDS`` seeds per dimension, and prints the
 medians over the seeds of: the SDP volume over the certified lower bound (the largest of the
 modes' ``lower_bound=True``) for ``clip="ellipsoids"``, ``clip="intersection"`` and the
@@ -16,8 +16,8 @@ import time
 
 import numpy as np
 
-from benchmarks.recursive_tightness import instance
 from optbound import analytic
+from optbound.bench.recursive_tightness import instance
 from optbound.optimal import outer_ellipsoid
 
 DIMS = (2, 3, 4, 5, 6)

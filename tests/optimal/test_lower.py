@@ -6,8 +6,8 @@ from math import gamma, pi
 import numpy as np
 import pytest
 
-from benchmarks import recursive_tightness
 from optbound import Box, Ellipsoid, QuadraticSet, Strip
+from optbound.bench import recursive_tightness
 from optbound.optimal import outer_ellipsoid
 from optbound.optimal.khachiyan import khachiyan_mvee
 from optbound.optimal.lift import lift

@@ -191,3 +191,48 @@ def test_fast_path_gives_the_plain_cvxpy_ellipsoid_certified(monkeypatch, n, obj
         )
         assert fast.status == plain.status == cp.OPTIMAL and fast.certified
         assert _exact_certificate_margin(fast, sets) <= 0
+
+
+def test_the_fast_path_is_limited_to_verified_cvxpy_releases():
+    assert solver.fast_path_supported(cp.__version__) == solver.FAST_PATH
+    major, minor = solver.FAST_PATH_CVXPY[0]
+    assert solver.fast_path_supported(f"{major}.{minor}.0")
+    assert solver.fast_path_supported(f"{major}.{minor}.12rc1")
+    assert not solver.fast_path_supported(f"{major}.{minor + 1}.0")
+    assert not solver.fast_path_supported(f"{major + 1}.{minor}.0")
+    assert not solver.fast_path_supported("unknown")
+
+
+@pytest.mark.skipif(not solver.FAST_PATH, reason="the fast path is off under this cvxpy")
+@pytest.mark.parametrize("objective", ["volume", "trace", "projection"])
+def test_an_unverified_cvxpy_takes_the_public_path_with_the_same_results(monkeypatch, objective):
+    """With the fast path switched off (as under an unverified cvxpy), every solve goes
+    through ``problem.solve``, the fast path's private reads are never made, and the answers
+    are those of the fast path."""
+    n = 3
+    dims = [0, n - 1] if objective == "projection" else None
+    intersection.outer_ellipsoid(_strip_sets(n, 100), objective=objective, dims=dims)
+    fast = [
+        intersection.outer_ellipsoid(_strip_sets(n, seed), objective=objective, dims=dims)
+        for seed in SEEDS
+    ]
+    monkeypatch.setattr(solver, "FAST_PATH", False)
+    private = []
+    monkeypatch.setattr(solver, "_fast_program", lambda problem: private.append(problem))
+    monkeypatch.setattr(solver, "_fast_solve", lambda problem: private.append(problem))
+    full = solver._status_of
+    calls = []
+    monkeypatch.setattr(solver, "_status_of", lambda *a: calls.append(a) or full(*a))
+    for seed, quick in zip(SEEDS, fast, strict=True):
+        calls.clear()
+        sets = _strip_sets(n, seed)
+        plain = intersection.outer_ellipsoid(sets, objective=objective, dims=dims)
+        assert calls  # problem.solve
+        scale = np.linalg.norm(plain.ellipsoid.shape)
+        np.testing.assert_allclose(quick.ellipsoid.shape, plain.ellipsoid.shape, atol=1e-8 * scale)
+        np.testing.assert_allclose(
+            quick.ellipsoid.center, plain.ellipsoid.center, atol=1e-8 * np.sqrt(scale)
+        )
+        assert plain.status == cp.OPTIMAL and plain.certified
+        assert _exact_certificate_margin(plain, sets) <= 0
+    assert not private

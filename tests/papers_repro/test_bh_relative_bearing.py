@@ -2,7 +2,7 @@
 
 import pytest
 
-from papers_repro import bh_relative_bearing as repro
+from optbound.papers_repro import bh_relative_bearing as repro
 
 
 @pytest.fixture(scope="module")
@@ -45,3 +45,41 @@ def test_sweep(result):
     assert sw["n"] == 4
     assert sw["proven"] == sw["n"] and sw["truth_inside"] == sw["n"]
     assert all(r["L8"] >= 1.0 - r["exact_rel_width"] for r in sw["rows"])
+
+
+def test_linearized_filter_failures_are_counted(result):
+    sw = result["sweep"]
+    assert sw["lin_truth_lost"] == sum(r["lin_truth_lost"] for r in sw["rows"])
+    assert sw["lin_set_lost"] == sum(r["lin_set_lost"] for r in sw["rows"])
+    assert sw["l8_beats_lin"] == sum(r["L8_beats_lin"] for r in sw["rows"])
+    # Sect. V: recompute the filter's verdict on the truth and on the exact set's inner corners.
+    lin = result["linearized"]
+    assert lin["truth_lost"] == (lin["ellipse"].level(repro.VEHICLE) > 1.0)
+    assert lin["area"] == lin["ellipse"].volume() == result["areas"]["linearized"][0]
+
+
+def test_linearized_check_detects_a_lost_truth():
+    # An instance whose filter ellipse misses the true position is reported as lost.
+    import numpy as np
+
+    from optbound.localization import relative_bearing as rb
+
+    L, pairs, eps = repro.LANDMARKS, repro.PAIRS, np.radians(repro.EPS_DEG)
+    gammas = rb.bearings(repro.VEHICLE, L, pairs)
+    paving = rb.exact_paving(L, pairs, gammas, eps, [[-0.3, 0.3], [-0.3, 0.3]], 0.02)
+    inside = repro.linearized_check(L, pairs, gammas, eps, paving, repro.VEHICLE)
+    far = inside["ellipse"].center + 10 * np.sqrt(np.diag(inside["ellipse"].shape))
+    assert repro.linearized_check(L, pairs, gammas, eps, paving, far)["truth_lost"]
+
+
+def test_claim_rows_carry_verdicts(result):
+    claims = result["claims"]
+    assert all(len(row) == 4 for row in claims)
+    tighter = next(r for r in claims if r[0] == "pseudo-ellipsoid tighter than ellipsoidal bounds")
+    sw, a = result["sweep"], result["areas"]
+    flags = [
+        a["L8"][1] < a["ellipse"][0],
+        a["L8"][1] < a["linearized"][0],
+        sw["l8_beats_lin"] >= repro.MOSTLY * sw["n"],
+    ]
+    assert tighter[3] == repro.verdict.all_or_some(flags)

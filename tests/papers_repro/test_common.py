@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from papers_repro import _common
-from papers_repro._common import scripts
+from optbound.papers_repro import _common
+from optbound.papers_repro._common import scripts
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -52,7 +52,14 @@ def test_paper_is_read_from_the_source_without_importing(tmp_path):
 
 def test_command_line_has_quick(tmp_path):
     out = subprocess.run(
-        [sys.executable, "-m", "papers_repro.ljmw97_appendix_a", "--quick", "--out", str(tmp_path)],
+        [
+            sys.executable,
+            "-m",
+            "optbound.papers_repro.ljmw97_appendix_a",
+            "--quick",
+            "--out",
+            str(tmp_path),
+        ],
         cwd=ROOT,
         capture_output=True,
         text=True,

@@ -2,7 +2,7 @@
 
 import pytest
 
-from papers_repro import _glh12_verdicts as v
+from optbound.papers_repro import _glh12_verdicts as v
 
 R, P, N = v.REPRODUCED, v.PARTLY, v.NOT_REPRODUCED
 

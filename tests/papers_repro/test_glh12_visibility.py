@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from papers_repro import _glh12_verdicts as verdicts
-from papers_repro import glh12_visibility as repro
+from optbound.papers_repro import _glh12_verdicts as verdicts
+from optbound.papers_repro import glh12_visibility as repro
 
 
 @pytest.fixture(scope="module")

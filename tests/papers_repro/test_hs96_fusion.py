@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from papers_repro import hs96_fusion as repro
+from optbound.papers_repro import hs96_fusion as repro
 
 
 @pytest.fixture(scope="module")
@@ -77,3 +77,13 @@ def test_sweep_quantifies_the_papers_claim(result):
 
 def test_markdown_has_the_three_columns(result):
     assert "| quantity | paper | optbound |" in result["markdown"]
+
+
+def test_claim_rows_carry_computed_verdicts(result):
+    md = result["markdown"]
+    assert "| quantity | paper | optbound | verdict |" in md
+    for r in result["fig1"]:
+        line = next(x for x in md.splitlines() if x.startswith(f"| Fig. 1.1 {r['paper_label']}"))
+        expected = "reproduced" if r["case"] == r["paper_case"] else "not reproduced"
+        assert line.rstrip().endswith(f"| {expected} |")
+    assert result["sweep"]["outliers"] > 0

@@ -2,7 +2,9 @@
 
 import pytest
 
-from papers_repro import hs96_office as repro
+from optbound.papers_repro import _verdict as verdict
+from optbound.papers_repro import hs96_office as repro
+from optbound.scenarios import office
 
 
 @pytest.fixture(scope="module")
@@ -59,3 +61,32 @@ def test_robust_lambda_keeps_the_pose_under_phantom_outliers(result):
 def test_markdown_names_the_paper_values(result):
     md = result["markdown"]
     assert "about +-2 cm" in md and "about +-0.5 deg" in md and "our design" in md
+
+
+def test_association_study_counts_add_up(result):
+    rows = result["association"]
+    assert [(r["spurious_rate"], r["missing_rate"]) for r in rows] == list(repro.INJECTION[True])
+    for r in rows:
+        assert r["scans"] == repro.INJECTION_SCANS[True]
+        assert 0 <= r["paired"] <= r["true_bearings"] and 0 <= r["discarded"] <= r["spurious"]
+        assert r["accuracy"] == (r["paired"] + r["discarded"]) / (
+            r["true_bearings"] + r["spurious"]
+        )
+        assert 0.0 < r["seconds_median"] <= r["seconds_max"]
+    # With no injection nothing is spurious; with 10 % spurious some are injected.
+    assert rows[0]["spurious"] == 0 and rows[1]["spurious"] > 0
+
+
+def test_linear_solver_error_is_reported(result):
+    lin = result["linear_solver"]
+    assert lin["scans"] == round(office.lap_length() / office.SPEED * office.SCAN_RATE) + 1
+    assert 0.0 < lin["err_median_cm"] <= lin["err_p95_cm"] <= lin["err_max_cm"] < 50.0
+
+
+def test_every_claim_row_has_a_computed_verdict(result):
+    md = result["markdown"]
+    assert "| quantity | paper | optbound | verdict |" in md
+    worst = min(r["accuracy"] for r in result["association"])
+    expected = verdict.at_least(worst, repro.ASSOCIATION_REPRODUCED, repro.ASSOCIATION_PARTLY)
+    line = next(x for x in md.splitlines() if x.startswith("| association search discards"))
+    assert line.rstrip().endswith(f"| {expected} |")

@@ -3,12 +3,13 @@
 import numpy as np
 import pytest
 
-from papers_repro import hs96_projection as repro
+from optbound.papers_repro import _hs96_kappa as kappa_poly
+from optbound.papers_repro import hs96_projection as repro
 
 
 @pytest.fixture(scope="module")
 def result(tmp_path_factory):
-    return repro.main(tmp_path_factory.mktemp("hs96_projection"), n=1000, seed=0)
+    return repro.main(tmp_path_factory.mktemp("hs96_projection"), quick=True, n=1000, seed=0)
 
 
 def test_writes_its_figures(result):
@@ -75,3 +76,39 @@ def test_trace_criterion_serves_xy_and_neglects_psi(result):
     for crit in ("volume", "trace", "size_xy_psi"):
         assert k[crit]["xy_area"] >= best_xy * (1 - 1e-6)
         assert k[crit]["psi_half"] >= best_psi * (1 - 1e-6)
+
+
+@pytest.mark.parametrize("kind", kappa_poly.CRITERIA)
+def test_kappa_polynomial_root_on_two_balls(kind):
+    # Balls of radii r1, r2: kappa = r2 / (r1 + r2) for volume, trace and size_xy_psi alike.
+    r1, r2 = 0.3, 0.1
+    roots = kappa_poly.roots_in_unit(
+        kappa_poly.polynomial(r1**2 * np.eye(3), r2**2 * np.eye(3), kind)
+    )
+    assert roots == pytest.approx([r2 / (r1 + r2)], rel=1e-12)
+
+
+def test_kappa_polynomial_degrees_are_the_papers():
+    Xi, Gamma = kappa_poly.random_pair(np.random.default_rng(0))
+    degrees = {k: kappa_poly.polynomial(Xi, Gamma, k).degree() for k in kappa_poly.CRITERIA}
+    assert degrees == {"volume": 4, "trace": 2, "size_xy_psi": 3}
+
+
+def test_kappa_check_measures_the_gap_to_the_numerical_minimum(result):
+    poly = result["kappa_polynomials"]
+    for kind in kappa_poly.CRITERIA:
+        r = poly[kind]
+        assert r["n"] == repro.KAPPA_PAIRS[True] == len(r["roots"])
+        assert r["unique"] == sum(c == 1 for c in r["roots"])
+        assert 0.0 <= r["gap"] < 1e-9 and r["kappa_diff"] < 1e-5 and r["library_gap"] < 1e-9
+    # A wrong kappa is seen as a gap: the criterion at kappa + 0.05 is measurably above it.
+    Xi, Gamma = kappa_poly.random_pair(np.random.default_rng(1))
+    (k,) = kappa_poly.roots_in_unit(kappa_poly.polynomial(Xi, Gamma, "trace"))
+    at = [kappa_poly.criterion(Xi, Gamma, "trace", x) for x in (k, k + 0.05)]
+    assert at[1] > at[0] * (1 + 1e-6)
+
+
+def test_claim_rows_carry_verdicts(result):
+    md = result["markdown"]
+    assert "| quantity | paper | optbound | verdict |" in md
+    assert "fourth-order polynomial" in md and "second-order polynomial" in md

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from papers_repro import kjwm00_outliers as repro
+from optbound.papers_repro import kjwm00_outliers as repro
 
 
 @pytest.fixture(scope="module")

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from papers_repro import ljmw97_appendix_a as repro
+from optbound.papers_repro import ljmw97_appendix_a as repro
 
 EPS = (0.1, 0.05, 0.01)
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from optbound.localization.sonar import simulate_ranges
-from papers_repro import ljmw97_triangle as repro
+from optbound.papers_repro import ljmw97_triangle as repro
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
 """run_all writes every discovered script's tables and figures into one folder."""
 
-from papers_repro import run_all
-from papers_repro._common import scripts
+from optbound.papers_repro import run_all
+from optbound.papers_repro._common import scripts
 
 
 def test_summary_lists_every_script(tmp_path):

@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 
 from optbound.localization import geometry
 from optbound.localization.geometry import wrap_angle
@@ -82,3 +83,30 @@ def test_containment_rate_in_a_seeded_short_office_run():
     rate = float(np.mean(result.levels <= 1.0))
     assert rate >= 0.95
     assert result.updates > 1000 and result.wrong_associations == 0
+
+
+def test_corrupt_scan_injects_at_the_stated_rates():
+    data = office.simulate(laps=0.05, seed=3)
+    alphas, truth = data.scans[0]
+    rng = np.random.default_rng(0)
+    same = office.corrupt_scan(alphas, truth, 0.0, 0.0, rng)
+    assert np.array_equal(same[0], alphas) and np.array_equal(same[1], truth)
+    none_left, labels = office.corrupt_scan(alphas, truth, 0.0, 1.0, rng)
+    assert none_left.size == 0 and labels.size == 0
+    # Over many scans the injected fractions approach the rates.
+    kept = spurious = total = 0
+    for _ in range(400):
+        a, lab = office.corrupt_scan(alphas, truth, 0.2, 0.1, rng)
+        true = lab >= 0
+        label_of = dict(zip(alphas.tolist(), truth.tolist(), strict=True))
+        assert [label_of[x] for x in a[true].tolist()] == lab[true].tolist()
+        assert np.all((a[~true] >= 0) & (a[~true] < 2 * np.pi))
+        kept, spurious, total = kept + true.sum(), spurious + (~true).sum(), total + alphas.size
+    assert abs(kept / total - 0.9) < 0.02 and abs(spurious / total - 0.2) < 0.02
+
+
+def test_corrupt_scan_refuses_bad_rates():
+    with pytest.raises(ValueError, match="spurious_rate"):
+        office.corrupt_scan([0.1], [0], 1.5, 0.0, np.random.default_rng(0))
+    with pytest.raises(ValueError, match="equal length"):
+        office.corrupt_scan([0.1, 0.2], [0], 0.0, 0.0, np.random.default_rng(0))

@@ -20,7 +20,7 @@ What it receives. Arrays already converted by ``batch`` (C-contiguous float64, a
 first, shared parameters broadcast to (B, ...)), output arrays made by the caller
 (``threads.ellipsoid_outputs``) and the calling thread's scratch (``threads.workspace``). Its
 values are *not* checked before: the kernel validates every instance in the same pass
-(``lanes.check_ellipsoids``, the supported domain of ``sets._domain``) and reports an error
+(``lanes.check_ellipsoids``, the supported domain of ``optbound._core.domain``) and reports an error
 code per instance, which the Python wrapper turns into a ValueError naming the argument and
 the instance.
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from optbound.sets._domain import real_array
+from optbound._core import real_array
 
 
 def float_array(name: str, value, ndim: int) -> np.ndarray:

@@ -22,15 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from optbound.analytic._kernels.midrad import (
-    RADIUS_SAFETY,
-    TINY,
-    U,
-    output_floor,
-    segment_scale,
-    segment_term,
-)
-from optbound.sets._domain import (
+from optbound._core.domain import (
     ASYMMETRIC,
     CENTER_RANGE,
     COND_MAX,
@@ -44,6 +36,14 @@ from optbound.sets._domain import (
     RATIO_MAX,
     SHAPE_RANGE,
     SYMMETRY_RTOL,
+)
+from optbound.analytic._kernels.midrad import (
+    RADIUS_SAFETY,
+    TINY,
+    U,
+    output_floor,
+    segment_scale,
+    segment_term,
 )
 
 W = 128  # lanes per block (3-D strip kernel: 32, 64, 128, 256, 512 measured; 128 fastest)
@@ -91,7 +91,7 @@ def store_matrices(src, m, dst):
 @njit(cache=True, error_model="numpy", inline="always")
 def cholesky_lanes(A, L, m, pivot, at):
     """Cholesky factors of the lower triangles of A (n, n, W) into L (upper parts zeroed), as
-    ``_domain.cholesky`` per lane: the same operations in the same order, so the same bits.
+    ``_core.domain.cholesky`` per lane: the same operations in the same order, so the same bits.
     ``pivot[at + k]`` receives lane k's smallest pivot, or 0.0 if a pivot is not positive (the
     lane's factor is then meaningless). The sums accumulate in L itself, so that the lane loop
     is always the innermost one."""
@@ -123,7 +123,7 @@ def cholesky_lanes(A, L, m, pivot, at):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def check_ellipsoids(c, C, L, m, code, s):
-    """``_domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
+    """``_core.domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
     (n, n, W); writes the Cholesky factors into L and the error codes (same codes and the same
     precedence as the scalar check) into ``code`` (W,) int. ``s`` is (CHECK_ROWS W,) scratch:
     rows at constant offsets (rows as views of a 2-D array would need run-time overlap checks,

@@ -30,7 +30,7 @@ import numpy as np
 from numba import njit, types
 from numba.extending import intrinsic
 
-from optbound.sets._domain import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
+from optbound._core import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
 
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms
@@ -156,7 +156,7 @@ def inflate(S, D, c, d, T, L) -> float:
 
     A near-degenerate result is widened (never refused): lambda_min(T) is kept above twice
     ``floor = max(tr(S) / COND_OUT, (|c|_inf / RATIO_OUT)^2, (2 / MAG)^2)``, so T lies in the
-    supported domain with a factor >= 50 to spare (``optbound.sets._domain``) and needs no
+    supported domain with a factor >= 50 to spare (``optbound._core.domain``) and needs no
     second validation; only its magnitude is checked here.
 
     Returns the margin ``rho + mu / lambda_min(S)`` (estimated: how much a point at level 1 of

@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound._core import MAG, MAX_DIAG, check_ellipsoid
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
@@ -49,7 +50,6 @@ from optbound.analytic._kernels.midrad import (
     segment_term,
 )
 from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
-from optbound.sets._domain import MAG, MAX_DIAG, check_ellipsoid
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 # How lambda is chosen (ROBUST_PROJECTION: [HS96, eq. (30)] with the projection-optimal lambda).

@@ -16,8 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from optbound._core import cholesky
 from optbound.analytic._kernels.cubic import real_roots
-from optbound.sets._domain import cholesky
 
 
 @njit(cache=True, error_model="numpy", inline="always")

@@ -15,6 +15,7 @@ cones of the sonar model [LJMW97], [KJWM00]) and :mod:`.polygons` (obstacles, wi
 certified box predicates for LUVIA [GLH12]).
 """
 
+from optbound._lazy import attach
 from optbound.localization.geometry.bearings import (
     bearing_gradient,
     bearing_residual,
@@ -47,7 +48,6 @@ from optbound.localization.geometry.primitives import (
     exact,
     intersect,
     occluded,
-    real_array,
     segment_points,
     side,
     to_world,
@@ -75,7 +75,6 @@ __all__ = [
     "pack_polygons",
     "point_in_polygon",
     "polygon_inside",
-    "real_array",
     "segment_pair_meets",
     "segment_points",
     "segments_meet_polygons",
@@ -84,3 +83,5 @@ __all__ = [
     "unit",
     "wrap_angle",
 ]
+
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())

@@ -4,7 +4,7 @@ A polygon is a (k, 2) array of vertices (k >= 3), a closed solid set. The box pr
 compiled (numba) because LUVIA evaluates them on thousands of box pairs per step; they evaluate
 the formulas of :func:`~.primitives.side` and :func:`~.primitives.intersect` [GLH12,
 eqs. (19)-(20)] with the compiled outward-rounded interval operations of
-``optbound.interval._compiled``; tests check that their enclosures lie inside those of
+``optbound.interval.compiled``; tests check that their enclosures lie inside those of
 ``intersect`` on ``Interval`` arrays and contain the exact values.
 """
 
@@ -15,8 +15,9 @@ from fractions import Fraction
 import numpy as np
 from numba import njit
 
-from optbound.interval._compiled import imul, isub
-from optbound.localization.geometry.primitives import intersect, real_array, side
+from optbound._core import real_array
+from optbound.interval.compiled import imul, isub
+from optbound.localization.geometry.primitives import intersect, side
 
 
 def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
@@ -32,7 +33,7 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
         raise TypeError(f"{name} must be a list of (k, 2) vertex arrays, got {type(polygons)}")
     out = []
     for j, poly in enumerate(polygons):
-        arr = real_array(poly, f"{name}[{j}]", "a (k, 2) array")
+        arr = real_array(f"{name}[{j}]", poly, "a (k, 2) array")
         if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] < 3:
             raise ValueError(f"{name}[{j}] must have shape (k, 2) with k >= 3, got {arr.shape}")
         if not np.all(np.isfinite(arr)):

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from optbound._core import real_array
 from optbound.interval import Interval, as_interval
 
 Point = tuple[Any, Any]
@@ -64,17 +65,6 @@ def to_world(pose: tuple[Any, Any, Any], local: Point) -> Point:
     return x + c * local[0] - s * local[1], y + s * local[0] + c * local[1]
 
 
-def real_array(x, name: str, what: str) -> np.ndarray:
-    """``x`` as a float array; ``ValueError`` naming ``name`` if complex or not numeric."""
-    arr = np.asarray(x)
-    if np.iscomplexobj(arr):
-        raise ValueError(f"{name} must be real, got complex coordinates")
-    try:
-        return arr.astype(float)
-    except (TypeError, ValueError) as err:
-        raise ValueError(f"{name} must be {what} of numbers: {err}") from None
-
-
 def as_segments(world, name: str = "world") -> np.ndarray:
     """Validate a map of oriented segments ``[[a_x, a_y], [b_x, b_y]]`` as an (s, 2, 2) array.
 
@@ -82,7 +72,7 @@ def as_segments(world, name: str = "world") -> np.ndarray:
     [KJWM00, eq. (2)]. Raises ``ValueError`` naming ``name`` for an empty map, a wrong shape,
     non-finite or complex coordinates, or a segment of zero length.
     """
-    arr = real_array(world, name, "an (s, 2, 2) array")
+    arr = real_array(name, world, "an (s, 2, 2) array")
     if arr.ndim != 3 or arr.shape[1:] != (2, 2):
         raise ValueError(f"{name} must have shape (s, 2, 2) (segments [a, b]), got {arr.shape}")
     if arr.shape[0] == 0:
@@ -131,7 +121,6 @@ __all__ = [
     "exact",
     "intersect",
     "occluded",
-    "real_array",
     "segment_points",
     "side",
     "to_world",

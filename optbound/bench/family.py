@@ -1,0 +1,93 @@
+"""What a benchmark family is: seeded tasks plus a function that runs one task.
+
+A family turns ``(suite, seed)`` into a list of small JSON-able task dicts (each carrying its
+own instance seed), and ``run(task)`` turns one task into a :class:`TaskOutput`-shaped dict:
+
+``{"records": [...], "figures": [...], "notes": [...]}``
+
+Records are flat dicts (one measured ratio or time each) that :mod:`optbound.report` turns
+into tables, histograms and CSV; figures are drawable 2-D instances; notes are sentences the
+report prints verbatim (e.g. "codac is not installed").
+"""
+
+from __future__ import annotations
+
+import importlib
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass
+
+SUITES = ("tiny", "quick", "full")
+KINDS = ("tightness", "recursive", "speed", "papers")
+
+
+@dataclass(frozen=True)
+class Family:
+    """One benchmark family.
+
+    Parameters
+    ----------
+    name : str
+        Short identifier used in results.json, CSV and file names.
+    title : str
+        Human-readable heading for the report.
+    kind : {"tightness", "recursive", "speed", "papers"}
+        Decides how the report presents the records (``papers``: each record's Markdown
+        and its attached figures).
+    requires : tuple of str
+        ``"module:attribute"`` names the family needs; a family whose requirement is missing
+        is reported as skipped (with the reason) instead of failing the run.
+    tasks : callable
+        ``tasks(suite, seed) -> list[dict]``; every task has an integer ``"seed"``.
+    run : callable
+        ``run(task) -> dict`` with ``"records"`` and optionally ``"figures"``, ``"notes"``.
+    parallel : bool
+        Tightness tasks are spread over ``--jobs`` processes; speed tasks run one at a time
+        in the main process after the pool has finished, so timings do not compete for cores.
+    isolated : bool
+        Run each (serial) task in a fresh child process, for code that changes process-wide
+        state; codac, for one, leaves the FPU rounding mode set to upward.
+    cost : callable
+        ``cost(task) -> float``, the task's rough cost in seconds on one core. Parallel tasks
+        start longest first, and the progress bar's ETA weighs tasks by it; results.json
+        records the measured ``task_seconds`` to check it against. Default: 1 per task.
+    """
+
+    name: str
+    title: str
+    kind: str
+    requires: tuple[str, ...]
+    tasks: Callable[[str, int], list[dict]]
+    run: Callable[[dict], dict]
+    parallel: bool = True
+    isolated: bool = False
+    cost: Callable[[dict], float] = lambda task: 1.0
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"kind must be one of {KINDS}, got {self.kind!r}")
+
+    def missing(self) -> list[str]:
+        """The requirements that cannot be imported right now."""
+        return [req for req in self.requires if not _available(req)]
+
+
+def _available(requirement: str) -> bool:
+    module, _, attr = requirement.partition(":")
+    try:
+        mod = importlib.import_module(module)
+    except ImportError:
+        return False
+    return not attr or hasattr(mod, attr)
+
+
+def task_seeds(seed: int, name: str, count: int) -> list[int]:
+    """``count`` reproducible 32-bit instance seeds for family ``name`` under suite seed ``seed``.
+
+    The family name enters the seed sequence, so two families never share instances and
+    adding a family does not change the instances of the others.
+    """
+    import numpy as np  # here, not at the top: the command line imports this module
+
+    state = np.random.SeedSequence([seed, zlib.crc32(name.encode())]).generate_state(count)
+    return [int(s) for s in state]

@@ -1,0 +1,82 @@
+"""The papers' results in the bench: every ``papers_repro`` script, one task each.
+
+The scripts are discovered (:func:`optbound.papers_repro._common.scripts`), so a new reproduction
+script appears here without any edit. The quick and tiny suites run each script's
+``quick=True`` variant, the full suite the full one. A task runs its script in a temporary
+folder and returns the script's Markdown (a ``quantity | paper | optbound`` table with the
+paper's values labelled as the paper's) and its PNG figures as base64 attachments, so it
+works on any executor, a remote Dask worker included; ``optbound.report.save_results``
+writes the attachments into the report folder under ``papers/``.
+"""
+
+from __future__ import annotations
+
+import base64
+import tempfile
+from pathlib import Path
+
+from optbound.bench.family import Family, task_seeds
+
+NAME = "papers"
+ATTACHMENT_DIR = "papers"
+#: Rough seconds per script, quick and full variants (the first cvxpy import included).
+COST = {True: 2.0, False: 6.0}
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    """One task per script; ``tiny`` (the smoke test) runs only the first one.
+
+    The scripts fix their own seeds (their tables are the papers' cases), so the task seed
+    only identifies the task; it is derived from the script's name, so adding a script
+    changes no other task.
+    """
+    from optbound.papers_repro._common import scripts
+
+    found = scripts()[:1] if suite == "tiny" else scripts()
+    return [
+        {
+            "seed": task_seeds(seed, f"{NAME}:{script.name}", 1)[0],
+            "script": script.name,
+            "paper": script.paper,
+            "quick": suite != "full",
+        }
+        for script in found
+    ]
+
+
+def run(task: dict) -> dict:
+    from optbound.papers_repro._common import Script
+
+    script = Script(task["script"], task["paper"])
+    with tempfile.TemporaryDirectory() as tmp:
+        result = script.run(Path(tmp), quick=task["quick"])
+        attachments = {
+            f"{ATTACHMENT_DIR}/{script.name}/{Path(p).name}": base64.b64encode(
+                Path(p).read_bytes()
+            ).decode("ascii")
+            for p in result["figures"]
+        }
+    record = {
+        "family": NAME,
+        "paper": script.paper,
+        "script": script.name,
+        "quick": task["quick"],
+        "markdown": result["markdown"],
+        "figures": sorted(attachments),
+    }
+    return {"records": [record], "attachments": attachments}
+
+
+def cost(task: dict) -> float:
+    return COST[task["quick"]]
+
+
+FAMILY = Family(
+    name=NAME,
+    title="The papers' results, reproduced",
+    kind="papers",
+    requires=("optbound.papers_repro._common:scripts",),
+    tasks=tasks,
+    run=run,
+    cost=cost,
+)

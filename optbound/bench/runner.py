@@ -1,0 +1,233 @@
+"""Run a suite: spread the families' tasks over worker processes and collect one results dict.
+
+The results dict is everything the report needs (``optbound report DIR`` rebuilds the report
+from its JSON alone)::
+
+    {"schema": 1,
+     "meta": {"suite", "seed", "jobs", "executor", "families_run", "complete",
+              "wall_time_s", "started", "load_average", "cpus", "processor", versions...},
+     "families": {name: {"title", "kind", "status", "reason", "records", "figures",
+                         "notes", "warnings", "errors", "task_seconds"}}}
+
+``task_seconds`` holds ``[task index, wall seconds]`` pairs: what each task cost, to check
+the families' cost estimates (``Family.cost``) against.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import platform
+import time
+import warnings
+from collections.abc import Callable
+from datetime import datetime, timezone
+from pathlib import Path
+
+import numpy as np
+from threadpoolctl import threadpool_limits
+
+import optbound
+from optbound.bench.executors import EXECUTORS
+from optbound.bench.executors import executor as make_executor
+from optbound.bench.family import SUITES, Family
+from optbound.bench.progress import Progress
+from optbound.bench.registry import families as registered_families
+from optbound.report.results import SCHEMA
+
+
+def run_suite(
+    suite: str = "quick",
+    seed: int = 0,
+    jobs: int = 1,
+    progress: bool = True,
+    names: list[str] | None = None,
+    executor: str = "process",
+    scheduler: str | None = None,
+    where: Callable[[dict], bool] | None = None,
+) -> dict:
+    """Run every available family of ``suite`` and return the results dict.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run; ``tiny`` is the seconds-long smoke test used by the test suite.
+    seed : int
+        Suite seed; every instance seed is derived from it (and recorded).
+    jobs : int
+        Worker processes for the parallel tasks (1 runs them in this process).
+    progress : bool
+        Show per-family progress bars on stderr (:mod:`optbound.bench.progress`).
+    names : list of str, optional
+        Run only these registered families (default: all of them).
+    executor : {"process", "dask"}
+        Where parallel tasks run (:mod:`optbound.bench.executors`); the results are the same.
+    scheduler : str, optional
+        Address of a running Dask scheduler (implies ``executor="dask"``).
+    where : callable, optional
+        Run only the tasks for which ``where(task)`` is true (``optbound repro KEY`` selects
+        papers this way); the run is then not complete.
+    """
+    if suite not in SUITES:
+        raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
+    if seed < 0:
+        raise ValueError(f"seed must be a non-negative integer, got {seed}")
+    if jobs < 1:
+        raise ValueError(f"jobs must be a positive integer, got {jobs}")
+    if executor not in EXECUTORS:
+        raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
+    start, started = time.perf_counter(), datetime.now(timezone.utc)
+    fams = registered_families()
+    if names:
+        unknown = sorted(set(names) - {fam.name for fam in fams})
+        if unknown:
+            raise ValueError(
+                f"names has unknown families {unknown}; known: {[f.name for f in fams]}"
+            )
+        fams = [fam for fam in fams if fam.name in names]
+    out = {fam.name: _family_entry(fam) for fam in fams}
+    runnable = [fam for fam in fams if out[fam.name]["status"] == "ok"]
+    tasks = [
+        (fam, i, task, float(fam.cost(task)))
+        for fam in runnable
+        for i, task in enumerate(fam.tasks(suite, seed))
+        if where is None or where(task)
+    ]
+    # Longest first: a long task started last would leave the other workers idle at the end.
+    pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
+    serial = [t for t in tasks if not t[0].parallel]
+    costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
+    with Progress(f"optbound bench {suite}", costs, progress) as bar:
+        with make_executor(executor, jobs, scheduler) as pool:
+            futures = {
+                pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
+                for fam, i, task, cost in pooled
+            }
+            for future in pool.completed(futures):
+                name, index, result = future.result()
+                _merge(out[name], index, result)
+                bar.done(name, futures[future])
+        for fam, i, task, cost in serial:
+            run = _run_isolated if fam.isolated else _run_registered
+            _merge(out[fam.name], i, run((fam.name, i, task))[2])
+            bar.done(fam.name, cost)
+    for entry in out.values():
+        _sort_by_task(entry)
+    meta = {
+        "suite": suite,
+        "seed": seed,
+        "jobs": jobs,
+        "executor": "dask" if scheduler else executor,
+        "families_run": [fam.name for fam in fams],
+        "complete": where is None
+        and (not names or set(names) >= {f.name for f in registered_families()}),
+        "started": started.isoformat(timespec="seconds"),
+        "wall_time_s": time.perf_counter() - start,
+        "load_average": _load_average(),
+        "cpus": os.cpu_count(),
+        "optbound": optbound.__version__,
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "machine": f"{platform.system()} {platform.machine()}",
+        "processor": _processor(),
+    }
+    return {"schema": SCHEMA, "meta": meta, "families": out}
+
+
+def _load_average() -> list[float] | None:
+    """1-, 5- and 15-minute load averages (None where the OS has none)."""
+    try:
+        return [round(x, 2) for x in os.getloadavg()]
+    except (AttributeError, OSError):
+        return None
+
+
+def _processor() -> str:
+    """The CPU model name (from /proc/cpuinfo on Linux), else ``platform.processor()``."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def _family_entry(fam: Family) -> dict:
+    missing = fam.missing()
+    return {
+        "title": fam.title,
+        "kind": fam.kind,
+        "status": "skipped" if missing else "ok",
+        "reason": f"needs {', '.join(missing)} (not available)" if missing else "",
+        "records": [],
+        "figures": [],
+        "notes": [],
+        "warnings": [],
+        "errors": [],
+        "task_seconds": [],
+        "attachments": {},
+    }
+
+
+def _run_isolated(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
+    """Run one task in a single-use child process, so its side effects die with it."""
+    with multiprocessing.get_context().Pool(1) as pool:
+        return pool.apply(_run_registered, (item,))
+
+
+def _run_registered(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
+    name, index, task = item
+    fam = {f.name: f for f in registered_families()}[name]
+    return name, index, _run_task(fam, task)
+
+
+_BLAS_LIMITED_IN: int | None = None  # pid of the process whose BLAS was limited
+
+
+def _single_threaded_blas() -> None:
+    """Limit the BLAS/LAPACK libraries of this process to one thread (once per process).
+
+    Tasks are the unit of parallelism (one per core). A threaded OpenBLAS on top of that
+    oversubscribes the cores, and its small-matrix calls then wait for a worker thread's time
+    slice: a 2x2 ``scipy.linalg.solve_triangular`` took ~8 ms instead of ~10 µs in a busy
+    worker. threadpoolctl finds the loaded BLAS libraries (numpy's and scipy's) and sets them.
+    """
+    global _BLAS_LIMITED_IN
+    if _BLAS_LIMITED_IN != os.getpid():
+        threadpool_limits(1)
+        _BLAS_LIMITED_IN = os.getpid()
+
+
+def _run_task(fam: Family, task: dict) -> dict:
+    """Run one task; an exception becomes an error entry (with the task) instead of a crash.
+
+    Warnings raised by the code under test are collected for the report rather than printed
+    over the progress bar. BLAS runs single-threaded (``_single_threaded_blas``).
+    """
+    _single_threaded_blas()
+    start = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            result = fam.run(task)
+        except Exception as exc:  # a failing instance is a finding to report, not a reason to stop
+            result = {"errors": [{"task": task, "error": f"{type(exc).__name__}: {exc}"}]}
+    seen = {f"{w.category.__name__}: {str(w.message).strip().splitlines()[0]}" for w in caught}
+    return {**result, "warnings": sorted(seen), "seconds": time.perf_counter() - start}
+
+
+def _merge(entry: dict, index: int, result: dict) -> None:
+    for key in ("records", "figures", "errors"):
+        entry[key].extend({**item, "task_index": index} for item in result.get(key, []))
+    for key in ("notes", "warnings"):
+        entry[key].extend(n for n in result.get(key, []) if n not in entry[key])
+    entry["attachments"].update(result.get("attachments", {}))
+    entry["task_seconds"].append([index, round(result["seconds"], 4)])
+
+
+def _sort_by_task(entry: dict) -> None:
+    # Pool results arrive in completion order; sort so that results.json is reproducible.
+    for key in ("records", "figures", "errors"):
+        entry[key].sort(key=lambda item: item["task_index"])
+    entry["task_seconds"].sort()

@@ -1,0 +1,217 @@
+"""Speed of GLH12 visibility tracking: the compiled test and LUVIA against plain references.
+
+Every ratio is taken between two timings of the same run on the same machine:
+
+- ``visibility_test`` (compiled, three-valued, all obstacles) against the sign of eq. (19)
+  alone evaluated with ``optbound.interval.Interval`` arrays on the same box pairs and edges
+  (the reference does strictly less work: no inside/touching logic);
+- ``luvia`` (compiled, one depth-first pass per hull side) against Algorithm 2 as written,
+  breadth-first over every sub-box with one vectorized ``visibility_test`` call per level;
+- one 1500-iteration run with 7 robots and 6 obstacles (the issue's budget: 20 s on one core),
+  in CPU seconds of this process (the machine is shared: CPU time, not wall time).
+
+Standalone: ``python -m optbound.bench.speed_glh12 [--suite tiny|quick|full]`` prints a Markdown
+table. In ``optbound bench`` it is the serial family ``speed_glh12`` (one task).
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import per_call, speed_record
+from optbound.interval import Interval, Tri
+from optbound.localization.geometry import intersect
+from optbound.localization.visibility import luvia, track, visibility_test
+from optbound.scenarios import arena
+
+NAME = "speed_glh12"
+BUDGET_SECONDS = 20.0
+SIZES = {
+    "tiny": {"pairs": 500, "steps": 100},
+    "quick": {"pairs": 2000, "steps": 300},
+    "full": {"pairs": 20000, "steps": 1500},
+}
+
+
+def _interval_signs(boxes1, boxes2, polygons) -> np.ndarray:
+    """Reference: Tri sign ``intersect < 0`` of every (pair, edge) on ``Interval`` arrays."""
+    a = np.concatenate(polygons)
+    b = np.concatenate([np.roll(p, -1, axis=0) for p in polygons])
+
+    def point(bx):
+        return (
+            Interval(bx[:, None, 0, 0], bx[:, None, 0, 1]),
+            Interval(bx[:, None, 1, 0], bx[:, None, 1, 1]),
+        )
+
+    return intersect(point(boxes1), point(boxes2), (a[:, 0], a[:, 1]), (b[:, 0], b[:, 1])) < 0
+
+
+def _algorithm2(i, y, boxes, env, eps, max_depth=10):
+    """Reference: [GLH12, Algorithm 2] breadth-first, every sub-box bisected down to eps."""
+    cur, kept = boxes[i][None], []
+    others = np.array([j for j in range(len(boxes)) if j != i])
+    for depth in range(max_depth + 1):
+        k, o = np.repeat(np.arange(len(cur)), len(others)), np.tile(others, len(cur))
+        result = np.empty(len(k), dtype=np.int8)
+        seen = y[o]
+        result[seen] = visibility_test(cur[k[seen]], boxes[o[seen]], env.inner)
+        result[~seen] = visibility_test(cur[k[~seen]], boxes[o[~seen]], env.outer)
+        refuted = np.zeros(len(cur), dtype=bool)
+        refuted[k[np.where(seen, result == Tri.FALSE, result == Tri.TRUE)]] = True
+        unknown = np.zeros(len(cur), dtype=bool)
+        unknown[k[result == Tri.UNKNOWN]] = True
+        size = np.prod(np.diff(cur)[:, :, 0], axis=1)
+        split = ~refuted & unknown & (size > eps) & (depth < max_depth)
+        kept.append(cur[~refuted & ~split])
+        if not split.any():
+            break
+        cur = cur[split]
+        axis = np.argmax(np.diff(cur)[:, :, 0], axis=1)
+        rows = np.arange(len(cur))
+        mid = 0.5 * (cur[rows, axis, 0] + cur[rows, axis, 1])
+        low, high = cur.copy(), cur.copy()
+        low[rows, axis, 1] = mid
+        high[rows, axis, 0] = mid
+        cur = np.concatenate([low, high])
+    kept = np.concatenate(kept)
+    return np.stack([kept[:, :, 0].min(0), kept[:, :, 1].max(0)], 1) if len(kept) else None
+
+
+def bench_visibility(pairs: int, seed: int = 0) -> list[dict]:
+    rng = np.random.default_rng(seed)
+    env = arena.environment(6)
+    lo1, lo2 = rng.uniform(0, 9, (pairs, 2)), rng.uniform(0, 9, (pairs, 2))
+    b1 = np.stack([lo1, lo1 + rng.uniform(0.1, 1.0, (pairs, 2))], -1)
+    b2 = np.stack([lo2, lo2 + rng.uniform(0.1, 1.0, (pairs, 2))], -1)
+    ours = per_call(lambda: visibility_test(b1, b2, env.outer), repeat=3)
+    ref = per_call(lambda: _interval_signs(b1, b2, env.outer), repeat=3)
+    label = f"{pairs} box pairs x 6 obstacles (E⁺)"
+    # The reference does a subset of the work, so this ratio is a time ratio (ours / ref),
+    # not a speed-up: it says what the inside/touching logic and all obstacles cost on top.
+    return [
+        speed_record(NAME, f"eq. (19) signs on Interval arrays, {label}", ref),
+        speed_record(
+            NAME,
+            f"visibility_test (compiled, three-valued), {label}",
+            ours,
+            ratio=ours / ref,
+            ratio_label="time / eq. (19) signs alone on Interval arrays (less work)",
+        ),
+    ]
+
+
+def _versus(reference: tuple[str, float], ours: tuple[str, float], ratio_label: str):
+    """The reference's record, then ours with the ratio of the two times."""
+    return [
+        speed_record(NAME, *reference),
+        speed_record(NAME, *ours, ratio=reference[1] / ours[1], ratio_label=ratio_label),
+    ]
+
+
+def bench_luvia(steps: int, seed: int = 0) -> list[dict]:
+    """LUVIA on the boxes of a 7-robot run after ``steps`` steps."""
+    run = arena.simulate(7, 6, steps, seed)
+    boxes = track(
+        run.boxes0, run.distance, run.headings, arena.HEADING_ERROR, run.visibility, run.env, 0.01
+    )[-1]
+    y = run.visibility[-1]
+    for i in range(7):  # the two must agree before being timed
+        a, b = luvia(i, y[i], boxes, run.env, 0.01), _algorithm2(i, y[i], boxes, run.env, 0.01)
+        assert (a is None and b is None) or np.array_equal(a, b)
+    ours = per_call(lambda: [luvia(i, y[i], boxes, run.env, 0.01) for i in range(7)], repeat=3)
+    ref = per_call(lambda: [_algorithm2(i, y[i], boxes, run.env, 0.01) for i in range(7)], 3)
+    area = float(np.prod(np.diff(boxes), axis=(1, 2)).mean())
+    label = f"7 robots, mean box {area:.2f} m², eps 0.01"
+    return _versus(
+        (f"Algorithm 2 breadth-first (numpy), {label}", ref),
+        (f"luvia (compiled hull search), {label}", ours),
+        "faster than breadth-first Algorithm 2 (same hull)",
+    )
+
+
+def bench_run(steps: int, seed: int = 0) -> list[dict]:
+    """CPU seconds of one tracking run (7 robots, 6 obstacles), against the 20 s budget."""
+    run = arena.simulate(7, 6, steps, seed)
+    track(
+        run.boxes0,
+        run.distance,
+        run.headings[:2],
+        arena.HEADING_ERROR,
+        run.visibility[:2],
+        run.env,
+        0.01,
+    )  # fmt: skip  (compile outside the timing)
+    cpu = time.process_time()
+    track(run.boxes0, run.distance, run.headings, arena.HEADING_ERROR, run.visibility, run.env,
+          0.01)  # fmt: skip
+    cpu = time.process_time() - cpu
+    return [
+        speed_record(
+            NAME,
+            f"track: {steps} iterations, 7 robots, 6 obstacles (CPU s)",
+            cpu,
+            ratio=BUDGET_SECONDS * steps / 1500 / cpu,
+            ratio_label=f"under the budget ({BUDGET_SECONDS:.0f} s per 1500 iterations)",
+        )
+    ]
+
+
+def bench(suite: str = "quick", seed: int = 0) -> list[dict]:
+    """All records of one suite (``tiny``, ``quick`` or ``full``)."""
+    size = SIZES[suite]
+    return (
+        bench_visibility(size["pairs"], seed)
+        + bench_luvia(min(300, size["steps"]), seed)
+        + bench_run(size["steps"], seed)
+    )
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    return [{"seed": task_seeds(seed, NAME, 1)[0], "suite": suite}]
+
+
+def run(task: dict) -> dict:
+    return {"records": bench(task["suite"], task["seed"])}
+
+
+def cost(task: dict) -> float:
+    return {"tiny": 2.0, "quick": 6.0, "full": 40.0}[task["suite"]]
+
+
+FAMILY = Family(
+    name=NAME,
+    title="Speed: GLH12 visibility tracking (visibility test, LUVIA, one run)",
+    kind="speed",
+    requires=("optbound.localization.visibility:luvia",),
+    tasks=tasks,
+    run=run,
+    parallel=False,
+    cost=cost,
+)
+
+
+def markdown(records: list[dict]) -> str:
+    lines = ["| measurement | seconds | ratio |", "|---|---|---|"]
+    for r in records:
+        ratio = f"{r['ratio']:.1f}x {r['ratio_label']}" if "ratio" in r else "reference"
+        lines.append(f"| {r['name']} | {r['value']:.4g} | {ratio} |")
+    return "\n".join(lines)
+
+
+def main() -> list[dict]:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--suite", choices=sorted(SIZES), default="quick")
+    parser.add_argument("--seed", type=int, default=0)
+    args = parser.parse_args()
+    records = bench(args.suite, args.seed)
+    print(markdown(records))
+    return records
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,65 @@
+"""SDP solve time with the cvxpy problem cached (DPP parameters) vs rebuilt for every solve.
+
+The measurement itself lives in :mod:`optbound.bench.sdp_cache` (owned by the SDP module); this
+family runs it inside the suite so that its ratio lands in the same report.
+"""
+
+from __future__ import annotations
+
+from optbound.bench.family import Family, task_seeds
+from optbound.bench.timing import speed_record
+
+NAME = "speed_sdp"
+SOLVES = {"tiny": 3, "quick": 30, "full": 200}
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    return [{"seed": task_seeds(seed, NAME, 1)[0], "n_solves": SOLVES[suite]}]
+
+
+def run(task: dict) -> dict:
+    from optbound.bench import sdp_cache
+
+    timings = sdp_cache.run(n_solves=task["n_solves"], seed=task["seed"])
+    return {"records": cache_records(timings)}
+
+
+def cache_records(timings: dict) -> list[dict]:
+    """Records from :func:`optbound.bench.sdp_cache.run`'s dict of cached/rebuilt timings."""
+    what = f"{timings['dim']}-D ellipsoid ∩ strip, median of {timings['n_solves']}"
+    cached, rebuilt = float(timings["cached_s"]), float(timings["rebuilt_s"])
+    return [
+        speed_record(NAME, f"SDP call, problem rebuilt each time ({what})", rebuilt),
+        speed_record(
+            NAME,
+            f"SDP call, cached problem, DPP parameters ({what})",
+            cached,
+            ratio=rebuilt / cached,
+            ratio_label="speed-up vs rebuilt",
+        ),
+        speed_record(
+            NAME,
+            "of which inside optimal.solver.solve (cached)",
+            float(timings["cached_solve_s"]),
+            ratio=cached / float(timings["cached_solve_s"]),
+            ratio_label="whole call / solve()",
+        ),
+        speed_record(
+            NAME,
+            "of which Clarabel's own solve time (cached)",
+            float(timings["clarabel_s"]),
+            ratio=float(timings["call_over_clarabel"]),
+            ratio_label="whole call / Clarabel (median per call)",
+        ),
+    ]
+
+
+FAMILY = Family(
+    name=NAME,
+    title="Speed: SDP solve, cached vs rebuilt",
+    kind="speed",
+    requires=("optbound.bench.sdp_cache:run",),
+    tasks=tasks,
+    run=run,
+    parallel=False,
+)

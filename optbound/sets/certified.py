@@ -1,0 +1,226 @@
+"""Outward-rounded linear algebra for the zonotope types (and the observers of ``estimation``).
+
+A float operation on a generator representation (``M @ G``, ``c1 + c2``, a substituted
+constraint row) rounds, and the rounded set is not in general a superset of the exact one.
+Every operation of :class:`~optbound.sets.Zonotope` and
+:class:`~optbound.sets.ConstrainedZonotope` therefore computes its new data as
+:class:`~optbound.interval.Interval` enclosures, keeps the midpoints and moves the rounding
+into the set itself:
+
+- a centre/generator error of radius ``r_i`` in row ``i`` becomes an extra generator
+  ``r_i e_i`` (with a zero column in the constraints): ``c + G xi`` for any exact ``c, G`` in
+  the enclosures lies in ``c_mid + G_mid xi + diag(r) eta`` (:func:`enclose`);
+- an equality constraint ``a^T xi = beta`` known only as enclosures becomes
+  ``a_mid^T xi - E s = beta_mid`` with a new ``s in [-1, 1]``, ``E >= sum |a - a_mid| +
+  |beta - beta_mid|`` (:func:`relax_rows`): every exact solution satisfies the relaxed row.
+
+Linear programs are solved by HiGHS in floats and then *certified* by weak duality
+(:func:`max_bound`), evaluated in outward-rounded arithmetic, so a bound returned here holds
+for the exact set whatever the solver's accuracy. The interval package and scipy are
+imported on first use, so that ``import optbound`` stays light.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from optbound.interval import Interval
+
+
+def point(x) -> Interval:
+    """A float array as a point interval."""
+    from optbound.interval import Interval
+
+    return Interval(np.asarray(x, dtype=float))
+
+
+def matmul(M, X) -> Interval:
+    """Enclosure of the exact product ``M @ X`` of 2-D float arrays or Intervals."""
+    from optbound.interval import Interval
+
+    M = M if isinstance(M, Interval) else point(M)
+    X = X if isinstance(X, Interval) else point(X)
+    p, q = M.shape
+    r = X.shape[1]
+    if q == 0:
+        return point(np.zeros((p, r)))
+    acc = M[:, 0:1] * X[0:1, :]
+    for k in range(1, q):
+        acc = acc + M[:, k : k + 1] * X[k : k + 1, :]
+    return acc
+
+
+def magnitude(iv: Interval) -> np.ndarray:
+    """``max |x|`` over each interval (exact: a bound is a float)."""
+    return np.maximum(-iv.lo, iv.hi)
+
+
+def row_sum_up(mat: np.ndarray) -> np.ndarray:
+    """Upper bound of the exact row sums of a non-negative (p, q) float array."""
+    acc = point(np.zeros(mat.shape[0]))
+    for k in range(mat.shape[1]):
+        acc = acc + mat[:, k]
+    return acc.hi
+
+
+def split(iv: Interval) -> tuple[np.ndarray, np.ndarray]:
+    """Midpoints and radii ``r >= |x - mid|`` for every x in each interval."""
+    mid = iv.midpoint()
+    return mid, magnitude(iv - mid)
+
+
+def enclose(c_iv: Interval, G_iv: Interval) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Float ``c, G`` and radii ``r`` with ``c' + G' xi in c + G xi + diag(r) eta``.
+
+    For every exact ``c' in c_iv``, ``G' in G_iv`` and ``|xi|, |eta| <= 1``: the row-``i``
+    error ``(c' - c)_i + (G' - G)_i xi`` is at most ``r_i`` in magnitude.
+    """
+    c, rc = split(c_iv)
+    G, rG = split(G_iv)
+    return c, G, row_sum_up(np.column_stack([rc, rG]))
+
+
+def error_generators(r: np.ndarray) -> np.ndarray:
+    """The generators ``r_i e_i`` of the non-zero radii (shape (n, k))."""
+    return np.diag(r)[:, r > 0]
+
+
+def relax_rows(A_iv: Interval, b_iv: Interval) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Float rows ``A, b`` and slack radii ``E`` for constraints known as enclosures.
+
+    Every ``xi`` with ``|xi| <= 1`` and ``A' xi = b'`` for some exact ``A' in A_iv``,
+    ``b' in b_iv`` satisfies ``|(A xi - b)_k| <= E_k``; the caller adds a slack generator
+    ``-E_k`` to row k (only where ``E_k > 0``).
+    """
+    b, A, E = enclose(b_iv, A_iv)
+    return A, b, E
+
+
+def lower_dot(lam: np.ndarray, b: np.ndarray) -> float:
+    """A lower bound of the exact ``lam^T b``."""
+    return float(matmul(lam[None, :], b[:, None]).lo[0, 0])
+
+
+def l1_upper(f_iv: Interval, A: np.ndarray, lam: np.ndarray) -> float:
+    """An upper bound of ``||f - A^T lam||_1`` over the exact ``f in f_iv``."""
+    r = f_iv - matmul(A.T, lam[:, None])[:, 0]
+    return float(row_sum_up(magnitude(r)[None, :])[0])
+
+
+def max_bound(f_iv: Interval, A: np.ndarray, b: np.ndarray) -> float:
+    """Certified upper bound of ``max {f^T xi : A xi = b, |xi|_inf <= 1}`` (``-inf``: empty).
+
+    Weak duality: for *any* multiplier ``lam``, ``f^T xi = lam^T b + (f - A^T lam)^T xi <=
+    lam^T b + ||f - A^T lam||_1`` on the feasible set. ``lam`` is HiGHS's equality dual; the
+    bound is evaluated in outward-rounded arithmetic, so it holds even if the LP answer is
+    inaccurate (a poor ``lam`` only loosens the bound). ``-inf`` only if :func:`proven_empty`.
+    """
+    from scipy.optimize import linprog
+
+    nc = A.shape[0]
+    if nc == 0:
+        return float(row_sum_up(magnitude(f_iv)[None, :])[0])
+    f = split(f_iv)[0]
+    res = linprog(-f, A_eq=A, b_eq=b, bounds=(-1.0, 1.0), method="highs")
+    if res.status == 0:
+        lam = -np.asarray(res.eqlin.marginals, dtype=float)
+    elif proven_empty(A, b):
+        return -np.inf
+    else:
+        lam = np.zeros(nc)
+    if not np.all(np.isfinite(lam)):
+        lam = np.zeros(nc)
+    bound = point(-lower_dot(-lam, b)) + l1_upper(f_iv, A, lam)
+    return float(bound.hi)
+
+
+def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
+    """Whether ``{xi : A xi = b, |xi|_inf <= 1}`` is *proven* empty (a Farkas certificate).
+
+    If ``lam^T b > ||A^T lam||_1`` no ``|xi| <= 1`` solves ``A xi = b`` (``lam^T A xi <=
+    ||A^T lam||_1``). ``lam`` is the dual of ``min t s.t. A xi = b, |xi_j| <= t`` (whose
+    dual is ``max lam^T b s.t. ||A^T lam||_1 <= 1``) or, if that LP fails, the least-squares
+    residual ``b - A A^+ b``. Both sides are evaluated with outward rounding.
+    """
+    from scipy.optimize import linprog
+
+    nc, m = A.shape
+    if nc == 0:
+        return False
+    cost = np.zeros(m + 1)
+    cost[-1] = 1.0
+    eye = np.eye(m)
+    A_ub = np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]])
+    res = linprog(
+        cost,
+        A_ub=A_ub,
+        b_ub=np.zeros(2 * m),
+        A_eq=np.column_stack([A, np.zeros(nc)]),
+        b_eq=b,
+        bounds=[(None, None)] * m + [(0.0, None)],
+        method="highs",
+    )
+    candidates = []
+    if res.status == 0:
+        candidates.append(np.asarray(res.eqlin.marginals, dtype=float))
+    candidates.append(b - A @ np.linalg.lstsq(A, b, rcond=None)[0])
+    zero = point(np.zeros(m))
+    for lam in candidates:
+        if np.all(np.isfinite(lam)) and lower_dot(lam, b) > l1_upper(zero, A, lam):
+            return True
+    return False
+
+
+def affine_image(
+    c: np.ndarray, G: np.ndarray, M: np.ndarray, t: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray, int]:
+    """Float ``c', G'`` with ``{M (c + G xi) + t} subset {c' + G' (xi, eta)}``.
+
+    ``G'`` is ``M G`` (rounded) followed by the error generators; returns also their number.
+    """
+    c_iv = matmul(M, c[:, None])[:, 0]
+    if t is not None:
+        c_iv = c_iv + t
+    c_new, G_new, r = enclose(c_iv, matmul(M, G))
+    extra = error_generators(r)
+    return c_new, np.hstack([G_new, extra]), extra.shape[1]
+
+
+def sum_centers(c1: np.ndarray, c2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Float centre of ``c1 + c2`` and the error generators of its rounding."""
+    c, r = split(point(c1) + c2)
+    return c, error_generators(r)
+
+
+def compact(G: np.ndarray, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Merge parallel axis-aligned columns of the lifted generators ``(G; A)`` (a superset).
+
+    A constrained zonotope is the slice ``{x : (x, 0) in <(c, -b), (G; A)>}`` of its lifted
+    zonotope [Scott et al. 2016, Sect. 4.2], and columns ``r_1 e_i, r_2 e_i, ...`` of the
+    lifted generators along one lifted axis sum to the single segment ``(|r_1| + |r_2| +
+    ...) e_i`` (rounded up): a free rounding generator of a state row, or a slack of a
+    constraint row. All-zero columns contribute nothing and are dropped. This keeps the
+    rounding generators of a recursion from accumulating (a map's errors merge into the next
+    noise box's generators, a strip's rounding slack into its own slack).
+    """
+    L = np.vstack([G, A])
+    nonzero = L != 0
+    counts = nonzero.sum(axis=0)
+    rows = np.argmax(nonzero, axis=0)
+    drop = counts == 0
+    merged = []
+    for i in range(L.shape[0]):
+        cols = np.flatnonzero((counts == 1) & (rows == i))
+        if cols.size >= 2:
+            merged.append((cols[0], float(row_sum_up(np.abs(L[i, cols])[None, :])[0])))
+            drop[cols[1:]] = True
+    if not drop.any():
+        return G, A
+    L = L.copy()
+    for k, radius in merged:
+        L[rows[k], k] = radius
+    L = L[:, ~drop]
+    return L[: G.shape[0]], L[G.shape[0] :]
