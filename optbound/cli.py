@@ -201,9 +201,15 @@ def _user_estimators(args: argparse.Namespace) -> dict:
     from optbound.problems import registry
 
     try:
-        return registry.resolve(args.estimator or [])
+        estimators = registry.resolve(args.estimator or [])
     except ValueError as exc:
         raise CommandError(f"--estimator: {exc}") from None
+    if args.estimator and not estimators:
+        raise CommandError(
+            f"--estimator {registry.ALL_REGISTERED}: no estimator is registered under the "
+            f"entry-point group {registry.GROUP!r} (is optbound installed, not only on the path?)"
+        )
+    return estimators
 
 
 def _version() -> str:
