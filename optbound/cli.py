@@ -117,7 +117,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--estimator",
         action="append",
         metavar="MODULE:CALLABLE",
-        help="also evaluate this estimator (problem -> set) on the suite's problems, in a "
+        help="also evaluate this estimator (problem -> set; module:callable or a registered "
+        "name) on the suite's problems, in a "
         'report section "Your estimators" (repeatable; "all-registered": every estimator '
         "registered under the entry-point group optbound.estimators, optbound's analytic "
         "updates included; default: none)",
@@ -185,7 +186,7 @@ def _evaluate(args: argparse.Namespace) -> int:
     from optbound.problems import registry
 
     try:
-        estimator = registry.load(args.estimator)
+        estimator = registry.resolve([args.estimator])[args.estimator]
         todo = problems.suite(args.suite, families=args.family, seed=args.seed)
     except ValueError as exc:
         raise CommandError(str(exc)) from None

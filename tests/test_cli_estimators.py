@@ -118,7 +118,8 @@ def test_report_rebuilds_the_section_from_results_json(bench_out, tmp_path, caps
 @pytest.mark.parametrize(
     "spec, message",
     [
-        ("no_colon", "spec must be 'pkg.module:callable'"),
+        ("no_colon", "'no_colon' is neither 'pkg.module:callable' nor a registered estimator"),
+        (":f", "spec must be 'pkg.module:callable'"),
         ("no_such_module_xyz:f", "cannot import module 'no_such_module_xyz'"),
         ("optbound:no_such_estimator", "module 'optbound' has no attribute"),
         ("optbound:__version__", "not a callable estimator"),
@@ -150,12 +151,38 @@ def test_the_analytic_updates_are_registered_entry_points():
         assert registry.load(spec).__module__ == "optbound.problems.estimators"
 
 
+def test_a_package_on_the_path_registers_its_estimators(user_dir):
+    """Entry points of a distribution found on the path (its dist-info), as pip installs them:
+    registered() lists them, and the registered name runs like a spec."""
+    info = user_dir / "my_estimators-1.0.dist-info"
+    info.mkdir(exist_ok=True)
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: my-estimators\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text(
+        f"[{registry.GROUP}]\nmy_hull = my_estimators:hull_box\n"
+    )
+    code = (
+        "import json\nfrom optbound.problems import registry\n"
+        "found = registry.registered()\n"
+        "print(json.dumps([found, registry.resolve(['my_hull'])['my_hull'].__name__]))"
+    )
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(user_dir), str(ROOT)])}
+    done = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr
+    found, loaded = json.loads(done.stdout)
+    assert found["my_hull"] == "my_estimators:hull_box" and loaded == "hull_box"
+
+
 def test_all_registered_expands_to_the_entry_points(monkeypatch):
     fake = {"b_box": "tests.problems.estimators:hull_box", "a_ell": "optbound:Ellipsoid"}
     monkeypatch.setattr(registry, "registered", lambda: dict(sorted(fake.items())))
     resolved = registry.resolve(["tests.problems.estimators:shrunk_box", registry.ALL_REGISTERED])
     assert list(resolved) == ["tests.problems.estimators:shrunk_box", "a_ell", "b_box"]
     assert resolved["b_box"].__name__ == "hull_box"
+    assert registry.resolve(["a_ell"]) == {"a_ell": resolved["a_ell"]}
+    with pytest.raises(ValueError, match=r"registered: \['a_ell', 'b_box'\]"):
+        registry.resolve(["c_none"])
 
 
 def test_the_analytic_estimator_is_proven_or_undecided_never_refuted():

@@ -6,8 +6,9 @@ An installed package registers an estimator ``problem -> set`` in its ``pyprojec
     my_box = "my_package.estimators:my_box"
 
 and ``optbound bench --estimator all-registered`` then runs it beside optbound's own, which are
-registered the same way (:mod:`optbound.problems.estimators`). Any importable callable can also
-be named directly: ``optbound evaluate my_package.estimators:my_box``.
+registered the same way (:mod:`optbound.problems.estimators`); ``--estimator my_box`` and
+``optbound evaluate my_box`` run it alone. Any importable callable can also be named directly:
+``optbound evaluate my_package.estimators:my_box``.
 """
 
 from __future__ import annotations
@@ -63,11 +64,21 @@ def registered() -> dict[str, str]:
 
 
 def resolve(specs: list[str]) -> dict[str, Callable[[Any], Any]]:
-    """Name -> callable for ``--estimator`` values: each spec is named by itself, and
-    :data:`ALL_REGISTERED` expands to :func:`registered` (named by their entry-point names).
-    Every spec is loaded here, so a bad one fails before any work (ValueError from :func:`load`).
+    """Name -> callable for ``--estimator`` values, each a ``"pkg.module:callable"`` spec (named
+    by itself), the name of a registered estimator, or :data:`ALL_REGISTERED` (every one of
+    :func:`registered`, by its entry-point name). Every callable is loaded here, so a bad spec
+    fails before any work (ValueError from :func:`load`).
     """
     named: dict[str, str] = {}
     for spec in specs:
-        named.update(registered() if spec == ALL_REGISTERED else {spec: spec})
+        known = registered() if spec == ALL_REGISTERED or ":" not in spec else {}
+        if spec == ALL_REGISTERED:
+            named.update(known)
+        elif ":" in spec or spec in known:
+            named[spec] = known.get(spec, spec)
+        else:
+            raise ValueError(
+                f"{spec!r} is neither 'pkg.module:callable' nor a registered estimator "
+                f"(registered: {sorted(known)})"
+            )
     return {name: load(spec) for name, spec in named.items()}
