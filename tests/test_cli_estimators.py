@@ -191,3 +191,18 @@ def test_the_analytic_estimator_is_proven_or_undecided_never_refuted():
     other = STRIP[0].__class__(**{**STRIP[0].__dict__, "data": {"boxes": None}})
     row = problems.evaluate(analytic_volume, other).rows[0]
     assert row["error"].startswith("TypeError: the analytic strip update needs")
+
+
+def test_the_section_renders_rows_read_back_from_json():
+    """results.json writes non-finite floats as null: an unbounded size or ratio (a set
+    reaching the paving's border) reads back as None and is shown as an open end."""
+    from optbound.problems.evaluation import COLUMNS
+    from optbound.report.estimators import estimators_section
+
+    row = dict.fromkeys(COLUMNS)
+    row.update(family="strip", name="p", size_lo=2.0, ratio_lo=1.5, soundness="undecided")
+    row.update(seconds=0.5, estimator="mine")
+    parts = estimators_section({"estimators": [{"estimator": "mine", "rows": [row]}]})
+    assert parts[0] == "## Your estimators"
+    assert "| strip | p | [2, inf] | [1.5, inf] | – | – | undecided | 0.5 |" in parts[2]
+    assert estimators_section({"estimators": []}) == estimators_section({}) == []
