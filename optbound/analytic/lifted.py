@@ -19,9 +19,8 @@ Criteria:
   The grid covers the *prior's* bounding box (which contains the feasible set), not each
   candidate's own box: a candidate degenerating toward the whole ring has a huge box on which
   a fixed grid misses the thin set and reports area 0. Cost: about ``AREA_GRID + AREA_REFINE``
-  bounding updates plus as many grid evaluations of ``resolution^2`` lifted points (L = 8,
-  resolution 80: of the order of 0.1-0.5 s per update on this shared machine, against
-  ~0.5 ms for "volume"; the README of the reproduction reports the measured time).
+  bounding updates plus as many grid evaluations of ``resolution^2`` lifted points, several
+  hundred times the cost of "volume" (the BH reproduction reports the measured time).
   ``AREA_T_MAX`` caps lambda at ~1e3. The grid area is an estimate (its boundary cells make
   up a few per cent of a thin set), and the area is often flat over a wide range of lambda,
   where the raw grid minimum lands anywhere, up to the cap, by noise: there the lifted shape

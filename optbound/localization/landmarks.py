@@ -450,6 +450,21 @@ def heading_bound(L, Lx, Ly, alphas, delta, xy: Box) -> Interval:
     return out - round(float(out.midpoint()) / (2 * np.pi)) * TWO_PI  # centre in [-pi, pi]
 
 
+def pose_test(landmarks, alphas, delta_alpha: float, landmark_shapes=None, psi_range=None):
+    """The three-valued test of :func:`pose_paving`'s set on ``Interval`` ``(x, y, psi)`` boxes.
+
+    ``psi_range`` ``(lo, hi)`` (default ``(-pi, pi)``): the headings the test must handle
+    (boxes of other headings can only lose TRUE answers, never get a wrong one). Arguments
+    as in :func:`linear_position_bound`.
+    """
+    L = as_landmarks("landmarks", landmarks, min_count=1)
+    a = as_angles("alphas", alphas, L.shape[0])
+    delta = as_bound("delta_alpha", delta_alpha)
+    shapes = as_shapes("landmark_shapes", landmark_shapes, L.shape[0])
+    lo, hi = (-np.pi, np.pi) if psi_range is None else psi_range
+    return _bearing_test(L, shapes, a, delta, _windows(lo, hi, a))
+
+
 def pose_paving(
     landmarks,
     alphas,
@@ -547,4 +562,5 @@ __all__ = [
     "linear_position_bound",
     "localize",
     "pose_paving",
+    "pose_test",
 ]

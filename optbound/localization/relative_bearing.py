@@ -483,7 +483,7 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
     - ``boxes``: ``optimal.mvee`` of the corners of every inner and boundary box, certified to
       contain them, hence (being convex) every box and the exact set.
 
-    Cost: one SDP with ``lower_bound=True`` (about 0.1-0.5 s) plus one MVEE over the corners.
+    Cost: one SDP with ``lower_bound=True`` plus one MVEE over the corners.
     """
     from optbound import optimal  # cvxpy is imported only when a reference is asked for
 

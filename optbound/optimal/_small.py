@@ -1,14 +1,12 @@
 """The small dense computations of one SDP call, compiled.
 
-numpy's ``eigvalsh`` spends about 4 µs per call on a 4 x 4 matrix in Python-level checks, as
-long as LAPACK takes; the same LAPACK routine through numba takes about 1 µs in all. Every
-tiny numpy call costs 1-3 µs of such overhead, so on small problems the steps around the solve
-(``intersection``, ``emptiness``, ``certify``) are fused here into one kernel each; they were
-a quarter of a cached call on the 3-D ellipsoid ∩ strip (``optbound/bench/sdp_cache.py``). The
-kernels compute the same formulas as the numpy they replace; sums may be taken in another
-order, which every error bound below covers (they hold for any order). Compiling them (and
-``sets.quadratic``'s form kernels) takes about 5 s in the first SDP call of an install, with an
-empty numba cache; later processes load the cache.
+On a 4 x 4 matrix numpy's Python-level checks cost as much as the LAPACK call itself, and
+every tiny numpy call carries such overhead, so on small problems the steps around the solve
+(``intersection``, ``emptiness``, ``certify``) are fused here into one compiled kernel each
+(``optbound/bench/sdp_cache.py`` measures a cached call). The kernels compute the same
+formulas as the numpy they replace; sums may be taken in another order, which every error
+bound below covers (they hold for any order). They compile once, in the first SDP call with
+an empty numba cache; later processes load the cache.
 """
 
 from __future__ import annotations

@@ -251,13 +251,9 @@ def outer_ellipsoid(
     lower_bound : bool
         Also compute a lower bound on the true minimum over all ellipsoids (a weak-duality
         bound on points of the set pushed toward its extreme points; see
-        ``optbound.optimal.lower``). Cost, as a ratio to the same call without it (median
-        per instance, recursive-family instances, ``python -m benchmarks.lower_bound_cost``):
-        about 2 at n = 2, k = 10; 4-5 at n = 3, k = 10; 3 at n = 4, k = 50 (3.2-3.5, 6.6-7.9
-        and 5.0-5.2 in the same runs for the code before the compiled climbing round and the
-        exchange steps of the bound's weights; 2-core VM at load 1.0-1.3). What remains is
-        mostly the search for the set's extreme points, on which the bound's quality rests
-        from n = 3 on.
+        ``optbound.optimal.lower``). It costs a small multiple of the call without it
+        (``python -m benchmarks.lower_bound_cost`` measures it), mostly the search for the
+        set's extreme points, on which the bound's quality rests from n = 3 on.
     rng : Generator or int
         Seed of the sampling for ``lower_bound``.
 

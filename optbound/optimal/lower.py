@@ -58,16 +58,10 @@ points), take exchange steps and stop on ``max w <= (1 + tol) d`` alone, which a
 the gap (``khachiyan_weights``): on the points clustered at a curved contact the separate
 forward and away steps zigzag, and took the 5 000 allowed steps without converging.
 
-Cost, as a ratio to the ``outer_ellipsoid`` call without the bound (median per instance of
-the recursive family, ``python -m benchmarks.lower_bound_cost``): about 2 at n = 2, k = 10,
-4-5 at n = 3, k = 10 and 3 at n = 4, k = 50 (3.2-3.5, 6.6-7.9 and 5.0-5.2 in the same runs
-for the code before the compiled climbing round, the exchange steps and the warm-started
-final weights; 2-core VM at load 1.0-1.3). In absolute terms: 8 ms, 22-25 ms and 0.14-0.15 s
-against 12 ms, 35-41 ms and 0.23-0.25 s. What remains is mostly the climb of point 3,
-about a microsecond per point and round over some 12 000 point-rounds in 3-D with ten
-strips: its thousands of rays are what the bound's quality rests on (``_RAYS_PER_DIM``: 300
-rays per dimension lowered the 4-D bounds of the recursive family by 0.4 % on average and 5 %
-at most against 450).
+Cost: a small multiple of the ``outer_ellipsoid`` call without the bound, measured per
+instance of the recursive family by ``python -m benchmarks.lower_bound_cost``. Most of it is
+the climb of point 3 (thousands of rays), which is what the bound's quality rests on: fewer
+rays per dimension (``_RAYS_PER_DIM``) give measurably lower (weaker) bounds in 4-D.
 """
 
 from __future__ import annotations

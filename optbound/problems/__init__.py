@@ -11,20 +11,37 @@ p.references()     # {"optimal_ellipsoid": ..., "best_box": ...}, certified oute
 result = evaluate(my_estimator, suite)          # size brackets, ratios, soundness per problem
 ```
 
-Families: ``strip`` (ellipsoid ∩ strip) so far; each family module defines
-``problems(suite, seed) -> list[Problem]``.
+Families (one module each, defining ``problems(suite, seed) -> list[Problem]``): ``strip``
+(ellipsoid ∩ strip), ``minkowski`` (sum of two ellipsoids), ``recursive`` (ellipsoid ∩ a
+sequence of strips), ``bh_bearings`` (BH relative bearings), ``hs96_pose`` (HS96 landmark
+bearings, pose x, y, psi), ``sonar`` (LJMW97/KJWM00 sonar scan, pose x, y, theta),
+``visibility`` (GLH12: one robot's box at one step).
 """
 
 from __future__ import annotations
 
+import importlib
+
 from optbound._lazy import attach
-from optbound.problems import strip
 from optbound.problems.audit import evaluate
 from optbound.problems.evaluation import Evaluation
 from optbound.problems.problem import Problem
 
 SUITES = ("tiny", "quick", "full")
-_FAMILIES = {strip.NAME: strip.problems}
+#: Family name -> its module (imported when a suite asks for it: the localization families
+#: pull in their models and worlds).
+_FAMILIES = {
+    name: f"optbound.problems.{name}"
+    for name in (
+        "strip",
+        "minkowski",
+        "recursive",
+        "bh_bearings",
+        "hs96_pose",
+        "sonar",
+        "visibility",
+    )
+}
 
 
 def families() -> list[str]:
@@ -49,9 +66,13 @@ def suite(name: str, families: list[str] | None = None, seed: int = 0) -> list[P
     unknown = [f for f in chosen if f not in _FAMILIES]
     if unknown:
         raise ValueError(f"families: unknown {unknown}; known: {list(_FAMILIES)}")
-    return [p for family in chosen for p in _FAMILIES[family](name, seed)]
+    return [
+        p
+        for family in chosen
+        for p in importlib.import_module(_FAMILIES[family]).problems(name, seed)
+    ]
 
 
 __all__ = ["SUITES", "Evaluation", "Problem", "evaluate", "families", "suite"]
 
-__getattr__, __dir__ = attach(__name__, public=__all__, submodules=())
+__getattr__, __dir__ = attach(__name__, public=__all__, submodules=tuple(_FAMILIES))

@@ -86,3 +86,21 @@ def random_strip(rng: np.random.Generator, E: Ellipsoid, kind: str) -> Strip:
     """A random strip of the given kind (see :func:`strip_bounds`) cutting ``E``."""
     direction = unit_direction(rng, E.dim)
     return strip_through(E, direction, *strip_bounds(rng, kind))
+
+
+def strips_around(
+    rng: np.random.Generator, E: Ellipsoid, point: np.ndarray, k: int, width: float
+) -> list[Strip]:
+    """``k`` random strips that all contain ``point``: a consistent measurement sequence.
+
+    Each strip has normalised width ``width`` (relative to ``E``'s extent along its normal)
+    and holds ``point`` at a uniformly random position across its width, like a bounded-error
+    measurement of ``point``.
+    """
+    strips = []
+    for _ in range(k):
+        d = unit_direction(rng, E.dim)
+        h = float(np.sqrt(d @ E.shape @ d))
+        lo = float(d @ point) - rng.uniform(0.0, width) * h
+        strips.append(Strip.from_bounds(d, lo, lo + width * h))
+    return strips

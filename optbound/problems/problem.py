@@ -8,6 +8,7 @@ membership of a point and the paving can never disagree.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -50,6 +51,10 @@ class Problem:
     volume : callable or None
         ``volume() -> (lo, hi)``: a closed-form certified bracket of the true set's volume,
         where the family has one (else the exact paving's bracket is used).
+    optimal : callable or None
+        ``optimal(problem) -> Ellipsoid``: the family's certified optimal outer ellipsoid,
+        where it is not the S-procedure SDP of :attr:`intersection` (e.g. the SDP of a
+        Minkowski sum, or the best of an SDP and the MVEE of the exact paving's boxes).
     """
 
     family: str
@@ -63,6 +68,7 @@ class Problem:
     eps: float = field(repr=False)
     intersection: tuple = field(default=(), repr=False)
     volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
+    optimal: Callable[[Problem], Any] | None = field(default=None, repr=False)
     _cache: dict = field(default_factory=dict, repr=False)
 
     def member(self, X) -> np.ndarray:
@@ -98,16 +104,41 @@ class Problem:
     def references(self) -> dict[str, Any]:
         """Reference bounds of the true set, all certified to contain it.
 
-        - ``"optimal_ellipsoid"``: the S-procedure SDP optimum of :attr:`intersection`
-          (``optimal.outer_ellipsoid``, certified and inflated if needed);
+        - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has one,
+          else the S-procedure SDP optimum of :attr:`intersection`
+          (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
+          intersection) the certified MVEE of the exact paving's box corners
+          (``optimal.mvee``, which contains every box);
         - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
           hence exact), the smallest box the paving can prove.
         """
         if "references" not in self._cache:
-            from optbound import optimal  # cvxpy only when a reference is asked for
-
             self._cache["references"] = {
-                "optimal_ellipsoid": optimal.outer_ellipsoid(list(self.intersection)).ellipsoid,
+                "optimal_ellipsoid": self._optimal_ellipsoid(),
                 "best_box": self.exact().hull(),
             }
         return dict(self._cache["references"])
+
+    def _optimal_ellipsoid(self):
+        if self.optimal is not None:
+            return self.optimal(self)
+        from optbound import optimal  # cvxpy only when a reference is asked for
+
+        if self.intersection:
+            return optimal.outer_ellipsoid(list(self.intersection)).ellipsoid
+        return optimal.mvee(paving_corners(self.exact())).ellipsoid
+
+
+def paving_corners(paving: Paving) -> np.ndarray:
+    """The vertices of the convex hull of the corners of a paving's inner and boundary boxes.
+
+    An ellipsoid containing them contains every box, hence the paved set: the input of the
+    MVEE reference (the hull's vertices alone give the same MVEE, far fewer points).
+    """
+    from scipy.spatial import ConvexHull
+
+    outer = paving.outer()
+    n = outer.shape[1]
+    picks = np.array(list(itertools.product((0, 1), repeat=n)))
+    corners = np.unique(np.concatenate([outer[:, np.arange(n), pick] for pick in picks]), axis=0)
+    return corners[ConvexHull(corners).vertices]

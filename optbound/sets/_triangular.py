@@ -1,8 +1,8 @@
 """Inverse of a small lower-triangular matrix, compiled.
 
-scipy's ``solve_triangular`` goes through a multi-threaded OpenBLAS: on a busy machine a 2x2
-solve then waits for a worker thread's time slice and took ~8 ms instead of ~10 µs (measured
-in the benchmark's worker processes). The matrices here are the Cholesky factors of set shapes
+scipy's ``solve_triangular`` goes through a multi-threaded OpenBLAS: on a busy machine even a
+2x2 solve can wait for a worker thread's time slice, thousands of times its own cost. The
+matrices here are the Cholesky factors of set shapes
 (n <= a few dozen), for which plain forward substitution is the fast and predictable choice.
 """
 

@@ -27,7 +27,7 @@ _EIG_RTOL = 1e-12
 
 
 # The kernels below build and test the forms of one SDP call: as numpy, each would be a few
-# tiny calls at 1-3 µs of overhead apiece (``optbound/bench/sdp_cache.py``).
+# tiny calls whose overhead exceeds their arithmetic (``optbound/bench/sdp_cache.py``).
 @njit(cache=True)
 def _ellipsoid_form(center: np.ndarray, chol: np.ndarray) -> np.ndarray:
     """``[[P, -P c], [-c^T P, c^T P c - 1]]`` with ``P = C^{-1} = L^{-T} L^{-1}`` (exactly

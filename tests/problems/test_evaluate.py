@@ -12,12 +12,14 @@ from hypothesis import strategies as st
 
 import optbound
 from optbound import Box, Ellipsoid, problems
-from optbound.compare import exact, tri_contains
+from optbound.compare import tri_contains
 from optbound.interval import Tri
 from optbound.problems.evaluation import COLUMNS
 from tests.problems.estimators import hull_box, prior_ellipsoid, shrunk_box
+from tests.problems.exact_membership import check as exactly_in_true_set
 
-TINY = problems.suite("tiny")
+ALL = problems.suite("tiny")  # every family
+TINY = [p for p in ALL if p.family == "strip"]  # the strip-specific tests
 
 
 def test_evaluate_is_exported():
@@ -28,8 +30,8 @@ def test_evaluate_is_exported():
 
 
 def test_hull_box_is_proven_and_its_ratios_are_brackets():
-    result = problems.evaluate(hull_box, TINY)
-    assert [r["soundness"] for r in result.rows] == ["proven"] * len(TINY)
+    result = problems.evaluate(hull_box, ALL)
+    assert [r["soundness"] for r in result.rows] == ["proven"] * len(ALL)
     for r in result.rows:
         assert set(r) == set(COLUMNS)
         assert r["error"] is None and r["counterexample"] is None
@@ -42,17 +44,13 @@ def test_hull_box_is_proven_and_its_ratios_are_brackets():
         assert r["ratio_lo"] >= 1.0 or r["ratio_hi"] >= 1.0
 
 
-def _exactly_in_true_set(p, x) -> bool:
-    return exact.member(p.data["ellipsoid"], x) and exact.member(p.data["strip"], x)
-
-
 def test_shrunk_box_is_refuted_with_exact_counterexamples():
-    result = problems.evaluate(shrunk_box, TINY)
-    for p, r, S in zip(TINY, result.rows, result.sets, strict=True):
+    result = problems.evaluate(shrunk_box, ALL)
+    for p, r, S in zip(ALL, result.rows, result.sets, strict=True):
         assert r["soundness"] == "refuted", r
         x = np.array(r["counterexample"])
         assert p.member(x)[0] == Tri.TRUE
-        assert _exactly_in_true_set(p, x)
+        assert exactly_in_true_set(p, x)
         # Outside the shrunk box, compared as exact rationals.
         fx = [Fraction(c) for c in x]
         assert any(
@@ -70,7 +68,7 @@ def test_prior_ellipsoid_is_proven_exactly():
 @settings(max_examples=8)
 @given(st.integers(0, 2**20), st.integers(0, 3), st.sampled_from([0.5, 1.0, 2.0]))
 def test_hull_of_the_exact_paving_is_never_refuted(seed, index, eps_factor):
-    p = problems.suite("tiny", seed=seed)[index]
+    p = problems.suite("tiny", families=["strip"], seed=seed)[index]
     eps = p.eps * eps_factor
 
     def hull(problem):
@@ -134,7 +132,7 @@ def test_user_objects_contains_only_and_tri_contains():
     p = TINY[0]
     only = problems.evaluate(lambda q: _ContainsOnly(shrunk_box(q)), p).rows[0]
     assert only["soundness"] == "refuted" and only["size_lo"] is None
-    assert _exactly_in_true_set(p, np.array(only["counterexample"]))
+    assert exactly_in_true_set(p, np.array(only["counterexample"]))
     tri = problems.evaluate(lambda q: _TriSet(hull_box(q)), p).rows[0]
     assert tri["soundness"] == "proven"
     box_lo, box_hi = hull_box(p).volume(), hull_box(p).volume()

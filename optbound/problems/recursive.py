@@ -1,0 +1,121 @@
+"""Family ``recursive``: a prior ellipsoid cut by a sequence of strips, ``E0 ∩ S_1 ∩ ... ∩ S_k``.
+
+The instances of the benchmark family of the same name, with its seeds: a random prior
+ellipsoid (condition number 10, dimension 2-4 in the quick suite, up to 6 in full), a true
+point drawn in it, and up to 50 strips that all contain that point, each of normalised
+width ``width`` [HS96, Sect. 4]. One problem per task and depth ``k`` of the benchmark: the
+estimator gets ``data = {"prior": E0, "strips": (S_1, ..., S_k)}`` (to fuse in this order,
+recursively or at once) and ``truth`` is the point. The true set is the intersection,
+described once by the conjunction of the sets' interval tests; its reference ellipsoid is
+the S-procedure SDP over all k strips at once (the benchmark's "batch SDP").
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from optbound.compare.tri import as_pseudo_ellipsoid, tri_test
+from optbound.interval import Interval, tri_and
+from optbound.problems._random import random_ellipsoid, strips_around, task_seeds
+from optbound.problems.problem import Problem
+from optbound.sets import Box, Ellipsoid, Strip
+
+NAME = "recursive"
+PRIOR_COND = 10.0
+# (dims, normalised strip widths, depths k, repetitions), as the benchmark family runs them.
+SIZES = {
+    "tiny": ((2,), (0.3,), (1, 3, 5), 1),
+    "quick": ((2, 3, 4), (0.2, 1.0), (1, 2, 3, 5, 10, 20, 30, 40, 50), 4),
+    "full": ((2, 3, 4, 5, 6), (0.2, 0.5, 1.0), tuple(range(1, 51)), 6),
+}
+#: Default paving resolution, as a fraction of the domain's widest extent (see ``strip``).
+RELATIVE_EPS = {2: 1 / 128, 3: 1 / 32, 4: 1 / 12, 5: 1 / 8, 6: 1 / 6}
+
+
+def tasks(suite: str, seed: int) -> list[dict]:
+    """The instance cells of a suite: seed, dimension, strip width, depths, repetition."""
+    if suite not in SIZES:
+        raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
+    dims, widths, ks, reps = SIZES[suite]
+    cells = list(itertools.product(dims, widths, range(reps)))
+    return [
+        {"seed": s, "dim": dim, "width": width, "ks": list(ks), "rep": rep}
+        for s, (dim, width, rep) in zip(task_seeds(seed, NAME, len(cells)), cells, strict=True)
+    ]
+
+
+def instance(
+    seed: int, dim: int, width: float, k: int
+) -> tuple[Ellipsoid, np.ndarray, list[Strip]]:
+    """Prior ellipsoid, true point and ``k`` strips of one instance, rebuilt from its seed."""
+    rng = np.random.default_rng(seed)
+    E0 = random_ellipsoid(rng, dim, PRIOR_COND)
+    point = E0.sample(1, rng)[0]
+    return E0, point, strips_around(rng, E0, point, k, width)
+
+
+def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]:
+    """Boxes proven to contain ``E0 ∩ S_1 ∩ ... ∩ S_k``, one per depth ``k`` of ``ks``.
+
+    ``E0``'s box contracted by one pass over the strips in order, the box of a depth carried
+    to the next: each strip ``|a^T x - b| <= 1`` gives, for every coordinate ``i`` with
+    ``a_i != 0``, ``x_i ∈ (b + [-1, 1] - sum_{j != i} a_j X_j) / a_i`` in outward-rounded
+    interval arithmetic (forward-backward propagation, all coordinates at once), intersected
+    with ``X_i``.
+    """
+    prior = as_pseudo_ellipsoid(E0).bounding_box()  # outward-rounded: contains E0
+    X, n, done, out = Interval(prior.lo, prior.hi), E0.dim, 0, []
+    for k in ks:
+        for S in strips[done:k]:
+            rest = Interval(S.b) + Interval(-1.0, 1.0)
+            for j in range(n):
+                others = np.where(np.arange(n) == j, 0.0, S.a[j])  # a_j, except in row j
+                rest = rest - Interval(others) * X[j]
+            cut = S.a != 0.0
+            solved = rest[cut] / Interval(S.a[cut])
+            lo, hi = X.lo.copy(), X.hi.copy()
+            lo[cut], hi[cut] = np.maximum(lo[cut], solved.lo), np.minimum(hi[cut], solved.hi)
+            X = Interval(lo, hi)
+        done = max(done, k)
+        out.append(Box(np.asarray(X.lo, dtype=float), np.asarray(X.hi, dtype=float)))
+    return out
+
+
+def problem(
+    task: dict, k: int, E0: Ellipsoid, point: np.ndarray, strips: list[Strip], domain: Box
+) -> Problem:
+    """The :class:`Problem` of depth ``k`` of one task (the first ``k`` strips), paved in
+    ``domain`` (a box proven to contain the true set, from :func:`domain_boxes`)."""
+    sets = (E0, *strips[:k])
+    tests = tuple(tri_test(S) for S in sets)
+
+    def test(*coords):
+        return tri_and(*(t(*coords) for t in tests))
+
+    return Problem(
+        family=NAME,
+        name=f"d{task['dim']}-w{task['width']:g}-k{k}-r{task['rep']}",
+        seed=task["seed"],
+        dim=E0.dim,
+        data={"prior": E0, "strips": tuple(strips[:k])},
+        truth=point.copy(),
+        test=test,
+        domain=domain,
+        eps=float(np.max(domain.widths)) * RELATIVE_EPS[E0.dim],
+        intersection=sets,
+    )
+
+
+def problems(suite: str, seed: int = 0) -> list[Problem]:
+    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    out = []
+    for task in tasks(suite, seed):
+        E0, point, strips = instance(task["seed"], task["dim"], task["width"], max(task["ks"]))
+        boxes = domain_boxes(E0, strips, task["ks"])
+        out += [
+            problem(task, k, E0, point, strips, box)
+            for k, box in zip(task["ks"], boxes, strict=True)
+        ]
+    return out
