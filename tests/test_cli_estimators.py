@@ -206,3 +206,12 @@ def test_the_section_renders_rows_read_back_from_json():
     assert parts[0] == "## Your estimators"
     assert "| strip | p | [2, inf] | [1.5, inf] | – | – | undecided | 0.5 |" in parts[2]
     assert estimators_section({"estimators": []}) == estimators_section({}) == []
+
+
+def test_bench_families_select_the_problem_families_with_their_instances():
+    from optbound.bench.user_estimators import problem_families
+
+    assert problem_families(None) == problems.families()
+    assert problem_families(["strip"]) == ["strip"]
+    assert problem_families(["localization", "strip"]) == ["strip", "bh_bearings"]
+    assert problem_families(["speed_sdp"]) == []

@@ -2,7 +2,8 @@
 
 The problems are those of :func:`optbound.problems.suite` with the bench's suite and seed (the
 instances of the built-in families, bitwise), restricted to the families the bench run selects
-(``--family``) where a problem family of that name exists. Each estimator is audited by
+(``--family``): the problem families whose instances are those of a selected bench family
+(:func:`problem_families`). Each estimator is audited by
 :func:`optbound.evaluate` in this process; the exact paving and the references of a problem are
 computed once and shared by every estimator. The rows go into ``results["estimators"]``::
 
@@ -13,6 +14,7 @@ computed once and shared by every estimator. The rows go into ``results["estimat
 
 from __future__ import annotations
 
+import importlib
 import json
 import time
 from collections.abc import Callable
@@ -20,11 +22,19 @@ from typing import Any
 
 
 def problem_families(selected: list[str] | None) -> list[str]:
-    """The problem families a bench run over ``selected`` bench families covers (all if None)."""
+    """The problem families a bench run over ``selected`` bench families covers (all if None):
+    those whose instances are a selected family's (a family module's ``BENCH_NAME``, e.g.
+    ``bh_bearings`` for ``localization``; by default its own name)."""
     from optbound import problems
 
     known = problems.families()
-    return known if not selected else [f for f in selected if f in known]
+    if not selected:
+        return known
+    bench_name = {
+        f: getattr(importlib.import_module(f"optbound.problems.{f}"), "BENCH_NAME", f)
+        for f in known
+    }
+    return [f for f in known if bench_name[f] in selected]
 
 
 def run_estimators(
