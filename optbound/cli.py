@@ -154,8 +154,9 @@ def _add_evaluate_parser(sub) -> None:
     evaluate = sub.add_parser(
         "evaluate",
         help="audit your estimator on the public problems and print the table",
-        description="Run ESTIMATOR (a callable problem -> set, named module:callable and "
-        "loaded from the Python path) on the problems of a suite (optbound.problems.suite) "
+        description="Run ESTIMATOR (a callable problem -> set: module:callable, loaded "
+        "from the Python path, or the name of an estimator registered under the entry-point "
+        "group optbound.estimators) on the problems of a suite (optbound.problems.suite) "
         "and print optbound.evaluate's table: size and ratio brackets, soundness "
         "(proven / refuted at a counterexample / undecided), seconds and errors.",
     )
@@ -185,6 +186,8 @@ def _evaluate(args: argparse.Namespace) -> int:
     from optbound import evaluate, problems
     from optbound.problems import registry
 
+    if args.estimator == registry.ALL_REGISTERED:
+        raise CommandError(f"evaluate takes one estimator; {args.estimator!r} is for bench")
     try:
         estimator = registry.resolve([args.estimator])[args.estimator]
         todo = problems.suite(args.suite, families=args.family, seed=args.seed)

@@ -136,6 +136,11 @@ def test_a_bad_estimator_spec_is_one_line_and_exit_2(spec, message, tmp_path, ca
     assert not out.exists()  # checked before any work
 
 
+def test_evaluate_takes_one_estimator(capsys):
+    assert main(["evaluate", registry.ALL_REGISTERED]) == 2
+    assert "evaluate takes one estimator" in capsys.readouterr().err
+
+
 def test_evaluate_rejects_an_unknown_family(capsys):
     assert main(["evaluate", "optbound.problems.estimators:analytic_volume", "--family", "x"]) == 2
     assert "families: unknown ['x']" in capsys.readouterr().err
