@@ -1,7 +1,10 @@
 """Measurement scripts run from a source checkout (``python -m benchmarks.<script>``).
 
 Not installed: the benchmark families that ``optbound bench`` runs live in
-:mod:`optbound.bench`. The scripts here measure the compiled analytic kernels against plain
-reference kernels (``speed_analytic``, ``analytic_reference``), the cost of the SDP lower
-bound (``lower_bound_cost``) and the start-up time of the command (``cli_startup``).
+:mod:`optbound.bench` (the analytic kernels against their plain reference included:
+``python -m optbound.bench.speed_analytic``). The scripts here measure the cost of the SDP
+lower bound (``lower_bound_cost``), the start-up time of the command (``cli_startup``), what
+``optbound.evaluate`` costs per problem (``audit_cost``), the one-time compilation
+(``compile_cost``), the first and second run of the bench (``first_run``) and where a warm
+bench spends its time (``bench_profile``).
 """

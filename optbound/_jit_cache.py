@@ -27,26 +27,29 @@ def kernel_sources(root: Path = ROOT) -> list[Path]:
     return sorted(p for p in root.rglob("*.py") if b"njit" in p.read_bytes())
 
 
-def refresh(cache_dirs=None, sources=None) -> bool:
+def refresh(cache_dirs=None, sources=None, stamp: str = STAMP) -> bool:
     """Drop all kernel caches if any kernel source changed; True if something was dropped.
 
-    Never raises on file-system errors (a read-only install keeps numba's own behaviour).
+    ``cache_dirs`` and ``sources`` default to the package's kernels; code compiled elsewhere
+    that calls them (``optbound.bench.analytic_reference``) passes its own folders, its sources
+    and the kernels', and its own ``stamp`` name. Never raises on file-system errors (a
+    read-only install keeps numba's own behaviour).
     """
     sources = kernel_sources() if sources is None else sources
     digest = hashlib.sha256(b"".join(p.read_bytes() for p in sources)).hexdigest()
     dirs = cache_dirs or sorted({p.parent / "__pycache__" for p in sources})
     dropped = False
     for folder in dirs:
-        stamp = folder / STAMP
+        marker = folder / stamp
         try:
-            if stamp.exists() and stamp.read_text() == digest:
+            if marker.exists() and marker.read_text() == digest:
                 continue
             for pattern in ("*.nbi", "*.nbc"):
                 for f in folder.glob(pattern):
                     f.unlink()
                     dropped = True
             folder.mkdir(exist_ok=True)
-            stamp.write_text(digest)
+            marker.write_text(digest)
         except OSError:
             continue
     return dropped

@@ -26,7 +26,7 @@ HERE = Path(__file__).resolve().parent
 DEFAULT_OUT = HERE / "out"
 CLAIM_HEADERS = ("quantity", "paper", "optbound")
 #: Paper keys in the order of the report (others follow alphabetically).
-PAPER_ORDER = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12")
+PAPER_ORDER = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12", "ABC05")
 
 
 @dataclass(frozen=True)

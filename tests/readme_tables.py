@@ -94,7 +94,7 @@ def _speed_analytic() -> str:
 
 def _margin() -> str:
     """The certified margins of the analytic updates against the float-storage floor."""
-    from benchmarks.speed_analytic import margin_distribution
+    from optbound.bench.speed_analytic import margin_distribution
     from optbound.report.tables import markdown_table
 
     rows = [

@@ -3,7 +3,7 @@
 These are the formulas of [HS96] as the paper states them, evaluated as written: no validation,
 no error bounds, no margin. They are the oracle the tests hold the compiled kernels of
 ``optbound.analytic._kernels`` against, and the baseline of the speed benchmark
-(``benchmarks/analytic_reference.py`` compiles them unchanged).
+(``optbound/bench/analytic_reference.py`` compiles them unchanged).
 
 **Not guaranteed**: the float result of a member is the member up to rounding, and may miss
 points of the true set by a few units in the last place; use :func:`~optbound.analytic.

@@ -13,7 +13,6 @@ report prints verbatim (e.g. "codac is not installed").
 from __future__ import annotations
 
 import importlib
-import zlib
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -79,15 +78,3 @@ def _available(requirement: str) -> bool:
     except ImportError:
         return False
     return not attr or hasattr(mod, attr)
-
-
-def task_seeds(seed: int, name: str, count: int) -> list[int]:
-    """``count`` reproducible 32-bit instance seeds for family ``name`` under suite seed ``seed``.
-
-    The family name enters the seed sequence, so two families never share instances and
-    adding a family does not change the instances of the others.
-    """
-    import numpy as np  # here, not at the top: the command line imports this module
-
-    state = np.random.SeedSequence([seed, zlib.crc32(name.encode())]).generate_state(count)
-    return [int(s) for s in state]

@@ -38,9 +38,10 @@ import time
 
 import numpy as np
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.localization import relative_bearing as rb
 from optbound.localization.linearized_bearing import linearized_localize
+from optbound.problems.generators import task_seeds
 from optbound.scenarios import bh_geometry as bh
 from optbound.sets import Box
 

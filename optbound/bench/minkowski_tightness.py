@@ -15,8 +15,8 @@ import itertools
 import numpy as np
 
 from optbound.bench import records
-from optbound.bench.family import Family, task_seeds
-from optbound.bench.instances import random_ellipsoid
+from optbound.bench.family import Family
+from optbound.problems.generators import random_ellipsoid, task_seeds
 
 NAME = "minkowski"
 SIZES = {

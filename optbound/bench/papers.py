@@ -15,7 +15,8 @@ import base64
 import tempfile
 from pathlib import Path
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
+from optbound.problems.generators import task_seeds
 
 NAME = "papers"
 ATTACHMENT_DIR = "papers"

@@ -20,7 +20,7 @@ FAMILIES: dict[str, str] = {
     "minkowski": "optbound.bench.minkowski_tightness:FAMILY",
     "recursive": "optbound.bench.recursive_tightness:FAMILY",
     "localization": "optbound.bench.localization_tightness:FAMILY",
-    "speed_analytic": "benchmarks.speed_analytic:FAMILY",
+    "speed_analytic": "optbound.bench.speed_analytic:FAMILY",
     "speed_sdp": "optbound.bench.speed_sdp:FAMILY",
     "speed_sivia": "optbound.bench.speed_sivia:FAMILY",
     "speed_hs96": "optbound.bench.speed_hs96:FAMILY",
@@ -28,12 +28,6 @@ FAMILIES: dict[str, str] = {
     "speed_sonar": "optbound.bench.speed_sonar:FAMILY",
     "papers": "optbound.bench.papers:FAMILY",
 }
-
-#: Top-level packages of the source checkout that are not installed: a family defined there
-#: (``speed_analytic``, which times the kernels against the plain kernels of
-#: ``benchmarks/analytic_reference.py``) runs from the repository's root (``python -m
-#: optbound bench``) and is reported as skipped elsewhere.
-SOURCE_ONLY = ("benchmarks",)
 
 
 def families() -> list[Family]:
@@ -43,28 +37,7 @@ def families() -> list[Family]:
 
 def _load(name: str, target: str) -> Family:
     module, _, attr = target.partition(":")
-    try:
-        family = getattr(importlib.import_module(module), attr)
-    except ModuleNotFoundError as exc:
-        # Absent is the target module or a package above it (e.g. a user's own package named
-        # ``benchmarks`` has no ``speed_analytic``), not something the module imports.
-        absent = exc.name is not None and f"{module}.".startswith(f"{exc.name}.")
-        if not absent or module.partition(".")[0] not in SOURCE_ONLY:
-            raise
-        return _absent(name, target)
+    family = getattr(importlib.import_module(module), attr)
     if family.name != name:
         raise ValueError(f"FAMILIES[{name!r}] points at the family named {family.name!r}")
     return family
-
-
-def _absent(name: str, target: str) -> Family:
-    """A family of the source checkout, outside it: skipped, with the target as its reason."""
-    return Family(
-        name=name,
-        title=f"{name} (needs the repository's benchmarks/ folder)",
-        kind="speed",
-        requires=(target,),
-        tasks=lambda suite, seed: [],
-        run=lambda task: {"records": []},
-        parallel=False,
-    )

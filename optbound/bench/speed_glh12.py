@@ -21,11 +21,12 @@ import time
 
 import numpy as np
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.bench.timing import per_call, speed_record
 from optbound.interval import Interval, Tri
 from optbound.localization.geometry import intersect
 from optbound.localization.visibility import luvia, track, visibility_test
+from optbound.problems.generators import task_seeds
 from optbound.scenarios import arena
 
 NAME = "speed_glh12"

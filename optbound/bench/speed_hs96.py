@@ -32,12 +32,13 @@ from pathlib import Path
 import numpy as np
 
 from optbound import analytic
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.bench.timing import speed_record
 from optbound.localization.association import associate
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position
 from optbound.localization.tracker import SetTracker
+from optbound.problems.generators import task_seeds
 from optbound.report.tables import fmt_factor, markdown_table
 from optbound.scenarios import office
 from optbound.sets import Ellipsoid

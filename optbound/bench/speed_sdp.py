@@ -6,8 +6,9 @@ family runs it inside the suite so that its ratio lands in the same report.
 
 from __future__ import annotations
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.bench.timing import speed_record
+from optbound.problems.generators import task_seeds
 
 NAME = "speed_sdp"
 SOLVES = {"tiny": 3, "quick": 30, "full": 200}

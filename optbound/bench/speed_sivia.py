@@ -8,8 +8,9 @@ would otherwise skew every later float operation of the run (and of a test sessi
 
 from __future__ import annotations
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.bench.timing import speed_record
+from optbound.problems.generators import task_seeds
 
 NAME = "speed_sivia"
 # (eps values, repeats) per suite.

@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import math
 
-from optbound.bench.family import Family, task_seeds
+from optbound.bench.family import Family
 from optbound.bench.speed_sivia import sivia_records
 from optbound.bench.timing import speed_record
+from optbound.problems.generators import task_seeds
 
 NAME = "speed_sonar"
 

@@ -21,8 +21,8 @@ import itertools
 import numpy as np
 
 from optbound.bench import records
-from optbound.bench.family import Family, task_seeds
-from optbound.bench.instances import STRIP_KINDS, random_ellipsoid, random_strip
+from optbound.bench.family import Family
+from optbound.problems.generators import STRIP_KINDS, random_ellipsoid, random_strip, task_seeds
 
 NAME = "strip"
 # (dims, condition numbers, repetitions per cell); 10 is in every suite for the 2-D figures.

@@ -16,22 +16,27 @@ from optbound._core import Box
 from optbound.estimation.system import LinearSystem
 from optbound.sets.certified import sum_centers
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
+from optbound.sets.ellipsoid import Ellipsoid
 from optbound.sets.zonotope import Zonotope
 
 
 def measurement_set(system: LinearSystem, y: np.ndarray) -> Zonotope:
     """``y - V`` as a zonotope (its centre's rounding as extra generators)."""
-    c, extra = sum_centers(y, -system.V.center)
-    return Zonotope(c, np.hstack([system.V.generators, extra]))
+    V = system.V_zonotope
+    c, extra = sum_centers(y, -V.center)
+    return Zonotope(c, np.hstack([V.generators, extra]))
 
 
 def as_initial(X0, n: int) -> ConstrainedZonotope:
-    """``X0`` (a Box, Zonotope or ConstrainedZonotope of dimension n) as a constrained zonotope."""
+    """``X0`` (a Box, Zonotope, ConstrainedZonotope or Ellipsoid of dimension n) as a
+    constrained zonotope (an ellipsoid by its certified enclosing parallelotope)."""
+    if isinstance(X0, Ellipsoid):
+        X0 = Zonotope.from_ellipsoid(X0)
     if isinstance(X0, Box | Zonotope):
         X0 = ConstrainedZonotope.from_zonotope(X0)
     if not isinstance(X0, ConstrainedZonotope):
         raise TypeError(
-            f"X0 must be a Box, Zonotope or ConstrainedZonotope, got {type(X0).__name__}"
+            f"X0 must be a Box, Zonotope, ConstrainedZonotope or Ellipsoid, got {type(X0).__name__}"
         )
     if X0.dim != n:
         raise ValueError(f"X0 must have dimension {n}, got {X0.dim}")
@@ -42,12 +47,24 @@ def predict_correct(
     system: LinearSystem, X: ConstrainedZonotope, y: np.ndarray
 ) -> ConstrainedZonotope:
     """``(A X + W) ∩_C (y - V)``, one exact step."""
-    pred = X.affine_map(system.A).minkowski_sum(system.W)
+    pred = X.affine_map(system.A).minkowski_sum(system.W_zonotope)
     return pred.generalized_intersection(measurement_set(system, y), system.C)
 
 
 def exact_sets(system: LinearSystem, X0, ys) -> list[ConstrainedZonotope]:
-    """``[X_1, ..., X_N]``, the exact set after each measurement ``ys[k-1]`` (module doc)."""
+    """``[X_1, ..., X_N]``, the exact set after each measurement ``ys[k-1]`` (module doc).
+
+    Raises
+    ------
+    ValueError
+        If ``W``, ``V`` or ``X0`` is an ellipsoid: the exact set is then not a polytope, and no
+        constrained zonotope represents it (the observers still bound it).
+    """
+    if not system.polytopic or isinstance(X0, Ellipsoid):
+        raise ValueError(
+            "exact_sets needs Box or Zonotope noise and X0: with an ellipsoidal W, V or X0 the "
+            "exact set is not a polytope"
+        )
     ys = system.measurements(ys)
     X = as_initial(X0, system.dim)
     out = []

@@ -11,12 +11,23 @@
   radius (their F-radius criterion). One output row at a time (a zonotopic ``V`` is first
   boxed per row), then Girard reduction to ``order * n`` generators. The new data are
   enclosed in interval arithmetic, so the result contains the exact set.
+- ``"zonotope_volume"``: the same recursion with the gain minimising the *volume* of each
+  strip update exactly (a linear program, ``optbound.estimation.zonotope_gains``; the
+  volume criterion of Alamo et al. 2005, Sect. 5). Its cost grows with the number of
+  generator subsets, so it is for small ``n * order``.
 - ``"constrained_zonotope"``: the exact recursion of ``optbound.estimation.exact`` followed by
   the budget of Scott et al. (Automatica 2016, Sect. 4.2 and 6): at most ``max_constraints``
   constraints (the excess eliminated, :meth:`ConstrainedZonotope.eliminate_constraints`) and
   at most ``order * n`` generators (lifted Girard reduction,
   :meth:`ConstrainedZonotope.reduce_order`). Defaults: ``order = 8``, ``max_constraints = 2``
   (stated budget; the reduction needs ``order * n >= n + max_constraints``).
+- ``"ellipsoid_volume"``, ``"ellipsoid_trace"``: Schweppe's predictor and one strip fusion
+  per output row with :mod:`optbound.analytic`, the member chosen by volume or trace
+  (``optbound.estimation.ellipsoidal``).
+
+Ellipsoidal noise or ``X0`` enters the polytopic observers as its certified enclosing
+parallelotope, zonotopic noise the ellipsoidal ones as a certified enclosing ellipsoid
+(``optbound.estimation.noise``).
 """
 
 from __future__ import annotations
@@ -24,12 +35,23 @@ from __future__ import annotations
 import numpy as np
 
 from optbound._core import Box
+from optbound.estimation.ellipsoidal import CRITERIA as ELLIPSOIDAL
+from optbound.estimation.ellipsoidal import observe_ellipsoids
 from optbound.estimation.exact import as_initial, measurement_set, predict_correct
 from optbound.estimation.system import LinearSystem
+from optbound.estimation.zonotope_gains import frobenius_gain, volume_gain
 from optbound.sets.base import EmptySetError
 from optbound.sets.zonotope import Zonotope
 
-METHODS = ("interval", "zonotope", "constrained_zonotope")
+ZONOTOPE_GAINS = {"zonotope": "frobenius", "zonotope_volume": "volume"}
+METHODS = (
+    "interval",
+    "zonotope",
+    "zonotope_volume",
+    "constrained_zonotope",
+    "ellipsoid_volume",
+    "ellipsoid_trace",
+)
 
 
 def _contract(lo_x: np.ndarray, hi_x: np.ndarray, C: np.ndarray, lo, hi) -> Box:
@@ -57,24 +79,24 @@ def _contract(lo_x: np.ndarray, hi_x: np.ndarray, C: np.ndarray, lo, hi) -> Box:
 
 def interval_step(system: LinearSystem, B: Box, y: np.ndarray) -> Box:
     """One step of the interval observer (module docstring)."""
-    pred = Zonotope.from_box(B).affine_map(system.A).minkowski_sum(system.W).bounding_box()
+    pred = Zonotope.from_box(B).affine_map(system.A).minkowski_sum(system.W_zonotope).bounding_box()
     Y = measurement_set(system, y).bounding_box()
     return _contract(pred.lo, pred.hi, system.C, Y.lo, Y.hi)
 
 
-def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
-    """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the F-radius gain (module
-    docstring, Alamo et al. 2005, Property 3)."""
+def alamo_strip(
+    Z: Zonotope, a: np.ndarray, lo: float, hi: float, gain: str = "frobenius"
+) -> Zonotope:
+    """Zonotope containing ``Z ∩ {x : lo <= a^T x <= hi}`` with the gain ``gain`` of
+    ``optbound.estimation.zonotope_gains`` (Alamo et al. 2005, Property 3)."""
     from optbound.interval import Interval
     from optbound.sets.certified import enclose, error_generators, matmul, point, split
 
     mid, s = split(Interval(lo, hi))
     c, G = Z.center, Z.generators
-    Ga = G.T @ a
-    denom = float(Ga @ Ga + s * s)
-    if denom == 0.0:
+    lam = frobenius_gain(G, a, s) if gain == "frobenius" else volume_gain(G, a, s)
+    if not np.any(lam):
         return Z
-    lam = (G @ Ga) / denom
     lam_iv = point(lam)
     residual = point(mid) - matmul(a[None, :], c[:, None])[0, 0]
     c_iv = lam_iv * residual + c
@@ -87,14 +109,16 @@ def alamo_strip(Z: Zonotope, a: np.ndarray, lo: float, hi: float) -> Zonotope:
     return Zonotope._compacted(c_new, np.hstack([G_new, error_generators(r)]))
 
 
-def zonotope_step(system: LinearSystem, Z: Zonotope, y: np.ndarray, order: float) -> Zonotope:
-    """One step of the zonotopic observer (module docstring)."""
-    Z = Z.affine_map(system.A).minkowski_sum(system.W)
+def zonotope_step(
+    system: LinearSystem, Z: Zonotope, y: np.ndarray, order: float, gain: str = "frobenius"
+) -> Zonotope:
+    """One step of a zonotopic observer with the strip gain ``gain`` (module docstring)."""
+    Z = Z.affine_map(system.A).minkowski_sum(system.W_zonotope)
     Y = measurement_set(system, y).bounding_box()
     for i, row in enumerate(system.C):
         if not Z.support(row) >= Y.lo[i] or not -Z.support(-row) <= Y.hi[i]:
             raise EmptySetError(f"the zonotope estimate misses the measurement strip of row {i}")
-        Z = alamo_strip(Z, row, Y.lo[i], Y.hi[i])
+        Z = alamo_strip(Z, row, Y.lo[i], Y.hi[i], gain)
     return Z.reduce_order(order, "girard")
 
 
@@ -112,13 +136,15 @@ def observe(
     ----------
     system : LinearSystem
         The model.
-    X0 : Box, Zonotope or ConstrainedZonotope
-        The set of ``x_0`` (no measurement at k = 0).
+    X0 : Box, Zonotope, ConstrainedZonotope or Ellipsoid
+        The set of ``x_0`` (no measurement at k = 0); the ellipsoidal observers refuse a
+        ConstrainedZonotope.
     ys : array_like, shape (N, p) or (N,) when p = 1
         ``ys[k-1]`` measures ``x_k``.
     method : str
-        ``"interval"`` (returns Boxes), ``"zonotope"`` (Zonotopes) or
-        ``"constrained_zonotope"`` (ConstrainedZonotopes); see the module docstring.
+        ``"interval"`` (returns Boxes), ``"zonotope"`` or ``"zonotope_volume"`` (Zonotopes),
+        ``"constrained_zonotope"`` (ConstrainedZonotopes), ``"ellipsoid_volume"`` or
+        ``"ellipsoid_trace"`` (Ellipsoids); see the module docstring.
     order, max_constraints
         The budget of the zonotopic observers: at most ``floor(order * n)`` generators (both)
         and ``max_constraints`` constraints (constrained zonotopes) after each step.
@@ -137,14 +163,16 @@ def observe(
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
     ys = system.measurements(ys)
+    if method in ELLIPSOIDAL:
+        return observe_ellipsoids(system, X0, ys, method)
     X = as_initial(X0, system.dim)
     out = []
-    if method == "zonotope":
+    if method in ZONOTOPE_GAINS:
         if X.n_constraints:
-            raise ValueError("X0 must be a Box or a Zonotope for the zonotope observer")
+            raise ValueError("X0 must be a Box, Zonotope or Ellipsoid for the zonotope observers")
         Z = Zonotope(X.center, X.generators)
         for y in ys:
-            Z = zonotope_step(system, Z, y, order)
+            Z = zonotope_step(system, Z, y, order, ZONOTOPE_GAINS[method])
             out.append(Z)
         return out
     if method == "interval":

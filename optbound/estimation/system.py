@@ -7,15 +7,19 @@ set ``X0`` holds ``x_0`` (no measurement at k = 0) and ``ys[k-1]`` measures ``x_
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 
-from optbound._core import Box
 from optbound._core import validate as v
-from optbound.sets.zonotope import Zonotope, as_zonotope
+from optbound.estimation.noise import NoiseSet, as_noise, zonotope_of
+from optbound.sets.ellipsoid import Ellipsoid
+from optbound.sets.zonotope import Zonotope
 
 
 class LinearSystem:
-    """``x+ = A x + w, y = C x + v`` with ``w in W``, ``v in V`` (boxes or zonotopes).
+    """``x+ = A x + w, y = C x + v`` with ``w in W``, ``v in V`` (boxes, zonotopes or
+    ellipsoids).
 
     Parameters
     ----------
@@ -23,21 +27,44 @@ class LinearSystem:
         State matrix.
     C : array_like, shape (p, n)
         Output matrix (a vector is one output row).
-    W : Box or Zonotope of dimension n
-        Process noise set (centred anywhere).
-    V : Box or Zonotope of dimension p
+    W : Box, Zonotope or Ellipsoid of dimension n
+        Process noise set (centred anywhere), stored as given.
+    V : Box, Zonotope or Ellipsoid of dimension p
         Measurement noise set.
+
+    Notes
+    -----
+    With ellipsoidal noise the exact sets are not polytopes: :func:`exact_sets` refuses them,
+    and the polytopic observers use :attr:`W_zonotope` / :attr:`V_zonotope`, the certified
+    parallelotopes around the ellipsoids (``optbound.estimation.noise``).
     """
 
-    def __init__(self, A, C, W: Box | Zonotope, V: Box | Zonotope):
+    def __init__(self, A, C, W: NoiseSet, V: NoiseSet):
         A = v.finite_matrix("A", A)
         if A.shape[0] != A.shape[1]:
             raise ValueError(f"A must be square, got shape {A.shape}")
         n = A.shape[0]
         C = v.finite_matrix("C", np.atleast_2d(C), (None, n))
         self.A, self.C = A, C
-        self.W = as_zonotope("W", W, n)
-        self.V = as_zonotope("V", V, C.shape[0])
+        self.W = as_noise("W", W, n)
+        self.V = as_noise("V", V, C.shape[0])
+
+    @property
+    def polytopic(self) -> bool:
+        """Whether both noise sets are boxes or zonotopes (then the exact sets are polytopes)."""
+        return not isinstance(self.W, Ellipsoid) and not isinstance(self.V, Ellipsoid)
+
+    @cached_property
+    def W_zonotope(self) -> Zonotope:
+        """``W`` as a zonotope (a box's radii rounded up; an ellipsoid's certified
+        parallelotope)."""
+        return zonotope_of(self.W)
+
+    @cached_property
+    def V_zonotope(self) -> Zonotope:
+        """``V`` as a zonotope (a box's radii rounded up; an ellipsoid's certified
+        parallelotope)."""
+        return zonotope_of(self.V)
 
     @property
     def dim(self) -> int:

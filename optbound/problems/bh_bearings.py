@@ -23,7 +23,7 @@ import numpy as np
 
 from optbound.interval import pave
 from optbound.localization import relative_bearing as rb
-from optbound.problems._random import task_seeds
+from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import bh_geometry as bh
 from optbound.sets import Ellipsoid

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from optbound.localization.landmarks import pose_paving, pose_test
-from optbound.problems._random import task_seeds
+from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import office
 

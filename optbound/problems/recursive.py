@@ -18,7 +18,7 @@ import numpy as np
 
 from optbound.compare.tri import as_pseudo_ellipsoid, tri_test
 from optbound.interval import Interval, tri_and
-from optbound.problems._random import random_ellipsoid, strips_around, task_seeds
+from optbound.problems.generators import random_ellipsoid, strips_around, task_seeds
 from optbound.problems.problem import Problem
 from optbound.sets import Box, Ellipsoid, Strip
 

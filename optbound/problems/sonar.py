@@ -23,7 +23,7 @@ import numpy as np
 from optbound.compare.tri import point_test, tri_test
 from optbound.interval import Tri, pave, tri_and
 from optbound.localization import sonar
-from optbound.problems._random import task_seeds
+from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import rooms
 from optbound.sets import Box

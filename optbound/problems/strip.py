@@ -18,7 +18,7 @@ import numpy as np
 from optbound.compare.size import ellipsoid_strip_volume_bracket
 from optbound.compare.tri import as_pseudo_ellipsoid, tri_test
 from optbound.interval import tri_and
-from optbound.problems._random import STRIP_KINDS, random_ellipsoid, random_strip, task_seeds
+from optbound.problems.generators import STRIP_KINDS, random_ellipsoid, random_strip, task_seeds
 from optbound.problems.problem import Problem
 from optbound.sets import Ellipsoid, Strip
 

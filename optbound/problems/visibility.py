@@ -27,7 +27,7 @@ from optbound.compare.tri import tri_test
 from optbound.interval import Tri, tri_and
 from optbound.interval.tribool import from_masks
 from optbound.localization.geometry import as_polygons, segments_meet_polygons
-from optbound.problems._random import task_seeds
+from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import arena
 from optbound.sets import Box

@@ -9,7 +9,9 @@ never imports a scenario (it takes its world as an argument).
 - :mod:`.arena`: the 10 m x 10 m room with 11 obstacles of [GLH12, Sect. 5];
 - :mod:`.rooms`: the triangular room of [LJMW97, Sect. 4] and the chamfered room with a sonar
   belt of [KJWM00, Sect. 6];
-- :mod:`.bh_geometry`: the landmarks and pairs of [BH, Sect. V], and random instances like it.
+- :mod:`.bh_geometry`: the landmarks and pairs of [BH, Sect. V], and random instances like it;
+- :mod:`.alamo2005`: the linear system of Alamo, Bravo & Camacho (2005, Sect. 7.1), the
+  paper's own data; :mod:`.linear_systems`: seeded random stable linear systems (ours).
 
 These are **designed data**. The papers' figures that fixed the office (HS96 Fig. 4), the
 arena (GLH12 Fig. 7) and the rooms (LJMW97 Fig. 4(a), KJWM00 Sect. 6) are lost: those worlds
@@ -23,7 +25,7 @@ from __future__ import annotations
 
 import importlib
 
-__all__ = ["arena", "bh_geometry", "office", "rooms"]
+__all__ = ["alamo2005", "arena", "bh_geometry", "linear_systems", "office", "rooms"]
 
 
 def __getattr__(name: str):

@@ -118,13 +118,14 @@ class Zonotope(ConvexSet):
 
         return cls(E.center, ellipsoid_generators(E))
 
-    def outer_ellipsoid(self):
-        """An ellipsoid containing the zonotope (certified; see
-        :func:`~optbound.sets.zonotope_conversions.zonotope_ellipsoid_shape`)."""
+    def outer_ellipsoid(self, weights: str = "norms"):
+        """An ellipsoid containing the zonotope (certified; ``weights`` ``"norms"``: the
+        trace-minimal member, ``"unit"``: ``m G G^T``, the minimum-volume one for a
+        parallelotope; see :func:`~optbound.sets.zonotope_conversions.zonotope_ellipsoid_shape`)."""
         from optbound.sets.ellipsoid import Ellipsoid
         from optbound.sets.zonotope_conversions import zonotope_ellipsoid_shape
 
-        return Ellipsoid(self._c, zonotope_ellipsoid_shape(self._G))
+        return Ellipsoid(self._c, zonotope_ellipsoid_shape(self._G, weights))
 
     # ----------------------------------------------------------------- membership
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:

@@ -57,9 +57,10 @@ def ellipsoid_generators(E) -> np.ndarray:
     raise ValueError("E is too ill-conditioned to certify an enclosing parallelotope")
 
 
-def zonotope_ellipsoid_shape(G: np.ndarray) -> np.ndarray:
-    """Shape ``Q >= (sum_i w_i) sum_i g_i g_i^T / w_i``, ``w_i = ||g_i||_2``, so ``Z subset
-    E(c, Q)``.
+def zonotope_ellipsoid_shape(G: np.ndarray, weights: str = "norms") -> np.ndarray:
+    """Shape ``Q >= (sum_i w_i) sum_i g_i g_i^T / w_i``, so ``Z subset E(c, Q)``;
+    ``weights="norms"``: ``w_i = ||g_i||_2`` (the trace-minimal member), ``"unit"``:
+    ``w_i = 1``, ``Q = m G G^T`` (for a parallelotope, m = n, the minimum-volume ellipsoid).
 
     Proof: for x - c = sum_i xi_i g_i, ``|d^T (x - c)| <= sum_i |d^T g_i|`` and by
     Cauchy-Schwarz ``(sum_i |d^T g_i|)^2 <= (sum_i w_i)(sum_i (d^T g_i)^2 / w_i) = d^T Q d``
@@ -77,7 +78,9 @@ def zonotope_ellipsoid_shape(G: np.ndarray) -> np.ndarray:
     n = G.shape[0]
     if G.shape[1] < n or np.linalg.matrix_rank(G) < n:
         raise ValueError("the zonotope is flat (G has rank < n): it has no outer ellipsoid here")
-    w = np.linalg.norm(G, axis=0)
+    if weights not in ("norms", "unit"):
+        raise ValueError(f"weights must be 'norms' or 'unit', got {weights!r}")
+    w = np.linalg.norm(G, axis=0) if weights == "norms" else np.ones(G.shape[1])
     total = point(row_sum_up(w[None, :]))
     scaled = Interval(G) / w * total
     Q_iv = matmul(scaled, point(G.T))

@@ -16,10 +16,10 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from benchmarks import analytic_reference as bench_ref
-from benchmarks.speed_analytic import batch_instances
 from optbound import Ellipsoid, Strip, analytic
 from optbound.analytic import reference
+from optbound.bench import analytic_reference as bench_ref
+from optbound.bench.speed_analytic import batch_instances
 from tests.analytic import exact as X
 
 U = 2.0**-53
@@ -153,7 +153,7 @@ def test_minkowski_volume_p_is_the_reference_root():
 
 
 def test_the_benchmark_compiles_the_reference_unchanged():
-    """``benchmarks/analytic_reference.py`` times the same code: its compiled strip update
+    """``optbound/bench/analytic_reference.py`` times the same code: its compiled strip update
     gives the plain Python reference's floats bitwise; its Minkowski sum (our lane p solver,
     the reference's member) is the reference's member for the reference's root p."""
     c, C, a, b = batch_instances(np.random.default_rng(5), 300, 3)

@@ -9,10 +9,10 @@ neighbours are (valid or not), for every criterion, strips and half-spaces.
 import numpy as np
 import pytest
 
-from benchmarks.speed_analytic import batch_instances
 from optbound.analytic._kernels import strip_kernel as K
 from optbound.analytic._kernels.lanes import W
 from optbound.analytic._kernels.threads import ellipsoid_outputs
+from optbound.bench.speed_analytic import batch_instances
 
 MODES = (K.VOLUME, K.GIVEN, K.ROBUST, K.TRACE, K.PROJECTION, K.ROBUST_PROJECTION)
 

@@ -9,9 +9,9 @@ import threading
 import numpy as np
 import pytest
 
-from benchmarks.speed_analytic import batch_instances
 from optbound import analytic
 from optbound.analytic._kernels.threads import MIN_SLICE, run_sliced, slice_bounds
+from optbound.bench.speed_analytic import batch_instances
 
 
 def _instances(count: int):

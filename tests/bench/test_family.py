@@ -1,13 +1,10 @@
 """Task lists are seeded, reproducible and distinct across families and suite seeds."""
 
-import sys
-import types
-
 import pytest
 
-from optbound.bench import registry
-from optbound.bench.family import SUITES, task_seeds
+from optbound.bench.family import SUITES
 from optbound.bench.registry import families
+from optbound.problems.generators import task_seeds
 
 
 def test_task_seeds_are_reproducible_and_depend_on_seed_and_family():
@@ -50,21 +47,3 @@ def test_missing_requirements_are_named():
 
     fam = Family("x", "X", "speed", ("optbound:nope", "no_such_module:run"), list, dict)
     assert fam.missing() == ["optbound:nope", "no_such_module:run"]
-
-
-@pytest.mark.parametrize("foreign", [False, True], ids=["no-benchmarks", "foreign-benchmarks"])
-def test_a_family_of_the_source_checkout_is_skipped_outside_it(monkeypatch, tmp_path, foreign):
-    """Without the repository's ``benchmarks`` package (an install run from elsewhere), or
-    with a user's own package of that name, its family is listed and skipped with a reason."""
-    for name in [m for m in sys.modules if m == "benchmarks" or m.startswith("benchmarks.")]:
-        monkeypatch.delitem(sys.modules, name)
-    if foreign:
-        package = types.ModuleType("benchmarks")
-        package.__path__ = [str(tmp_path)]  # an empty package: no speed_analytic in it
-        monkeypatch.setitem(sys.modules, "benchmarks", package)
-    else:
-        monkeypatch.setitem(sys.modules, "benchmarks", None)  # "import benchmarks" fails
-    fams = {fam.name: fam for fam in registry.families()}
-    assert list(fams) == list(registry.FAMILIES)
-    assert fams["speed_analytic"].missing() == ["benchmarks.speed_analytic:FAMILY"]
-    assert not fams["strip"].missing() and not fams["papers"].missing()

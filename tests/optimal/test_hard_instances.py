@@ -1,10 +1,10 @@
 """Ill-conditioned benchmark instances: every SDP reference solves accurately and certifies.
 
-The instances are rebuilt exactly as the benchmark builds them (``optbound.bench.instances``, one
-seed per instance). The default run covers the hardest seeds found: those where Clarabel with
-its default settings stalled ("optimal_inaccurate" or a failed solve) and the examples of the
-issue (condition number 1e6, summands of scales 1 : 1e-3); the slow run covers every strip and
-Minkowski instance of the quick and full suites.
+The instances are rebuilt exactly as the benchmark builds them
+(``optbound.problems.generators``, one seed per instance). The default run covers the hardest
+seeds found: those where Clarabel with its default settings stalled ("optimal_inaccurate" or a
+failed solve) and the examples of the issue (condition number 1e6, summands of scales
+1 : 1e-3); the slow run covers every strip and Minkowski instance of the quick and full suites.
 """
 
 import numpy as np

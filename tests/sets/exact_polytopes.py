@@ -188,3 +188,17 @@ def disjoint(P, Q) -> bool:
 def box_corners(box) -> list[tuple[Fraction, Fraction]]:
     """Exact corners of a 2-D box given as its (2, 2) array of ``[lo, hi]`` rows."""
     return [(F(float(box[0][i])), F(float(box[1][j]))) for i in (0, 1) for j in (0, 1)]
+
+
+def ellipsoid_level(center, shape, p) -> Fraction:
+    """Exact ``(p - c)^T Q^{-1} (p - c)`` for float ``center``, ``shape`` read exactly (<= 1:
+    the point p lies in the ellipsoid)."""
+    c, Q = exact(center), exact(shape)
+    d = [F(pi) - ci for pi, ci in zip(p, c, strict=True)]
+    y = _solve(Q, d)
+    return sum((di * yi for di, yi in zip(d, y, strict=True)), F(0))
+
+
+def in_ellipsoid(E, pts) -> bool:
+    """Whether every exact point lies in the optbound Ellipsoid E (exactly)."""
+    return all(ellipsoid_level(E.center, E.shape, p) <= 1 for p in pts)

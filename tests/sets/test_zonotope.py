@@ -202,6 +202,18 @@ def test_outer_ellipsoid_contains_exact_zonotope(seed):
     assert np.trace(E.shape) <= (1 + 1e-12) * Z.n_generators * np.trace(G @ G.T)
 
 
+@given(seeds)
+def test_outer_ellipsoid_with_unit_weights_contains_exact_zonotope(seed):
+    rng = np.random.default_rng(seed)
+    Z = random_zonotope(rng, m=int(rng.integers(2, 6)))
+    E = Z.outer_ellipsoid(weights="unit")
+    assert all(_exact_quadratic(E.center, E.shape, p) <= 1 for p in X.set_points(Z))
+    G = Z.generators
+    assert np.allclose(E.shape, Z.n_generators * G @ G.T, rtol=1e-12, atol=0.0)
+    with pytest.raises(ValueError, match="weights must be"):
+        Z.outer_ellipsoid(weights="volume")
+
+
 def test_outer_ellipsoid_of_a_flat_zonotope_is_refused():
     with pytest.raises(ValueError, match="flat"):
         Zonotope([0.0, 0.0], [[1.0, 2.0], [1.0, 2.0]]).outer_ellipsoid()

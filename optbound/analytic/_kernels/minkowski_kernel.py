@@ -448,7 +448,9 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
         act[k] = 1.0 if code1[k] == 0 else 0.0
     n = c1s.shape[0]
     if mode == P_VOLUME:
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:], vecs[4:], rows[5:])
+        # Exactly the work space of its docstring (7 mats, 3 vecs, 14 rows): tuples of other
+        # lengths are other types, and each would compile the solver again.
+        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:11], vecs[4:7], rows[5:19])
     elif mode == P_GIVEN:
         for k in range(m):
             p[k] = p_in[k]

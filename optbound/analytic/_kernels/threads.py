@@ -4,7 +4,7 @@ The kernels release the GIL (``nogil=True``), so plain threads run them truly in
 calling thread runs the first slice, a ``ThreadPoolExecutor`` made once per process the
 others. numba's ``parallel=True`` is not used: its OpenMP layer spins between regions (on a
 loaded 2-core machine a batch of 1e3 took up to ~30 times longer), and its workqueue layer
-cannot be entered by two threads at once. ``python -m benchmarks.speed_analytic --threads``
+cannot be entered by two threads at once. ``python -m optbound.bench.speed_analytic --threads``
 compares the three schemes.
 
 A kernel run by ``run_sliced`` is called as ``call(start, stop)`` on ``range(start, stop)``.

@@ -7,7 +7,7 @@ least 20 ms (a sustained rate):
 
 - batch: seconds per update of ``intersect_strip_batch`` / ``minkowski_sum_batch`` (3-D,
   volume criterion, including validation and the certified margin) over seconds per update of
-  the plain kernels of ``benchmarks.analytic_reference`` (same formula, same threads, no
+  the plain kernels of ``optbound.bench.analytic_reference`` (same formula, same threads, no
   validation, no margin; both return new arrays), B = 1e3 ... 1e6;
 - one call: ``intersect_strip(E, S)`` / ``minkowski_sum(E1, E2)`` end to end (including the
   result's Ellipsoid) over one call of the reference kernel (into existing arrays);
@@ -15,7 +15,7 @@ least 20 ms (a sustained rate):
   size_xy_psi) over the volume criterion of the same operation: one call and a batch of 1e4;
 - SDP cost: one SDP solve over one analytic call.
 
-``python -m benchmarks.speed_analytic [--suite quick]`` prints the ratio table, the JIT
+``python -m optbound.bench.speed_analytic [--suite quick]`` prints the ratio table, the JIT
 warm-up (a fresh compile in a subprocess with an empty cache) and the margin distribution;
 ``--phases`` the strip rate at B = 1e3 over 20 s (see :func:`phases`).
 """
@@ -32,9 +32,9 @@ from functools import partial
 
 import numpy as np
 
-from optbound.bench.family import Family, task_seeds
-from optbound.bench.instances import random_ellipsoid, random_strip
+from optbound.bench.family import Family
 from optbound.bench.timing import per_call, speed_record
+from optbound.problems.generators import random_ellipsoid, random_strip, task_seeds
 
 NAME = "speed_analytic"
 DIM = 3
@@ -126,7 +126,7 @@ def threading_timings(rng: np.random.Generator, batches, rounds: int = 3 * REPEA
     both interleaved (one :func:`interleaved_calls` sample each), so the load of a shared
     machine hits them alike; rows (B, pool rate [updates/s], median over rounds of prange /
     pool time). Both schemes' outputs are checked bitwise equal first."""
-    from benchmarks import analytic_reference as ref
+    from optbound.bench import analytic_reference as ref
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     rows = []
@@ -174,8 +174,8 @@ def _timings(one, ours, reference, inputs, batches) -> dict:
 
 def strip_timings(rng: np.random.Generator, batches) -> dict:
     """Seconds (median) of ours and of the reference: one call and each batch size."""
-    from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, Strip, analytic
+    from optbound.bench import analytic_reference as ref
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
     E, S = Ellipsoid(c[0], C[0]), Strip(a[0], b[0])
@@ -189,8 +189,8 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
 
 def minkowski_timings(rng: np.random.Generator, batches) -> dict:
     """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
-    from benchmarks import analytic_reference as ref
     from optbound import Ellipsoid, analytic
+    from optbound.bench import analytic_reference as ref
 
     c1, C1, _, _ = batch_instances(rng, max(batches), DIM)
     c2, C2, _, _ = batch_instances(rng, max(batches), DIM)
@@ -354,8 +354,8 @@ def phases(rng: np.random.Generator, seconds: float = 20.0, count: int = 10**3) 
     machine the parallel rate of small batches can change in phases of seconds that no median
     within one run removes (the host's placement of the vCPUs); this shows them, for ours and
     the reference alike."""
-    from benchmarks import analytic_reference as ref
     from optbound import analytic
+    from optbound.bench import analytic_reference as ref
 
     c, C, a, b = batch_instances(rng, count, DIM)
     ours, reference = (

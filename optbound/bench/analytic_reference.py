@@ -1,7 +1,7 @@
 """The plain formulas of ``optbound.analytic.reference``, compiled, as the speed baseline.
 
 No validation, no certified error bounds, no margin, no output checks: what the analytic core
-would cost if it trusted its inputs and its floating point. ``benchmarks.speed_analytic``
+would cost if it trusted its inputs and its floating point. ``optbound.bench.speed_analytic``
 reports our kernels' time as a ratio to these, measured in the same run (same threads).
 The reference functions are compiled unchanged, with the same options as our kernels
 (``error_model="numpy"``: no zero-division branch per division). The strip reference runs one
@@ -13,20 +13,31 @@ lane-parallel p solver and evaluates the member with the plain formula.
 from __future__ import annotations
 
 from functools import partial
+from pathlib import Path
 from types import FunctionType
 
 import numpy as np
 from numba import njit, prange
 
+from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
 from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
-# Not cached on disk: numba would not notice an edit of the reference or of a kernel they call
-# (``optbound._jit_cache`` covers the package's own kernels only); compiling these takes seconds.
-_OPTIONS = {"error_model": "numpy", "nogil": True}
+# Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
+# caches dropped whenever the reference, this file or any kernel they call changes (numba
+# tracks only the defining file).
+_jit_cache.refresh(
+    cache_dirs=[
+        Path(__file__).parent / "__pycache__",
+        Path(reference.__file__).parent / "__pycache__",
+    ],
+    sources=[*_jit_cache.kernel_sources(), Path(reference.__file__), Path(__file__)],
+    stamp="analytic_reference.stamp",
+)
+_OPTIONS = {"error_model": "numpy", "nogil": True, "cache": True}
 
 
 def _compiled(function, **callees):
@@ -63,7 +74,8 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
-    member ``reference.minkowski_member``."""
+    member ``reference.minkowski_member``. The solver's work space has the tuple lengths
+    ``sum_range`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
     mats, vecs, rows, _, _ = block_work(c1.shape[1], min(W, stop - start))
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
@@ -75,7 +87,7 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
         cholesky_lanes(C2s, L2, m, pivot, 0)
         for k in range(m):
             act[k] = 1.0
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:], vecs[:3], rows[3:])
+        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:12], vecs[:3], rows[3:17])
         for k in range(m):
             i = base + k
             minkowski_member(c1[i], C1[i], c2[i], C2[i], p[k], out_c[i], out_C[i])
@@ -98,7 +110,7 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
 # ---------------------------------------------------------------- threading schemes compared
 # Our certified strip kernel (volume criterion, clipped) on the same slices, handed to the
-# threads two ways; ``benchmarks.speed_analytic.threading_timings`` times them interleaved.
+# threads two ways; ``optbound.bench.speed_analytic.threading_timings`` times them interleaved.
 # The Python-side validation of ``intersect_strip_batch`` is left out of both alike.
 
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from optbound.bench.instances import (
+from optbound.problems.generators import (
     STRIP_KINDS,
     random_ellipsoid,
     random_strip,

@@ -1,0 +1,76 @@
+"""What a new user waits for: ``optbound bench`` with an empty numba cache, then again warm.
+
+Both runs are child processes (``python -m optbound.cli bench``) sharing one new, empty
+``NUMBA_CACHE_DIR``: the first compiles every kernel it uses, the second loads them. Each
+row gives the wall time from the child's start to its exit (imports and compiles included:
+the time the user waited), the child's user and system CPU, the wall time the report itself
+prints (its clock starts after the imports), and the load average (1 min) before and after,
+since on a shared machine the wall time follows the load and the CPU time does not.
+
+Run: ``python -m benchmarks.first_run [--suite quick] [--jobs N]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def run_once(suite: str, jobs: int, cache: str) -> dict:
+    """One ``optbound bench`` in a child process; its wall, CPU and the load around it."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    load0 = os.getloadavg()[0]
+    with tempfile.TemporaryDirectory() as out:
+        start = time.perf_counter()
+        command = [sys.executable, "-m", "optbound.cli", "bench", "--suite", suite]
+        command += ["--jobs", str(jobs), "--no-progress", "--force", "--out", out]
+        done = subprocess.run(
+            command,
+            env={**os.environ, "NUMBA_CACHE_DIR": cache},
+            capture_output=True,
+            text=True,
+        )
+        wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if done.returncode != 0:
+        raise RuntimeError(f"optbound bench failed:\n{done.stderr[-3000:]}")
+    printed = re.search(r"wall time ([0-9.]+) s", done.stdout)
+    return {
+        "wall": wall,
+        "user": after.ru_utime - before.ru_utime,
+        "sys": after.ru_stime - before.ru_stime,
+        "report": float(printed.group(1)) if printed else float("nan"),
+        "load": (load0, os.getloadavg()[0]),
+        "notice": [line for line in done.stderr.splitlines() if "compiling" in line],
+    }
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--suite", choices=("tiny", "quick", "full"), default="quick")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    args = parser.parse_args(argv)
+    print(f"optbound bench --suite {args.suite} --jobs {args.jobs}; {platform.processor() or 'cpu'}"
+          f" ({os.cpu_count()} cores), Python {platform.python_version()}")  # fmt: skip
+    print("| run | wall from process start | report's wall | user CPU | sys CPU | load 1 min "
+          "before / after |")  # fmt: skip
+    print("|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as cache:
+        for label in ("cold (empty cache)", "warm"):
+            r = run_once(args.suite, args.jobs, cache)
+            print(f"| {label} | {r['wall']:.1f} s | {r['report']:.1f} s | {r['user']:.1f} s "
+                  f"| {r['sys']:.1f} s | {r['load'][0]:.1f} / {r['load'][1]:.1f} |",
+                  flush=True)  # fmt: skip
+            for line in r["notice"]:
+                print(f"  stderr: {line}")
+
+
+if __name__ == "__main__":
+    main()
