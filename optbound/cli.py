@@ -1,4 +1,4 @@
-"""The ``optbound`` console script: ``optbound bench``, ``optbound repro`` and ``optbound report``.
+"""The ``optbound`` console script: ``optbound bench``, ``repro``, ``report`` and ``evaluate``.
 
 Errors the user can fix (a bad ``--out``, an unknown paper key, dask not installed, an
 unreachable Dask scheduler, a full disk) end the command with one line on stderr and exit code
@@ -132,6 +132,16 @@ def build_parser() -> argparse.ArgumentParser:
         help="write the headline numbers into the README's bench section; only for a "
         "complete default run (--suite quick --seed 0, every family)",
     )
+    bench.add_argument(
+        "--estimator",
+        action="append",
+        metavar="MODULE:CALLABLE",
+        help="also evaluate this estimator (problem -> set; module:callable or a registered "
+        "name) on the suite's problems, in a "
+        'report section "Your estimators" (repeatable; "all-registered": every estimator '
+        "registered under the entry-point group optbound.estimators, optbound's analytic "
+        "updates included; default: none)",
+    )
     _add_run_options(bench, DEFAULT_OUT)
     repro = sub.add_parser(
         "repro",
@@ -155,10 +165,77 @@ def build_parser() -> argparse.ArgumentParser:
         description="Rewrite report.md, CSV and PNG figures from DIR/results.json alone.",
     )
     report.add_argument("dir", type=Path, metavar="DIR", help="a directory written by bench")
+    _add_evaluate_parser(sub)
     bench.set_defaults(handler=_bench, subparser=bench)
     repro.set_defaults(handler=_repro, subparser=repro)
     report.set_defaults(handler=_report, subparser=report)
     return parser
+
+
+def _add_evaluate_parser(sub) -> None:
+    evaluate = sub.add_parser(
+        "evaluate",
+        help="audit your estimator on the public problems and print the table",
+        description="Run ESTIMATOR (a callable problem -> set: module:callable, loaded "
+        "from the Python path, or the name of an estimator registered under the entry-point "
+        "group optbound.estimators) on the problems of a suite (optbound.problems.suite) "
+        "and print optbound.evaluate's table: size and ratio brackets, soundness "
+        "(proven / refuted at a counterexample / undecided), seconds and errors.",
+    )
+    evaluate.add_argument("estimator", metavar="ESTIMATOR", help="e.g. my_package.bounds:my_box")
+    evaluate.add_argument(
+        "--suite", choices=SUITES, default="tiny", help="problem suite (default tiny)"
+    )
+    evaluate.add_argument(
+        "--seed", type=_int_at_least(0, "seed"), default=0, help="suite seed (default 0)"
+    )
+    evaluate.add_argument(
+        "--family",
+        action="append",
+        metavar="FAMILY",
+        help="only this problem family (repeatable; default: all)",
+    )
+    evaluate.add_argument(
+        "--format",
+        choices=("markdown", "json", "csv"),
+        default="markdown",
+        help="output format (default markdown)",
+    )
+    evaluate.set_defaults(handler=_evaluate, subparser=evaluate)
+
+
+def _evaluate(args: argparse.Namespace) -> int:
+    from optbound import evaluate, problems
+    from optbound.problems import registry
+
+    if args.estimator == registry.ALL_REGISTERED:
+        raise CommandError(f"evaluate takes one estimator; {args.estimator!r} is for bench")
+    try:
+        estimator = registry.resolve([args.estimator])[args.estimator]
+        todo = problems.suite(args.suite, families=args.family, seed=args.seed)
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
+    result = evaluate(estimator, todo, name=args.estimator)
+    render = {"markdown": result.to_markdown, "json": result.to_json, "csv": result.to_csv}
+    text = render[args.format]()
+    sys.stdout.write(text if text.endswith("\n") else text + "\n")
+    return 0
+
+
+def _user_estimators(args: argparse.Namespace) -> dict:
+    """The ``--estimator`` callables by name, loaded before any work (a bad one: exit 2)."""
+    from optbound.problems import registry
+
+    try:
+        estimators = registry.resolve(args.estimator or [])
+    except ValueError as exc:
+        raise CommandError(f"--estimator: {exc}") from None
+    if args.estimator and not estimators:
+        raise CommandError(
+            f"--estimator {registry.ALL_REGISTERED}: no estimator is registered under the "
+            f"entry-point group {registry.GROUP!r} (is optbound installed, not only on the path?)"
+        )
+    return estimators
 
 
 def _version() -> str:
@@ -179,8 +256,13 @@ def _bench(args: argparse.Namespace) -> int:
         readme = report.source_readme()
         if readme is None:
             raise CommandError("--update-readme: no README.md with headline markers found")
+    estimators = _user_estimators(args)
     out = _prepare(args)
     results = _run(args, args.suite, args.seed, names=args.family)
+    if estimators:
+        from optbound.bench.user_estimators import run_estimators
+
+        results["estimators"] = run_estimators(estimators, args.suite, args.seed, args.family)
     path = _write(results, out)
     _print_summary(results, path)
     if readme is not None and report.update_readme(readme, results):

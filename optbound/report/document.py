@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from optbound.report import figures
+from optbound.report.estimators import estimators_section
 from optbound.report.headline import HEADERS, headline_rows
 from optbound.report.results import write_csv
 from optbound.report.summary import (
@@ -82,6 +83,7 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
             "it, the SDP optimum dashed.",
             "![2-D instances](instances_2d.png)",
         ]
+    parts += estimators_section(results)
     parts += ["## About the references", REFERENCES_NOTE]
     path = out / REPORT_FILE
     path.write_text("\n\n".join(parts) + "\n")
