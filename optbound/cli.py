@@ -1,8 +1,9 @@
-"""The ``optbound`` console script: ``optbound bench``, ``optbound repro`` and ``optbound report``.
+"""The ``optbound`` console script: ``optbound bench``, ``repro``, ``report`` and ``evaluate``.
 
-Errors the user can fix (a bad ``--out``, an unknown paper key, an unreachable Dask
-scheduler, a full disk) end the command with one line on stderr and exit code 2, before any
-work where they can be detected before it.
+Errors the user can fix (a bad ``--out``, an unknown paper key, dask not installed, an
+unreachable Dask scheduler, a full disk) end the command with one line on stderr and exit code
+2, before any work where they can be detected before it. Ctrl-C ends it with one line and exit
+code 130. Either way an ``--out`` folder the command created and left empty is removed.
 
 Building the parser imports no family, numba, scipy or cvxpy (the family names are declared in
 :data:`optbound.bench.registry.FAMILIES`), so ``--help`` and argument errors answer at once;
@@ -14,15 +15,33 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import time
 from pathlib import Path
 
 from optbound.bench.executors import EXECUTORS
 from optbound.bench.family import SUITES
-from optbound.bench.registry import FAMILIES
+from optbound.bench.registry import FAMILIES, PAPERS
 
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
 EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for a Ctrl-C
+_IMPORTED = time.perf_counter()  # before the commands' heavy imports
+
+
+def _since_process_start() -> float:
+    """Seconds since this process started: the wall time a user of the command waits.
+
+    Read from ``/proc/self/stat`` (start time in clock ticks after boot) against
+    ``/proc/uptime`` on Linux; elsewhere, the time since this module was imported, which
+    misses only the interpreter's start-up and optbound's package import.
+    """
+    try:
+        ticks = int(Path("/proc/self/stat").read_text().rsplit(")", 1)[1].split()[19])
+        uptime = float(Path("/proc/uptime").read_text().split()[0])
+        return uptime - ticks / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError, AttributeError):
+        return time.perf_counter() - _IMPORTED
 
 
 class CommandError(Exception):
@@ -113,6 +132,16 @@ def build_parser() -> argparse.ArgumentParser:
         help="write the headline numbers into the README's bench section; only for a "
         "complete default run (--suite quick --seed 0, every family)",
     )
+    bench.add_argument(
+        "--estimator",
+        action="append",
+        metavar="MODULE:CALLABLE",
+        help="also evaluate this estimator (problem -> set; module:callable or a registered "
+        "name) on the suite's problems, in a "
+        'report section "Your estimators" (repeatable; "all-registered": every estimator '
+        "registered under the entry-point group optbound.estimators, optbound's analytic "
+        "updates included; default: none)",
+    )
     _add_run_options(bench, DEFAULT_OUT)
     repro = sub.add_parser(
         "repro",
@@ -121,7 +150,10 @@ def build_parser() -> argparse.ArgumentParser:
         "write one paper-vs-optbound table per script plus its figures into --out.",
     )
     repro.add_argument(
-        "papers", nargs="*", metavar="KEY", help="paper keys, e.g. HS96 LJMW97 (default: all)"
+        "papers",
+        nargs="*",
+        metavar="KEY",
+        help=f"paper keys, any of {' '.join(PAPERS)}, case-insensitive (default: all)",
     )
     repro.add_argument(
         "--quick", action="store_true", help="the scripts' fast variants (seconds each)"
@@ -133,10 +165,77 @@ def build_parser() -> argparse.ArgumentParser:
         description="Rewrite report.md, CSV and PNG figures from DIR/results.json alone.",
     )
     report.add_argument("dir", type=Path, metavar="DIR", help="a directory written by bench")
+    _add_evaluate_parser(sub)
     bench.set_defaults(handler=_bench, subparser=bench)
     repro.set_defaults(handler=_repro, subparser=repro)
     report.set_defaults(handler=_report, subparser=report)
     return parser
+
+
+def _add_evaluate_parser(sub) -> None:
+    evaluate = sub.add_parser(
+        "evaluate",
+        help="audit your estimator on the public problems and print the table",
+        description="Run ESTIMATOR (a callable problem -> set: module:callable, loaded "
+        "from the Python path, or the name of an estimator registered under the entry-point "
+        "group optbound.estimators) on the problems of a suite (optbound.problems.suite) "
+        "and print optbound.evaluate's table: size and ratio brackets, soundness "
+        "(proven / refuted at a counterexample / undecided), seconds and errors.",
+    )
+    evaluate.add_argument("estimator", metavar="ESTIMATOR", help="e.g. my_package.bounds:my_box")
+    evaluate.add_argument(
+        "--suite", choices=SUITES, default="tiny", help="problem suite (default tiny)"
+    )
+    evaluate.add_argument(
+        "--seed", type=_int_at_least(0, "seed"), default=0, help="suite seed (default 0)"
+    )
+    evaluate.add_argument(
+        "--family",
+        action="append",
+        metavar="FAMILY",
+        help="only this problem family (repeatable; default: all)",
+    )
+    evaluate.add_argument(
+        "--format",
+        choices=("markdown", "json", "csv"),
+        default="markdown",
+        help="output format (default markdown)",
+    )
+    evaluate.set_defaults(handler=_evaluate, subparser=evaluate)
+
+
+def _evaluate(args: argparse.Namespace) -> int:
+    from optbound import evaluate, problems
+    from optbound.problems import registry
+
+    if args.estimator == registry.ALL_REGISTERED:
+        raise CommandError(f"evaluate takes one estimator; {args.estimator!r} is for bench")
+    try:
+        estimator = registry.resolve([args.estimator])[args.estimator]
+        todo = problems.suite(args.suite, families=args.family, seed=args.seed)
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
+    result = evaluate(estimator, todo, name=args.estimator)
+    render = {"markdown": result.to_markdown, "json": result.to_json, "csv": result.to_csv}
+    text = render[args.format]()
+    sys.stdout.write(text if text.endswith("\n") else text + "\n")
+    return 0
+
+
+def _user_estimators(args: argparse.Namespace) -> dict:
+    """The ``--estimator`` callables by name, loaded before any work (a bad one: exit 2)."""
+    from optbound.problems import registry
+
+    try:
+        estimators = registry.resolve(args.estimator or [])
+    except ValueError as exc:
+        raise CommandError(f"--estimator: {exc}") from None
+    if args.estimator and not estimators:
+        raise CommandError(
+            f"--estimator {registry.ALL_REGISTERED}: no estimator is registered under the "
+            f"entry-point group {registry.GROUP!r} (is optbound installed, not only on the path?)"
+        )
+    return estimators
 
 
 def _version() -> str:
@@ -157,8 +256,13 @@ def _bench(args: argparse.Namespace) -> int:
         readme = report.source_readme()
         if readme is None:
             raise CommandError("--update-readme: no README.md with headline markers found")
+    estimators = _user_estimators(args)
     out = _prepare(args)
     results = _run(args, args.suite, args.seed, names=args.family)
+    if estimators:
+        from optbound.bench.user_estimators import run_estimators
+
+        results["estimators"] = run_estimators(estimators, args.suite, args.seed, args.family)
     path = _write(results, out)
     _print_summary(results, path)
     if readme is not None and report.update_readme(readme, results):
@@ -175,26 +279,53 @@ def _repro(args: argparse.Namespace) -> int:
         raise CommandError(str(exc)) from None
     out = _prepare(args)
     suite = "quick" if args.quick else "full"
-    results = _run(args, suite, 0, names=["papers"], where=lambda t: t["script"] in selected)
+    command = " ".join(["optbound repro", *args.papers, *(["--quick"] if args.quick else [])])
+    results = _run(
+        args,
+        suite,
+        0,
+        names=["papers"],
+        where=lambda t: t["script"] in selected,
+        command=command,
+    )
     path = _write(results, out)
     _print_summary(results, path)
     return 0
 
 
 def _prepare(args: argparse.Namespace) -> Path:
+    """Check the executor, then create and check ``--out``: all before any work.
+
+    The folders this creates are recorded in ``args.created`` so that a run that stops
+    before writing anything into them (an error, Ctrl-C) removes them again.
+    """
+    from optbound.bench.executors import check_available
     from optbound.report.outdir import OutDirError, prepare_out_dir
 
+    try:
+        check_available(args.executor, args.scheduler)
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
+    args.created = [p for p in (args.out, *args.out.parents) if not p.exists()]
     try:
         return prepare_out_dir(args.out, args.force)
     except OutDirError as exc:
         raise CommandError(str(exc)) from None
 
 
+def _remove_if_empty(folders: list[Path]) -> None:
+    """Remove ``folders`` (innermost first) while they exist and are empty."""
+    for folder in folders:
+        if not folder.is_dir() or any(folder.iterdir()):
+            return
+        folder.rmdir()
+
+
 def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
     from optbound.bench.runner import run_suite
 
     try:
-        return run_suite(
+        results = run_suite(
             suite,
             seed,
             args.jobs,
@@ -205,13 +336,17 @@ def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
         )
     except (ValueError, OSError) as exc:  # dask missing, scheduler unreachable
         raise CommandError(f"{type(exc).__name__}: {exc}") from None
+    results["meta"]["since_start_s"] = _since_process_start()
+    return results
 
 
-def _write(results: dict, out: Path) -> Path:
+def _write(results: dict, out: Path, save: bool = True) -> Path:
+    """Write the report (and, if ``save``, results.json); a filesystem error is a CommandError."""
     from optbound import report
 
     try:
-        report.save_results(results, out)
+        if save:
+            report.save_results(results, out)
         return report.write_report(results, out)
     except OSError as exc:
         raise CommandError(f"cannot write the report into {str(out)!r}: {exc}") from None
@@ -224,7 +359,7 @@ def _report(args: argparse.Namespace) -> int:
         results = report.load_results(args.dir)
     except ValueError as exc:
         args.subparser.error(str(exc))
-    path = report.write_report(results, args.dir)
+    path = _write(results, args.dir, save=False)
     _print_summary(results, path)
     return 0
 
@@ -238,7 +373,7 @@ def _print_summary(results: dict, path: Path) -> None:
     failed = sum(len(fam["errors"]) for fam in results["families"].values())
     if failed:
         print(f"warning: {failed} task(s) failed; they are listed in the report")
-    print(f"\nReport: {path} (wall time {results['meta']['wall_time_s']:.1f} s)")
+    print(f"\nReport: {path} (wall time {_since_process_start():.1f} s since the command started)")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -250,8 +385,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return args.handler(args)
     except CommandError as exc:
+        _remove_if_empty(getattr(args, "created", []))
         print(f"optbound {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
+    except KeyboardInterrupt:
+        _remove_if_empty(getattr(args, "created", []))
+        print(f"optbound {args.command}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":

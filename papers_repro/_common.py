@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from optbound.bench.registry import PAPERS
 from optbound.report.figures import pyplot
 from optbound.report.tables import markdown_table
 from optbound.sets import Ellipsoid, Strip
@@ -26,7 +27,7 @@ HERE = Path(__file__).resolve().parent
 DEFAULT_OUT = HERE / "out"
 CLAIM_HEADERS = ("quantity", "paper", "optbound")
 #: Paper keys in the order of the report (others follow alphabetically).
-PAPER_ORDER = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12", "ABC05")
+PAPER_ORDER = PAPERS
 
 
 @dataclass(frozen=True)

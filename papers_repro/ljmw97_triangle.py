@@ -17,6 +17,16 @@ Two runs: the paper's problem as stated, and the same with a prior [KJWM00, Sect
 the robot's centre is at least 0.2 m (its belt radius) inside the room: without it, poses
 whose sonar sits on a wall give unresolvable boundary boxes (the range jumps from ~0 to the
 far wall across a wall), which appear as extra small components.
+
+The paper's claim is about the true solution set, the paving only brackets it. A component
+is **proven** when it holds a float pose whose four ranges are shown, with interval
+arithmetic on the point box, to lie in the measured intervals
+(:meth:`~optbound.localization.sonar.SonarPaving.witness`); distinct proven components hold
+distinct components of the true set, so their count is a lower bound on the true count. The
+other components may be artefacts of the paving (or hold points no witness search found).
+A sweep over eps and the (x, y) contraction of :func:`~optbound.localization.sonar.localize`
+shows how the counts move. (One paving component could still hold several components of
+the true set; no finite paving rules that out.)
 """
 
 from __future__ import annotations
@@ -29,7 +39,17 @@ from matplotlib.patches import Wedge
 
 from optbound.localization.geometry import to_world
 from optbound.localization.sonar import SonarPaving, clearance_test, localize, simulate_ranges
-from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
+from optbound.papers_repro._common import finish_axes, pyplot, run_cli, save_figure
+from optbound.papers_repro._verdict import (
+    NO_CLAIM,
+    NOT_REPRODUCED,
+    PARTLY,
+    REPRODUCED,
+    count_verdict,
+)
+from optbound.papers_repro._verdict import (
+    table as verdict_table,
+)
 from optbound.report.tables import markdown_table
 from optbound.scenarios import rooms
 
@@ -45,6 +65,10 @@ PAPER_Q1 = [[-2.10, -1.87], [2.92, 3.11], [-5.73, 5.73]]
 PAPER_Q2 = [[-3.09, -2.88], [3.63, 3.81], [83.08, 91.67]]
 PAPER_H1 = "{(T1, S1) (T2, S2) (T3, S2) (T4, S3)}"
 PAPER_H2 = "{(T1, S2) (T2, S3) (T3, S3) (T4, S1)}"
+#: The paper's number of components [LJMW97, Sect. 4].
+PAPER_COMPONENTS = 2
+#: eps of the sweep (full run; the quick run keeps the last two).
+SWEEP_EPS = (0.16, 0.08, 0.04, 0.02)
 
 
 def readings() -> np.ndarray:
@@ -52,17 +76,40 @@ def readings() -> np.ndarray:
     return simulate_ranges(WORLD, SONARS, TRUTH)
 
 
-def solve(prior: bool, repeats: int = 1) -> tuple[SonarPaving, float]:
-    """The paving at eps = 0.04 and the median wall time of ``repeats`` runs (after a warm-up)."""
+def solve(
+    prior: bool, repeats: int = 1, eps: float = EPS, contract: bool = False
+) -> tuple[SonarPaving, float]:
+    """The paving and the median CPU time of ``repeats`` runs (after a warm-up)."""
     test = clearance_test(WORLD, CLEARANCE) if prior else None
     d = readings()
-    paving = localize(WORLD, SONARS, d, X0, EPS, prior=test)
+    paving = localize(WORLD, SONARS, d, X0, eps, prior=test, contract=contract)
     times = []
     for _ in range(repeats):
-        start = time.perf_counter()
-        localize(WORLD, SONARS, d, X0, EPS, prior=test)
-        times.append(time.perf_counter() - start)
+        start = time.process_time()
+        localize(WORLD, SONARS, d, X0, eps, prior=test, contract=contract)
+        times.append(time.process_time() - start)
     return paving, float(np.median(times))
+
+
+def sweep(eps_values, repeats: int = 1) -> list[dict]:
+    """Components and proven components for every eps, contraction off/on, prior off/on."""
+    out = []
+    for prior in (False, True):
+        for contract in (False, True):
+            for eps in eps_values:
+                paving, seconds = solve(prior, repeats, eps, contract)
+                rows = _rows(paving)
+                out.append(
+                    {
+                        "prior": prior,
+                        "contract": contract,
+                        "eps": eps,
+                        "components": len(rows),
+                        "proven": sum(r["proven"] for r in rows),
+                        "seconds": seconds,
+                    }
+                )
+    return out
 
 
 def _hypothesis_text(h) -> str:
@@ -89,6 +136,7 @@ def _rows(paving: SonarPaving) -> list[dict]:
     rows = []
     for k, comp in enumerate(paving.components(), start=1):
         hull = comp.hull()
+        witness = comp.witness()
         rows.append(
             {
                 "component": k,
@@ -99,16 +147,91 @@ def _rows(paving: SonarPaving) -> list[dict]:
                 "volume": comp.volume_bounds()[1],
                 "hypothesis": comp.hypothesis,
                 "contains_truth": comp.contains(TRUTH),
+                "witness": witness,
+                "proven": witness is not None,
             }
         )
     return rows
 
 
-def _nearest_to(rows, paper_box) -> dict:
-    """Our component whose hull centre is nearest (x, y in m, theta in rad) to a paper box."""
-    p = np.array(paper_box, float)
-    centre = np.r_[p[:2].mean(axis=1), np.deg2rad(p[2].mean())]
-    return min(rows, key=lambda r: np.linalg.norm(0.5 * (r["lo"] + r["hi"]) - centre))
+def proven_pair(rows: list[dict]) -> tuple[dict | None, dict | None]:
+    """Q1 = the component holding q*, Q2 = the second-largest proven component.
+
+    Rows are sorted by outer volume, largest first; Q2 is the largest proven component other
+    than Q1 when Q1 is the largest proven one, else the second of the proven list.
+    """
+    proven = [r for r in rows if r["proven"]]
+    q1 = next((r for r in rows if r["contains_truth"]), None)
+    q2 = proven[1] if len(proven) > 1 else None
+    if q1 is not None and q2 is q1:
+        q2 = proven[0]
+    return q1, q2
+
+
+def _single(h) -> bool:
+    return all(len(segs) == 1 for segs in h)
+
+
+def claims(rows: list[dict], rows_prior: list[dict], true_h) -> list[tuple[str, str, str, str]]:
+    """The claim rows with verdicts computed from the components (see papers_repro._verdict)."""
+    n_proven, n_total = sum(r["proven"] for r in rows), len(rows)
+    n_proven_p, n_total_p = sum(r["proven"] for r in rows_prior), len(rows_prior)
+    q1, q2 = proven_pair(rows)
+    widths = np.array([b - a for a, b in PAPER_Q1[:2]] + [np.deg2rad(np.ptp(PAPER_Q1[2]))])
+    q1_widths = q1["hi"] - q1["lo"] if q1 else np.full(3, np.inf)
+    factor = float(np.max(q1_widths / widths))
+    size_verdict = REPRODUCED if factor <= 2 else PARTLY if factor <= 5 else NOT_REPRODUCED
+    if q2 is None:
+        q2_verdict = NOT_REPRODUCED
+    else:
+        q2_verdict = REPRODUCED if _single(q2["hypothesis"]) else PARTLY
+    return [
+        (
+            f"number of components (true set; ε = {EPS})",
+            str(PAPER_COMPONENTS),
+            f"proven {n_proven} of {n_total} paving components as stated; "
+            f"{n_proven_p} of {n_total_p} with the {CLEARANCE} m clearance prior",
+            count_verdict(PAPER_COMPONENTS, n_proven, n_total),
+        ),
+        (
+            "q* in a proven component Q1",
+            "yes",
+            "yes" if q1 and q1["proven"] else "NO",
+            REPRODUCED if q1 and q1["proven"] else NOT_REPRODUCED,
+        ),
+        (
+            "Q1 box (widths within 2× the paper's: reproduced, 5×: partly)",
+            _paper_box_text(PAPER_Q1),
+            f"{_box_text(q1['lo'], q1['hi'])} (widest ratio {factor:.1f}×)" if q1 else "—",
+            size_verdict,
+        ),
+        (
+            "Q1 hypothesis = the true association",
+            PAPER_H1,
+            _hypothesis_text(q1["hypothesis"]) if q1 else "—",
+            REPRODUCED if q1 and q1["hypothesis"] == true_h else NOT_REPRODUCED,
+        ),
+        (
+            "Q2: second-largest proven component, one association (box not comparable: room)",
+            _paper_box_text(PAPER_Q2),
+            _box_text(q2["lo"], q2["hi"]) if q2 else "none proven",
+            q2_verdict,
+        ),
+        (
+            "Q2 hypothesis",
+            PAPER_H2,
+            _hypothesis_text(q2["hypothesis"]) if q2 else "—",
+            q2_verdict,
+        ),
+    ]
+
+
+def true_hypothesis() -> tuple[tuple[int, ...], ...]:
+    """Per sonar, the wall it sees at q* (the nearest single-wall range)."""
+    per_wall = [
+        [simulate_ranges(WORLD[j : j + 1], s, TRUTH)[0] for j in range(len(WORLD))] for s in SONARS
+    ]
+    return tuple((int(np.argmin(r)),) for r in per_wall)
 
 
 def _draw_room(ax) -> None:
@@ -148,7 +271,8 @@ def _figures(paving: SonarPaving, rows, out_dir: Path) -> list[Path]:
             ax.add_patch(
                 plt.Rectangle(lo, *(hi - lo), fill=False, ec=colors[r["component"] - 1], lw=1.0)
             )
-            ax.annotate(f"Q{r['component']}", hi, color=colors[r["component"] - 1])
+            mark = " (proven)" if r["proven"] else ""
+            ax.annotate(f"Q{r['component']}{mark}", hi, color=colors[r["component"] - 1])
         lo = np.min([r["lo"][list(dims)] for r in rows[:4]], axis=0)
         hi = np.max([r["hi"][list(dims)] for r in rows[:4]], axis=0)
         pad = 0.1 * (hi - lo) + 0.05
@@ -159,9 +283,10 @@ def _figures(paving: SonarPaving, rows, out_dir: Path) -> list[Path]:
         ax.set_ylabel("y [m]" if dims[1] == 1 else "θ [rad]")
         ax.set_title(f"Figs. 4(b)-(c): components projected on {title}", fontsize=9)
     figs.append(save_figure(fig, out_dir, "ljmw97_fig4_components.png"))
-    # Fig. 5: the association hypothesis of the two largest components.
+    # Fig. 5: the association hypotheses of Q1 (q*) and Q2 (second-largest proven).
     fig, axes = plt.subplots(1, 2, figsize=(11, 5))
-    for ax, r in zip(axes, rows[:2], strict=False):
+    pair = [r for r in proven_pair(rows) if r is not None]
+    for ax, r in zip(axes, pair, strict=False):
         _draw_room(ax)
         _draw_pose(ax, 0.5 * (r["lo"] + r["hi"]), readings(), colors[r["component"] - 1])
         finish_axes(ax, f"Q{r['component']}: {_hypothesis_text(r['hypothesis'])}")
@@ -172,40 +297,28 @@ def _figures(paving: SonarPaving, rows, out_dir: Path) -> list[Path]:
 def main(out_dir: Path | str, quick: bool = False) -> dict:
     """Solve the triangle problem without and with the clearance prior; tables and figures.
 
-    ``quick`` times one run instead of the median of five (the paving itself is the same).
+    ``quick`` times one run instead of the median of five and sweeps eps in {0.04, 0.02}
+    instead of {0.16, 0.08, 0.04, 0.02}.
     """
     out_dir = Path(out_dir)
     repeats = 1 if quick else 5
     plain, seconds = solve(prior=False, repeats=repeats)
     with_prior, seconds_prior = solve(prior=True, repeats=repeats)
     rows, rows_prior = _rows(plain), _rows(with_prior)
-    q1 = next(r for r in rows if r["contains_truth"])
-    q2 = _nearest_to([r for r in rows if r is not q1], PAPER_Q2)
-    claims = [
+    swept = sweep(SWEEP_EPS[2:] if quick else SWEEP_EPS)
+    claim_rows = claims(rows, rows_prior, true_hypothesis())
+    claim_rows.append(
         (
-            "number of components",
-            "2",
-            f"{len(rows)} as stated; {len(rows_prior)} with the {CLEARANCE} m clearance prior",
-        ),
-        ("Q1 (contains q*)", _paper_box_text(PAPER_Q1), _box_text(q1["lo"], q1["hi"])),
-        ("Q1 hypothesis", PAPER_H1, _hypothesis_text(q1["hypothesis"])),
-        (
-            "Q2 (our component nearest to it)",
-            _paper_box_text(PAPER_Q2),
-            _box_text(q2["lo"], q2["hi"]),
-        ),
-        ("Q2 hypothesis", PAPER_H2, _hypothesis_text(q2["hypothesis"])),
-        ("q* inside the solution set", "yes", "yes" if q1["contains_truth"] else "NO"),
-        (
-            "paving time at ε = 0.04 (median)",
+            "paving CPU time at ε = 0.04 (median)",
             "—",
             f"{seconds:.3f} s ({seconds_prior:.3f} s with prior)",
-        ),
-    ]
+            NO_CLAIM,
+        )
+    )
 
     def table(rs):
         return markdown_table(
-            ("comp.", "hull box", "inner", "boundary", "outer vol.", "hypothesis", "q*"),
+            ("comp.", "hull box", "inner", "boundary", "outer vol.", "hypothesis", "proven", "q*"),
             [
                 (
                     f"Q{r['component']}",
@@ -214,27 +327,51 @@ def main(out_dir: Path | str, quick: bool = False) -> dict:
                     r["n_boundary"],
                     f"{r['volume']:.2e}",
                     _hypothesis_text(r["hypothesis"]),
+                    "yes" if r["proven"] else "",
                     "yes" if r["contains_truth"] else "",
                 )
                 for r in rs
             ],
         )
 
+    sweep_table = markdown_table(
+        ("prior", "contraction", "ε", "components", "proven", "maybe artefacts", "CPU [s]"),
+        [
+            (
+                "yes" if r["prior"] else "no",
+                "yes" if r["contract"] else "no",
+                r["eps"],
+                r["components"],
+                r["proven"],
+                r["components"] - r["proven"],
+                f"{r['seconds']:.2f}",
+            )
+            for r in swept
+        ],
+    )
     markdown = "\n\n".join(
         [
             "## LJMW97 Sect. 4: triangular room, four sonars",
             "Room and sonar placement are **our design** (the paper's Fig. 4(a) is lost); segment "
-            "and sonar numbers do not match the paper's. Readings: noise-free f(q*).",
-            claim_table(claims),
+            "and sonar numbers do not match the paper's. Readings: noise-free f(q*). A component "
+            "is *proven* when it holds a float pose shown consistent by interval arithmetic at "
+            "its point box; the true set has at least as many components as there are proven "
+            "ones. Count verdict: reproduced when proven = all = the paper's count, partly when "
+            "proven <= paper <= all, not reproduced otherwise.",
+            verdict_table(claim_rows),
             f"All components, problem as stated (X0 = [-10, 10]² × [-180°, 180°], ε = {EPS}):",
             table(rows),
             f"With the prior 'centre at least {CLEARANCE} m inside the room':",
             table(rows_prior),
+            "Components against ε and the (x, y) contraction before bisection (one run each):",
+            sweep_table,
         ]
     )
     return {
         "components": rows,
         "components_prior": rows_prior,
+        "sweep": swept,
+        "claims": claim_rows,
         "seconds": seconds,
         "seconds_prior": seconds_prior,
         "figures": _figures(with_prior, rows_prior, out_dir),

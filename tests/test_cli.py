@@ -176,10 +176,24 @@ def test_unknown_paper_key_fails_clearly(tmp_path, capsys, monkeypatch):
     assert "unknown keys ['ZZ01']" in err
 
 
-def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys):
+def test_repro_writes_the_papers_tables_and_figures(tmp_path, capsys, monkeypatch):
+    import optbound.bench.runner
+
+    titles = []
+    progress = optbound.bench.runner.Progress
+    monkeypatch.setattr(
+        optbound.bench.runner,
+        "Progress",
+        lambda title, *args: titles.append(title) or progress(title, *args),
+    )
     argv = ["repro", "ljmw97", "--quick", "--out", str(tmp_path), "--jobs", "1", "--no-progress"]
     assert main(argv) == 0
+    assert titles == ["optbound repro ljmw97 --quick"]
     text = (tmp_path / "report.md").read_text()
+    assert text.startswith("# optbound paper reproductions\n")
+    assert "Re-run with `optbound repro ljmw97 --quick`" in text
+    assert "optbound bench" not in text
+    assert "tightness.csv" not in text and "speed.csv" not in text
     assert "## The papers' results, reproduced" in text
     assert "### LJMW97 Appendix A" in text and "## HS96" not in text
     assert "typed from the paper" in text
@@ -233,3 +247,128 @@ def test_bench_leaves_the_rounding_mode_alone(bench_dir):
     one, half_ulp = 1.0, 2.0**-53
     assert one + half_ulp == one  # ties to even under round-to-nearest; 1 + ulp when upward
     assert float("1.2") == 1.2
+
+
+def test_report_into_a_read_only_folder_fails_with_one_line(tmp_path, capsys, monkeypatch):
+    """A read-only DIR (EROFS; chmod does not stop root, so the write is made to fail)."""
+    import errno
+    from pathlib import Path
+
+    from optbound.report import save_results
+    from tests.report.sample import sample_results
+
+    save_results(sample_results(), tmp_path)
+
+    def read_only(self, *args, **kwargs):
+        raise OSError(errno.EROFS, "Read-only file system", str(self))
+
+    monkeypatch.setattr(Path, "write_text", read_only)
+    monkeypatch.setattr(Path, "write_bytes", read_only)
+    assert main(["report", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("optbound report: error: ")
+    assert "Read-only file system" in err
+
+
+def test_scheduler_without_dask_fails_before_any_work(tmp_path, capsys, monkeypatch):
+    import importlib.util
+
+    real_find_spec = importlib.util.find_spec
+    monkeypatch.setattr(
+        importlib.util,
+        "find_spec",
+        lambda name, *a: None if name == "distributed" else real_find_spec(name, *a),
+    )
+    target = tmp_path / "new" / "out"
+    argv = ["bench", "--scheduler", "tcp://127.0.0.1:1", "--out", str(target)]
+    err = _fails_at_once(argv, capsys, monkeypatch)
+    assert 'pip install "optbound[dask]"' in err
+    assert not (tmp_path / "new").exists()
+
+
+def test_a_run_that_fails_removes_the_out_folder_it_created(tmp_path, capsys, monkeypatch):
+    import optbound.bench.runner
+
+    def unreachable(*args, **kwargs):
+        raise OSError("Timed out trying to connect to tcp://127.0.0.1:1")
+
+    monkeypatch.setattr(optbound.bench.runner, "run_suite", unreachable)
+    target = tmp_path / "new" / "out"
+    assert main(["bench", "--out", str(target)]) == 2
+    assert "Timed out" in capsys.readouterr().err
+    assert not (tmp_path / "new").exists()
+
+
+def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path):
+    """SIGINT to the whole process group, as a terminal's Ctrl-C sends it, mid-run."""
+    import os
+    import signal
+    import time
+    from pathlib import Path
+
+    target = tmp_path / "out"
+    argv = ["bench", "--suite", "quick", "--family", "recursive", "--jobs", "2"]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "optbound", *argv, "--out", str(target)],
+        cwd=Path(__file__).parents[1],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    deadline = time.monotonic() + 120
+    while not target.exists() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    time.sleep(3)  # the pool's workers are running tasks
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert err.splitlines()[-1] == "optbound bench: interrupted"
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err
+    assert not target.exists()
+
+
+@pytest.fixture(scope="module")
+def piped_run(tmp_path_factory):
+    """``python -m optbound bench`` with stdout and stderr into pipes, and its outer wall time."""
+    import time
+
+    out = tmp_path_factory.mktemp("piped") / "out"
+    argv = ["bench", "--suite", "tiny", "--family", "strip", "--jobs", "1", "--out", str(out)]
+    start = time.perf_counter()
+    run = subprocess.run(
+        [sys.executable, "-m", "optbound", *argv], capture_output=True, text=True, check=True
+    )
+    return run, time.perf_counter() - start, out
+
+
+def test_bench_into_a_pipe_writes_no_cursor_movements(piped_run):
+    run, _, _ = piped_run
+    assert "\x1b[" not in run.stderr and "\r" not in run.stderr
+    assert "optbound bench --suite tiny --seed 0: strip done (" in run.stderr
+
+
+def test_printed_wall_time_is_the_commands_own(piped_run):
+    """From process start (imports, compiling) to the report, not only the tasks; what it
+    misses is the interpreter's exit after the last line (~1-3 s with cvxpy and numba loaded)."""
+    import re
+
+    run, outer, out = piped_run
+    printed = float(re.search(r"wall time ([0-9.]+) s since the command started", run.stdout)[1])
+    assert 0.7 * outer < printed <= outer
+    header = (out / "report.md").read_text().split("\n\n")[1]
+    meta = load_results(out)["meta"]
+    assert meta["wall_time_s"] < meta["since_start_s"] <= printed
+    assert f"wall time {meta['since_start_s']:.1f} s from the command's start" in header
+    assert f"{meta['wall_time_s']:.1f} s running the tasks" in header
+
+
+def test_repro_help_lists_every_paper_key(capsys):
+    from optbound.bench.registry import PAPERS
+    from optbound.papers_repro._common import scripts
+
+    assert {s.paper for s in scripts()} == set(PAPERS)
+    with pytest.raises(SystemExit):
+        main(["repro", "--help"])
+    help_text = " ".join(capsys.readouterr().out.split())
+    assert f"any of {' '.join(PAPERS)}" in help_text

@@ -71,3 +71,22 @@ def test_the_checks_catch_a_typed_table():
     typed = "| case | ratio |\n|---|---|\n| x | 1.0013 |\n"
     assert MEASURED.search(_tables(typed)[0])
     assert not MEASURED.search("| n = 2–6 | condition number 1–1e6 |")  # ranges are not data
+
+
+def test_papers_table_gives_every_key_a_venue_and_year():
+    from optbound.bench.registry import PAPERS
+
+    text = README.read_text()
+    table = text[text.index("## Papers") :].split("\n\n")[1].splitlines()
+    assert table[0] == "| key | paper | venue | year |"
+    rows = {cells[1].strip(): cells[2:] for cells in (r.split("|") for r in table[2:])}
+    assert set(rows) == set(PAPERS)
+    for key, (_, venue, year, _) in rows.items():
+        assert venue.strip() and re.fullmatch(r" (19|20)\d\d ", year), key
+        assert year.strip()[2:] in key or key == "BH", key  # the key's digits are the year
+
+
+def test_no_jargon_in_the_readme_or_docs():
+    docs = [README, *sorted((README.parent / "docs").rglob("*.md"))]
+    for path in docs:
+        assert "as the mission requires" not in path.read_text(), path

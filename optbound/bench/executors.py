@@ -19,12 +19,38 @@ the results by task.
 from __future__ import annotations
 
 import concurrent.futures as cf
+import importlib.util
 import multiprocessing
+import signal
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 
 EXECUTORS = ("process", "dask")
 CONNECT_TIMEOUT = "10s"  # an unreachable scheduler fails fast (dask's default waits 30 s)
+DASK_MISSING = 'the dask executor needs dask.distributed: pip install "optbound[dask]"'
+
+
+def check_available(kind: str = "process", scheduler: str | None = None) -> None:
+    """Raise now, before any work, if the executor ``kind`` (or ``scheduler``) cannot run.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``kind``, or dask requested (``kind="dask"`` or a ``scheduler``)
+        but dask.distributed not installed.
+    """
+    if kind not in EXECUTORS:
+        raise ValueError(f"executor must be one of {EXECUTORS}, got {kind!r}")
+    if (scheduler is not None or kind == "dask") and importlib.util.find_spec(
+        "distributed"
+    ) is None:
+        raise ValueError(DASK_MISSING)
+
+
+def ignore_interrupts() -> None:
+    """Worker initializer: Ctrl-C reaches the whole process group, but only the parent
+    should handle it (it stops the workers); a worker would print its own traceback."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 class _Inline:
@@ -87,8 +113,7 @@ def executor(kind: str = "process", jobs: int = 1, scheduler: str | None = None)
     ValueError
         For an unknown ``kind``, ``jobs < 1``, or dask requested but not installed.
     """
-    if kind not in EXECUTORS:
-        raise ValueError(f"executor must be one of {EXECUTORS}, got {kind!r}")
+    check_available(kind, scheduler)
     if jobs < 1:
         raise ValueError(f"jobs must be a positive integer, got {jobs}")
     if scheduler is not None or kind == "dask":
@@ -97,18 +122,32 @@ def executor(kind: str = "process", jobs: int = 1, scheduler: str | None = None)
     elif jobs == 1:
         yield _Inline()
     else:
-        with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context()) as pool:
+        with _process_pool(jobs) as pool:
             yield _Pool(pool)
 
 
 @contextmanager
-def _dask_client(jobs: int, scheduler: str | None):
+def _process_pool(jobs: int):
+    """A process pool whose workers ignore Ctrl-C and are stopped, not awaited, when the run
+    is interrupted or fails (``shutdown(wait=True)`` would first finish every running task)."""
+    pool = cf.ProcessPoolExecutor(
+        jobs, mp_context=multiprocessing.get_context(), initializer=ignore_interrupts
+    )
     try:
-        from distributed import Client, LocalCluster
-    except ImportError:
-        raise ValueError(
-            'the dask executor needs dask.distributed: pip install "optbound[dask]"'
-        ) from None
+        yield pool
+    except BaseException:
+        # Python < 3.14 has no public way to stop the running workers.
+        for process in list((pool._processes or {}).values()):
+            process.terminate()
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+
+
+@contextmanager
+def _dask_client(jobs: int, scheduler: str | None):
+    from distributed import Client, LocalCluster  # check_available: it is installed
+
     if scheduler is not None:
         with Client(scheduler, timeout=CONNECT_TIMEOUT) as client:
             yield client

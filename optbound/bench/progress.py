@@ -4,9 +4,16 @@ Tasks differ in cost by orders of magnitude (a 4-D recursive task with 50 strips
 bounds against a 2-D strip fusion), so a count of finished tasks says little about the time
 left. The total bar advances by each task's estimated cost (``Family.cost``); tqdm's rate,
 and so its ETA, is then in cost per second, which calibrates the estimate as the run goes.
+
+Bars redraw themselves with cursor movements, which only a terminal understands: into a file
+or a pipe (a log, CI), one plain line per finished family is written instead.
 """
 
 from __future__ import annotations
+
+import sys
+import time
+from typing import TextIO
 
 from tqdm import tqdm
 
@@ -17,14 +24,30 @@ _FAMILY_FORMAT = "{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt}"
 
 
 class Progress:
-    """Bars for ``families`` (name -> list of task costs); a no-op when not ``enabled``."""
+    """Bars for ``families`` (name -> list of task costs) on ``stream`` (default stderr).
 
-    def __init__(self, title: str, families: dict[str, list[float]], enabled: bool = True):
+    A no-op when not ``enabled``; when ``stream`` is not a terminal, one line per finished
+    family instead of bars.
+    """
+
+    def __init__(
+        self,
+        title: str,
+        families: dict[str, list[float]],
+        enabled: bool = True,
+        stream: TextIO | None = None,
+    ):
+        self.stream = stream or sys.stderr
         self.enabled = enabled and bool(families)
-        if not self.enabled:
+        self.bars_shown = self.enabled and self.stream.isatty()
+        self.title, self.start = title, time.perf_counter()
+        self.left = {name: len(costs) for name, costs in families.items()}
+        if not self.bars_shown:
             return
         total = sum(sum(costs) for costs in families.values())
-        self.total = tqdm(total=total, desc=title, bar_format=_TOTAL_FORMAT, position=0)
+        self.total = tqdm(
+            total=total, desc=title, bar_format=_TOTAL_FORMAT, position=0, file=self.stream
+        )
         width = max(len(name) for name in families)
         self.bars = {
             name: tqdm(
@@ -32,20 +55,28 @@ class Progress:
                 desc=f"  {name:<{width}}",
                 position=i + 1,
                 bar_format=_FAMILY_FORMAT,
+                file=self.stream,
             )
             for i, (name, costs) in enumerate(families.items())
         }
 
     def done(self, name: str, cost: float) -> None:
         """One task of family ``name``, of estimated ``cost``, has finished."""
-        if self.enabled:
-            self.bars[name].update()
-            # Float costs summed in another order can overshoot the total by rounding, which
-            # tqdm would show as a negative time left.
-            self.total.update(min(cost, self.total.total - self.total.n))
+        if not self.enabled:
+            return
+        self.left[name] -= 1
+        if not self.bars_shown:
+            if not self.left[name]:
+                elapsed = time.perf_counter() - self.start
+                print(f"{self.title}: {name} done ({elapsed:.1f} s)", file=self.stream)
+            return
+        self.bars[name].update()
+        # Float costs summed in another order can overshoot the total by rounding, which
+        # tqdm would show as a negative time left.
+        self.total.update(min(cost, self.total.total - self.total.n))
 
     def close(self) -> None:
-        if self.enabled:
+        if self.bars_shown:
             for bar in self.bars.values():
                 bar.close()
             self.total.close()

@@ -29,6 +29,10 @@ FAMILIES: dict[str, str] = {
     "papers": "optbound.bench.papers:FAMILY",
 }
 
+#: Keys of the papers whose results the ``papers`` family reproduces (``papers_repro/``), in
+#: report order, declared here for the same reason: ``optbound repro --help`` lists them.
+PAPERS = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12", "ABC05")
+
 
 def families() -> list[Family]:
     """All registered families, in report order."""

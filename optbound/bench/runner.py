@@ -4,7 +4,7 @@ The results dict is everything the report needs (``optbound report DIR`` rebuild
 from its JSON alone)::
 
     {"schema": 1,
-     "meta": {"suite", "seed", "jobs", "executor", "families_run", "complete",
+     "meta": {"command", "suite", "seed", "jobs", "executor", "families_run", "complete",
               "wall_time_s", "started", "load_average", "cpus", "processor", versions...},
      "families": {name: {"title", "kind", "status", "reason", "records", "figures",
                          "notes", "warnings", "errors", "task_seconds"}}}
@@ -28,7 +28,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 import optbound
-from optbound.bench.executors import EXECUTORS
+from optbound.bench.executors import check_available, ignore_interrupts
 from optbound.bench.executors import executor as make_executor
 from optbound.bench.family import SUITES, Family
 from optbound.bench.progress import Progress
@@ -45,6 +45,7 @@ def run_suite(
     executor: str = "process",
     scheduler: str | None = None,
     where: Callable[[dict], bool] | None = None,
+    command: str | None = None,
 ) -> dict:
     """Run every available family of ``suite`` and return the results dict.
 
@@ -67,6 +68,9 @@ def run_suite(
     where : callable, optional
         Run only the tasks for which ``where(task)`` is true (``optbound repro KEY`` selects
         papers this way); the run is then not complete.
+    command : str, optional
+        The command line that repeats this run, for the progress bar and the report
+        (default ``optbound bench --suite SUITE --seed SEED``); recorded as ``meta["command"]``.
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
@@ -74,8 +78,8 @@ def run_suite(
         raise ValueError(f"seed must be a non-negative integer, got {seed}")
     if jobs < 1:
         raise ValueError(f"jobs must be a positive integer, got {jobs}")
-    if executor not in EXECUTORS:
-        raise ValueError(f"executor must be one of {EXECUTORS}, got {executor!r}")
+    check_available(executor, scheduler)  # before any work or progress bar
+    command = command or f"optbound bench --suite {suite} --seed {seed}"
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
     if names:
@@ -97,7 +101,7 @@ def run_suite(
     pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
     serial = [t for t in tasks if not t[0].parallel]
     costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
-    with Progress(f"optbound bench {suite}", costs, progress) as bar:
+    with Progress(command, costs, progress) as bar:
         with make_executor(executor, jobs, scheduler) as pool:
             futures = {
                 pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
@@ -114,6 +118,7 @@ def run_suite(
     for entry in out.values():
         _sort_by_task(entry)
     meta = {
+        "command": command,
         "suite": suite,
         "seed": seed,
         "jobs": jobs,
@@ -172,7 +177,7 @@ def _family_entry(fam: Family) -> dict:
 
 def _run_isolated(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
     """Run one task in a single-use child process, so its side effects die with it."""
-    with multiprocessing.get_context().Pool(1) as pool:
+    with multiprocessing.get_context().Pool(1, initializer=ignore_interrupts) as pool:
         return pool.apply(_run_registered, (item,))
 
 

@@ -22,8 +22,15 @@ warm-up for optbound (``optbound.bench.sivia_codac._median_time``). codac gets o
 takes minutes. Both are wall-clock on the same, possibly loaded, machine, measured in the
 same run; the 1-min load average is reported.
 
-Registration: a standalone script; ``python -m optbound.bench.sonar_codac`` prints the table and
-``run(eps)`` returns the rows (``ratio`` = codac wall / optbound wall).
+Registration: a standalone script; ``python -m optbound.bench.sonar_codac`` prints the table
+and ``run(eps)`` returns the rows (``ratio`` = codac wall / optbound wall). The codac child
+runs in ``$OPTBOUND_CODAC_PYTHON`` when set (e.g. a venv with codac), else in this interpreter.
+
+:func:`speedup_rows` measures, in the same run, ``localize`` against the old bisection-only
+path (every sonar test evaluated on every box, ``q="auto"`` re-paving from scratch for each
+q: :func:`old_localize`), and with the (x, y) contraction before bisection, on the triangle
+and on a KJWM00 case (16 sonars, two random outliers, eps = 0.1). CPU seconds, median of
+``repeats`` runs after a warm-up; ``ratio`` = old / new.
 """
 
 from __future__ import annotations
@@ -38,9 +45,19 @@ from pathlib import Path
 import numpy as np
 
 from optbound.bench.sivia_codac import _median_time
+from optbound.interval import pave
 from optbound.interval.fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
-from optbound.localization.sonar import D_MAX, localize, measurement_box, simulate_ranges
+from optbound.interval.sivia import FALSE, TRUE
+from optbound.interval.tribool import as_tri, from_masks
+from optbound.localization.sonar import (
+    D_MAX,
+    _initial_box,
+    localize,
+    measurement_box,
+    simulate_ranges,
+    sonar_tests,
+)
 from optbound.scenarios import rooms
 
 EPS = 0.04
@@ -169,15 +186,97 @@ def codac_values(seed: int, n: int = 200) -> np.ndarray | None:
     return None if "note" in out else np.array(out["values"])
 
 
+def _eager_relaxed(tests, q: int):
+    """The old relaxed test: every test on every box, then the counts."""
+    m = len(tests)
+
+    def test(*coords):
+        tris = np.stack([as_tri(t(*coords)) for t in tests])
+        n_true, n_false = (np.count_nonzero(tris == v, axis=0) for v in (TRUE, FALSE))
+        return from_masks(n_true >= m - q, n_false > q)
+
+    return test
+
+
+def old_localize(world, sonars, ranges, X0, eps: float, q) -> tuple[int, object]:
+    """The old bisection-only path: eager tests, ``q="auto"`` re-paving for each q from 0."""
+    tests = sonar_tests(world, sonars, ranges)
+    box, _ = _initial_box(X0)
+    for k in range(len(tests) + 1) if q == "auto" else [q]:
+        paving = pave(_eager_relaxed(tests, k), box, eps)
+        if q != "auto" or not paving.is_empty:
+            return k, paving
+    raise ValueError("empty for every q")
+
+
+def _kjwm00_case() -> dict:
+    from optbound.papers_repro import kjwm00_outliers
+
+    return kjwm00_outliers.scenario(np.random.default_rng([0, 0, 0]), "random", 2)
+
+
+def speedup_rows(repeats: int = 3) -> list[dict]:
+    """Old path vs ``localize`` (lazy tests) vs ``localize(contract=True)``, CPU seconds."""
+    case = _kjwm00_case()
+    kj_x0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
+    problems = [
+        ("ljmw97 triangle, eps=0.04, q=0", WORLD, SONARS, readings(), X0, 0.04, 0),
+        *(
+            (
+                f"kjwm00 16 sonars 2 outliers, eps=0.1, q={q}",
+                case["world"],
+                case["sonars"],
+                case["ranges"],
+                kj_x0,
+                0.1,
+                q,
+            )
+            for q in (0, 2, "auto")
+        ),
+    ]
+    rows = []
+    for name, *args, q in problems:
+        (_, old_cpu), (_, old) = _median_time(lambda a=args, q=q: old_localize(*a, q), repeats)
+        row = {"name": name, "old_cpu_seconds": old_cpu, "old_outer": old.volume_bounds()[1]}
+        for label, contract in (("lazy", False), ("contract", True)):
+            (_, cpu), paving = _median_time(
+                lambda a=args, q=q, c=contract: localize(*a, q=q, contract=c), repeats
+            )
+            row[f"{label}_cpu_seconds"] = cpu
+            row[f"{label}_ratio"] = old_cpu / cpu
+            row[f"{label}_outer"] = paving.volume_bounds()[1]
+            row[f"{label}_boxes"] = len(paving.inner) + len(paving.boundary)
+        rows.append(row)
+    return rows
+
+
+def speedup_table(rows: list[dict]) -> str:
+    """Markdown table of :func:`speedup_rows`."""
+    lines = [
+        "| problem | old CPU [s] | lazy CPU [s] (old / lazy) | lazy + contraction CPU [s] "
+        "(old / it) | outer volume old / lazy / contraction |",
+        "|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append(
+            f"| {r['name']} | {r['old_cpu_seconds']:.3f} | {r['lazy_cpu_seconds']:.3f} "
+            f"({r['lazy_ratio']:.2f}×) | {r['contract_cpu_seconds']:.3f} "
+            f"({r['contract_ratio']:.2f}×) | {r['old_outer']:.3e} / {r['lazy_outer']:.3e} / "
+            f"{r['contract_outer']:.3e} |"
+        )
+    return "\n".join(lines)
+
+
 def _codac_in_child(eps: float, timeout: float) -> dict:
     return _in_child(["--child", repr(eps)], timeout)
 
 
 def _in_child(args: list[str], timeout: float) -> dict:
     env = dict(os.environ, PYTHONPATH=str(ROOT))
+    python = os.environ.get("OPTBOUND_CODAC_PYTHON", sys.executable)
     try:
         done = subprocess.run(
-            [sys.executable, "-m", "optbound.bench.sonar_codac", *args],
+            [python, "-m", "optbound.bench.sonar_codac", *args],
             cwd=ROOT,
             env=env,
             capture_output=True,
@@ -244,7 +343,8 @@ def table(rows: list[dict]) -> str:
 
 
 def main(eps: float = EPS) -> list[dict]:
-    """Print the table and return the rows."""
+    """Print the speed-up table and the codac table; return the codac rows."""
+    print(speedup_table(speedup_rows()))
     rows = run(eps)
     print(table(rows))
     return rows
@@ -255,5 +355,7 @@ if __name__ == "__main__":
         print(json.dumps(_child(float(sys.argv[2]))))
     elif len(sys.argv) == 4 and sys.argv[1] == "--values":
         print(json.dumps(_child_values(int(sys.argv[2]), int(sys.argv[3]))))
+    elif len(sys.argv) == 2 and sys.argv[1] == "--speedup":
+        print(speedup_table(speedup_rows()))
     else:
         main()

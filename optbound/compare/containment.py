@@ -55,30 +55,42 @@ def max_level(outer, inner) -> float:
     return psi(brentq(slope, t_min, t_max, xtol=1e-15 * gnorm, rtol=4 * np.finfo(float).eps))
 
 
-def contains(outer, inner, tol: float = 1e-9) -> bool:
+#: Default slack of ``contains`` between two float ellipsoids (rounding of ``max_level``).
+ROUNDING_TOL = 1e-9
+
+
+def contains(outer, inner, tol: float | None = None) -> bool:
     """True if the ellipsoid ``inner`` lies in ``outer`` up to the relative tolerance ``tol``.
 
     The test is ``max_level(outer, inner) <= 1 + tol``: ``inner`` lies in ``outer`` scaled
-    about its centre by ``sqrt(1 + tol)`` (about ``1 + tol / 2``; 5e-10 for the default).
-    ``max_level`` is computed in float64 from Cholesky factors and an eigendecomposition, so
-    for two equal ellipsoids, or an inner one touching the outer, it comes out at 1 up to a
-    few ulps times the condition number of ``outer``'s shape; ``tol`` absorbs that. It is
-    therefore a numerical comparison of two bounds (e.g. an analytic bound against an SDP
-    optimum), not a guarantee: ``tol=0`` asks for ``max_level <= 1`` exactly in float64,
-    which can still be off by that rounding either way.
+    about its centre by ``sqrt(1 + tol)`` (about ``1 + tol / 2``). ``max_level`` is computed
+    in float64 from Cholesky factors and an eigendecomposition, so for two equal ellipsoids,
+    or an inner one touching the outer, it comes out at 1 up to a few ulps times the condition
+    number of ``outer``'s shape; ``tol`` absorbs that. It is therefore a numerical comparison
+    of two bounds (e.g. an analytic bound against an SDP optimum), not a guarantee: ``tol=0``
+    asks for ``max_level <= 1`` exactly in float64, which can still be off by that rounding
+    either way.
+
+    An SDP reference is the optimum only to its solver's accuracy, in either direction: an
+    analytic bound equal to the optimum neither contains nor lies inside it to 1e-9. So when
+    an argument is a result that states its ``accuracy`` (``optimal.OuterResult``), the
+    default tolerance is the larger of that and ``ROUNDING_TOL``.
 
     Parameters
     ----------
-    outer, inner : Ellipsoid
-        Ellipsoids of one dimension.
-    tol : float
-        Relative slack on the level, >= 0 (default 1e-9).
+    outer, inner : Ellipsoid or result
+        Ellipsoids of one dimension, or results carrying one (``.ellipsoid``).
+    tol : float, optional
+        Relative slack on the level, >= 0. Default: ``ROUNDING_TOL`` (1e-9), or the
+        ``accuracy`` of a result argument if larger.
 
     Raises
     ------
     ValueError
         If ``tol`` is negative or not finite.
     """
+    if tol is None:
+        tol = max(ROUNDING_TOL, *(getattr(b, "accuracy", 0.0) for b in (outer, inner)))
     if not np.isfinite(tol) or tol < 0:
         raise ValueError(f"tol must be a finite number >= 0, got {tol}")
     return max_level(outer, inner) <= 1.0 + tol

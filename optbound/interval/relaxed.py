@@ -3,7 +3,11 @@
 KJWM00 localize a robot from m sonar tests without data association; some measurements are
 outliers. Instead of the intersection of the m feasible sets they characterise the set of
 configurations satisfying **at least m - q** tests (the q-relaxed intersection), and raise q
-from 0 until that set is non-empty, so q estimates the number of outliers.
+from 0 until that set is not proven empty. (Reading that q as an estimate of the number of
+outliers is ours: it is a lower bound only, see :func:`min_outliers`.)
+
+Contractors combine the same way: a part of a box may be removed only if more than q of the
+m contractors remove it (:func:`relaxed_contractor`).
 """
 
 from __future__ import annotations
@@ -12,9 +16,19 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from optbound.interval.interval import Interval
 from optbound.interval.paving import Paving
-from optbound.interval.sivia import DEFAULT_MAX_BOXES, DEFAULT_RATIO, FALSE, TRUE, Test, pave
-from optbound.interval.tribool import as_tri, from_masks
+from optbound.interval.sivia import (
+    DEFAULT_MAX_BOXES,
+    DEFAULT_RATIO,
+    FALSE,
+    TRUE,
+    UNKNOWN,
+    Contractor,
+    Test,
+    pave,
+)
+from optbound.interval.tribool import as_tri
 
 
 def _check_tests(tests) -> list:
@@ -42,12 +56,45 @@ def relaxed_test(tests: Sequence[Test], q: int) -> Test:
     q = _check_count("q", q, m)
 
     def test(*coords) -> np.ndarray:
+        shapes = {np.shape(c.lo if isinstance(c, Interval) else c) for c in coords}
+        if len(shapes) == 1 and len(next(iter(shapes))) == 1:  # SIVIA's case: one box each
+            return _lazy(tests, coords, m, q)
         tris = np.stack(np.broadcast_arrays(*(as_tri(t(*coords)) for t in tests)))
-        n_true = np.count_nonzero(tris == TRUE, axis=0)
-        n_false = np.count_nonzero(tris == FALSE, axis=0)
-        return from_masks(n_true >= m - q, n_false > q)
+        n_true, n_false = (np.count_nonzero(tris == v, axis=0) for v in (TRUE, FALSE))
+        return _verdict(n_true, n_false, m, q, 0)
 
     return test
+
+
+def _verdict(n_true, n_false, m: int, q: int, left) -> np.ndarray:
+    """TRUE / FALSE when decided; UNKNOWN where ``left`` remaining tests cannot decide."""
+    out = np.full(np.shape(n_true), -1, dtype=np.int8)
+    out[n_true >= m - q] = TRUE
+    out[n_false > q] = FALSE
+    stuck = (out < 0) & (n_true + left < m - q) & (n_false + left <= q)
+    out[stuck] = UNKNOWN
+    return out
+
+
+def _lazy(tests, coords, m: int, q: int) -> np.ndarray:
+    """Evaluate the tests one by one, each on the boxes the previous ones left undecided.
+
+    Same answer as evaluating every test on every box; ``coords`` are 1-D, one entry per box.
+    """
+    size = len(coords[0])
+    n_true, n_false = np.zeros(size, dtype=np.intp), np.zeros(size, dtype=np.intp)
+    out = np.full(size, -1, dtype=np.int8)
+    live = np.arange(size)
+    for k, t in enumerate(tests):
+        sub = [c[live] for c in coords]
+        tri = np.broadcast_to(as_tri(t(*sub)), live.shape)
+        n_true[live] += tri == TRUE
+        n_false[live] += tri == FALSE
+        out[live] = _verdict(n_true[live], n_false[live], m, q, m - k - 1)
+        live = live[out[live] < 0]
+        if not live.size:
+            break
+    return out
 
 
 def min_outliers(
@@ -56,6 +103,8 @@ def min_outliers(
     eps: float,
     *,
     q_max: int | None = None,
+    prior: Test | None = None,
+    contractors: Sequence[Contractor] | None = None,
     ratio: float = DEFAULT_RATIO,
     max_boxes: int = DEFAULT_MAX_BOXES,
 ) -> tuple[int, Paving]:
@@ -66,11 +115,92 @@ def min_outliers(
     ``eps``, so ``q`` is a lower bound on the number of outliers consistent with the data.
     ``q_max`` (default ``m``) caps the search; if every ``q <= q_max`` is proven empty the
     result is ``ValueError``.
+
+    What this does **not** guarantee: that ``q`` is the number of outliers. If the wrong
+    readings happen to agree with some other pose of the map, the set is not empty at a ``q``
+    below the true count, the search stops there, and the returned set need not contain the
+    true configuration. Only a fixed ``q`` at least the true number of outliers is
+    guaranteed to keep it.
+
+    ``prior`` is a test every point must pass, whatever ``q``; ``contractors`` (one per test,
+    or None) are combined by :func:`relaxed_contractor` at each ``q``.
     """
     tests = _check_tests(tests)
     q_max = len(tests) if q_max is None else _check_count("q_max", q_max, len(tests))
     for q in range(q_max + 1):
-        paving = pave(relaxed_test(tests, q), X0, eps, ratio=ratio, max_boxes=max_boxes)
+        paving = relaxed_paving(
+            tests,
+            q,
+            X0,
+            eps,
+            prior=prior,
+            contractors=contractors,
+            ratio=ratio,
+            max_boxes=max_boxes,
+        )
         if not paving.is_empty:
             return q, paving
     raise ValueError(f"the relaxed intersection is empty for every q <= q_max={q_max}")
+
+
+def relaxed_paving(
+    tests: Sequence[Test],
+    q: int,
+    X0,
+    eps: float,
+    *,
+    prior: Test | None = None,
+    contractors: Sequence[Contractor] | None = None,
+    ratio: float = DEFAULT_RATIO,
+    max_boxes: int = DEFAULT_MAX_BOXES,
+) -> Paving:
+    """Pave the q-relaxed intersection of ``tests`` (and ``prior``, tested first) in ``X0``.
+
+    With ``contractors`` (one per test), every tested box is first contracted by their
+    q-relaxed union (:func:`relaxed_contractor`). Other parameters as in :func:`pave`.
+    """
+    tests = _check_tests(tests)
+    q = _check_count("q", q, len(tests))
+    contractor = None
+    if contractors is not None:
+        contractor = relaxed_contractor(contractors, q)
+        if len(contractors) != len(tests):
+            raise ValueError(
+                f"contractors must hold one per test ({len(tests)}), got {len(contractors)}"
+            )
+    relaxed = relaxed_test(tests, q)
+    test = relaxed if prior is None else [prior, relaxed]
+    return pave(test, X0, eps, ratio=ratio, max_boxes=max_boxes, contractor=contractor)
+
+
+def relaxed_contractor(contractors: Sequence[Contractor], q: int) -> Contractor:
+    """The q-relaxed union of m contractors: keep what at least ``m - q`` of them keep.
+
+    A point satisfying at least ``m - q`` constraints lies in at least ``m - q`` of the
+    contracted boxes, so on every axis it is at least the ``(m - q)``-th smallest of their
+    lower bounds and at most the ``(m - q)``-th largest of their upper bounds (an emptied box
+    counts as ``[+inf, -inf]``). That box is returned: an outer bound of the union, sound for
+    any q. ``q = 0`` is the intersection of the contracted boxes.
+    """
+    contractors = list(contractors)
+    if not all(callable(c) for c in contractors):
+        raise ValueError("contractors must be callables")
+    m = len(contractors)
+    q = _check_count("q", q, m)
+
+    def contract(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        if q == m:
+            return lo, hi
+        los, his = [], []
+        for c in contractors:
+            c_lo, c_hi = c(lo, hi)
+            c_lo, c_hi = np.maximum(c_lo, lo), np.minimum(c_hi, hi)
+            empty = np.any(c_lo > c_hi, axis=0)
+            los.append(np.where(empty, np.inf, c_lo))
+            his.append(np.where(empty, -np.inf, c_hi))
+        k = m - q - 1  # 0-based rank of the (m - q)-th
+        new_lo = np.sort(np.stack(los), axis=0)[k]
+        new_hi = -np.sort(-np.stack(his), axis=0)[k]
+        return new_lo, new_hi
+
+    return contract

@@ -23,7 +23,7 @@ from optbound.interval._rounding import check_round_to_nearest
 from optbound.interval.fenv import nearest
 from optbound.interval.interval import Interval, as_interval
 from optbound.interval.paving import Paving
-from optbound.interval.tribool import Tri, from_masks, tri_and
+from optbound.interval.tribool import Tri, as_tri, from_masks
 
 #: codac's default bisection ratio: the split point sits at 49 % of the widest side, which
 #: keeps bisection lines off the symmetry axes of the usual test sets.
@@ -35,6 +35,10 @@ DEFER_BELOW = 1024
 TRUE, UNKNOWN, FALSE = int(Tri.TRUE), int(Tri.UNKNOWN), int(Tri.FALSE)
 
 Test = Callable[..., np.ndarray]
+#: ``contract(lo, hi) -> (lo, hi)`` on coordinate-major (n, m) bound arrays: a box of the
+#: same or smaller extent per column that keeps every solution of the column's box
+#: (``lo > hi`` on some row: no solution in it).
+Contractor = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
 
 
 def constraint(f: Callable, Y) -> Test:
@@ -97,6 +101,7 @@ def pave(
     *,
     ratio: float = DEFAULT_RATIO,
     max_boxes: int = DEFAULT_MAX_BOXES,
+    contractor: Contractor | None = None,
 ) -> Paving:
     """Pave ``X0`` with a three-valued test (or the conjunction of several).
 
@@ -113,6 +118,11 @@ def pave(
         Bisection point along the widest side (first widest on ties), as a fraction of it.
     max_boxes
         Upper limit on the number of boxes tested; exceeding it is a ``ValueError``.
+    contractor
+        Optional :data:`Contractor` applied to every undetermined box before it is bisected
+        (contraction before bisection, as codac's separators do). It must be sound: the parts
+        it removes hold no point of the set. They are recorded as ``outside`` boxes, so inner,
+        boundary and outside still tile ``X0``.
 
     Raises
     ------
@@ -172,19 +182,69 @@ def pave(
         split = (tri == UNKNOWN) & splittable
         levels.append((lo, hi, tri, split))
         idx = np.flatnonzero(split)
-        lo, hi = _children(lo.take(idx, axis=1), hi.take(idx, axis=1), axis[idx], mid[idx])
+        lo, hi, axis, mid = lo.take(idx, axis=1), hi.take(idx, axis=1), axis[idx], mid[idx]
+        if contractor is not None and idx.size:
+            # Contract the boxes about to be bisected; what is removed is outside, a box
+            # contracted to at most eps wide is a boundary box.
+            lo, hi, removed = _contract(contractor, lo, hi)
+            levels.append(removed)
+            axis, mid, splittable = _split_points(lo, hi, eps, ratio)
+            k = lo.shape[1]
+            levels.append((lo, hi, np.full(k, UNKNOWN, dtype=np.int8), splittable))
+            lo, hi, axis, mid = (a[..., splittable] for a in (lo, hi, axis, mid))
+        lo, hi = _children(lo, hi, axis, mid)
     return _paving(levels, Box(x_lo, x_hi), eps)
 
 
 def _evaluate(tests, lo, hi, n, m) -> np.ndarray:
-    coords = [Interval._make(lo[i], hi[i]) for i in range(n)]
-    tri = tri_and(*(t(*coords) for t in tests))
+    """Tri of the conjunction of ``tests``; each test sees only the boxes not yet FALSE."""
+    tri = np.full(m, TRUE, dtype=np.int8)
+    live = np.arange(m)
+    for t in tests:
+        coords = [Interval._make(lo[i].take(live), hi[i].take(live)) for i in range(n)]
+        tri[live] = np.minimum(tri[live], _one_per_box(t(*coords), live.size))
+        live = live[tri[live] != FALSE]
+        if not live.size:
+            break
+    return tri
+
+
+def _one_per_box(tri, m: int) -> np.ndarray:
+    tri = as_tri(tri)
     if tri.shape != (m,):
         try:
             tri = np.broadcast_to(tri, (m,))
         except ValueError:
             raise ValueError(f"test must return one value per box, got shape {tri.shape}") from None
     return tri
+
+
+def _contract(contractor, lo, hi):
+    """Contract the level; return the kept boxes and the removed parts as a FALSE level."""
+    c_lo, c_hi = contractor(lo, hi)
+    c_lo, c_hi = np.maximum(c_lo, lo), np.minimum(c_hi, hi)  # never grow a box
+    empty = np.any(c_lo > c_hi, axis=0)
+    c_lo[:, empty], c_hi[:, empty] = lo[:, empty], hi[:, empty]  # removed whole
+    parts_lo, parts_hi = [lo[:, empty]], [hi[:, empty]]
+    keep = ~empty
+    # B \ C as slabs: below and above C on axis k, with C's extent on the axes before k.
+    cur_lo, cur_hi = lo[:, keep].copy(), hi[:, keep].copy()
+    k_lo, k_hi = c_lo[:, keep], c_hi[:, keep]
+    for k in range(lo.shape[0]):
+        for side in (0, 1):
+            s_lo, s_hi = cur_lo.copy(), cur_hi.copy()
+            if side == 0:
+                s_hi[k] = k_lo[k]
+            else:
+                s_lo[k] = k_hi[k]
+            wide = s_lo[k] < s_hi[k]
+            parts_lo.append(s_lo[:, wide])
+            parts_hi.append(s_hi[:, wide])
+        cur_lo[k], cur_hi[k] = k_lo[k], k_hi[k]
+    r_lo, r_hi = np.concatenate(parts_lo, axis=1), np.concatenate(parts_hi, axis=1)
+    r = r_lo.shape[1]
+    removed = (r_lo, r_hi, np.full(r, FALSE, dtype=np.int8), np.zeros(r, dtype=bool))
+    return k_lo, k_hi, removed
 
 
 def _split_points(lo, hi, eps, ratio):

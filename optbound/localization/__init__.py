@@ -30,7 +30,8 @@ It **must** define:
   ``exact_paving(data..., X0, eps)``
       An :class:`~optbound.interval.Paving` of the exact feasible set,
       ``inner ⊂ set ⊂ inner ∪ boundary`` in outward-rounded arithmetic. ``landmarks``,
-      ``relative_bearing``, ``sonar`` (whose ``localize`` is already this paving).
+      ``relative_bearing``, ``sonar`` (whose ``localize`` is already this paving),
+      ``visibility`` (one robot's consistent positions at one step).
   ``exact_tests(...)``
       The three-valued interval tests whose conjunction is the exact set, as
       :func:`optbound.interval.pave` takes them. ``relative_bearing``, ``sonar``.

@@ -8,7 +8,8 @@ Algorithm 3). A "visible" measurement is confronted with the inner characterizat
 when it contains no position consistent with the true environment E (:func:`luvia`,
 Algorithm 2). :func:`track` (Algorithm 1) alternates interval odometry with a compass and
 LUVIA for every robot. :func:`measure` is the noise-free measurement: the true visibility
-matrix of robots at given points.
+matrix of robots at given points. :func:`exact_paving` paves the exact set one LUVIA step
+contracts towards, the yardstick of how much a step could contract.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import numpy as np
 from numba import njit
 
 from optbound._core import box_array, real_array
-from optbound.interval import Interval, Tri, tri_not
+from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import (
     as_polygons,
@@ -72,6 +73,12 @@ def _check_depth(max_depth) -> int:
     if isinstance(max_depth, bool) or not isinstance(max_depth, int | np.integer) or max_depth < 0:
         raise ValueError(f"max_depth must be a non-negative integer, got {max_depth!r}")
     return int(max_depth)
+
+
+def _check_passes(passes) -> int:
+    if isinstance(passes, bool) or not isinstance(passes, int | np.integer) or passes < 1:
+        raise ValueError(f"passes must be a positive integer, got {passes!r}")
+    return int(passes)
 
 
 def _check_measurements(y, m: int, name: str = "y") -> np.ndarray:
@@ -274,6 +281,8 @@ def track(
     eps: float,
     *,
     max_depth: int = MAX_DEPTH,
+    passes: int = 1,
+    region=None,
 ) -> np.ndarray:
     """Pose tracking of a team [GLH12, Algorithm 1]: odometry, then LUVIA for every robot.
 
@@ -291,20 +300,33 @@ def track(
         (K, m, m) booleans: ``visibility[k, i, l]`` is ``y_il`` after step ``k``.
     env, eps, max_depth
         As for :func:`luvia`.
+    passes
+        Team contraction sweeps per step (not in the paper). A sweep contracts every robot in
+        turn; robots contracted early used the others' boxes from before their contraction,
+        so a new sweep can shrink them further. Sweeps are repeated until none changes a box
+        (a fixpoint of the team's contraction) or ``passes`` sweeps were run. 1 (default) is
+        [GLH12, Algorithm 1] as printed. Each contraction keeps every position consistent
+        with boxes that contain the truth, so every sweep keeps the guarantee.
+    region
+        Optional box ``[[x_lo, x_hi], [y_lo, y_hi]]`` known to contain every robot at every
+        step (e.g. the room); each odometry box is intersected with it (not in the paper).
 
     Returns
     -------
     (K + 1, m, 2, 2) array
         The boxes after each step (index 0 is ``boxes0``). Robots are contracted in order,
         each with the others' latest boxes (every contraction is guaranteed, so the order
-        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box (the
-        measurements are inconsistent with E⁻, E⁺ and the odometry).
+        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box, or if a
+        box misses ``region`` (the measurements are inconsistent with E⁻, E⁺, the odometry
+        and the region).
     """
     b = box_array("boxes0", boxes0, 2, volume=True)
     m = len(b)
     if m == 0:
         raise ValueError("boxes0 is empty: tracking needs at least one robot")
     env, eps, max_depth = _check_env(env), _check_eps(eps), _check_depth(max_depth)
+    passes = _check_passes(passes)
+    room = None if region is None else box_array("region", [region], 2)[0]
     th = np.asarray(headings, dtype=float)
     if th.ndim != 2 or th.shape[1] != m:
         raise ValueError(f"headings must have shape (K, {m}), got {th.shape}")
@@ -322,12 +344,20 @@ def track(
     out[0] = b
     for k in range(steps):
         cur = odometry(out[k], dist[k], th[k], heading_error)
-        for i in range(m):
-            if m > 1:
+        if room is not None:
+            cur[..., 0] = np.maximum(cur[..., 0], room[:, 0])
+            cur[..., 1] = np.minimum(cur[..., 1], room[:, 1])
+            if np.any(cur[..., 0] > cur[..., 1]):
+                raise ValueError(f"step {k}: a robot's box misses region")
+        for _ in range(passes if m > 1 else 0):
+            before = cur.copy()
+            for i in range(m):
                 box = _luvia(i, vis[k, i], cur, env, eps, max_depth)
                 if box is None:
                     raise ValueError(f"step {k}: every position of robot {i} is refuted")
                 cur[i] = box
+            if np.array_equal(before, cur):
+                break
         out[k + 1] = cur
     return out
 
@@ -364,8 +394,82 @@ def measure(points, obstacles) -> np.ndarray:
     return y
 
 
+def _cells(box: np.ndarray, split: int) -> np.ndarray:
+    """``box`` cut into a ``split`` x ``split`` grid of (split², 2, 2) cells covering it."""
+    xs = np.linspace(box[0, 0], box[0, 1], split + 1)
+    ys = np.linspace(box[1, 0], box[1, 1], split + 1)
+    xs[[0, -1]], ys[[0, -1]] = box[0], box[1]  # the grid covers the box exactly
+    gx, gy = np.meshgrid(np.arange(split), np.arange(split), indexing="ij")
+    gx, gy = gx.ravel(), gy.ravel()
+    return np.stack(
+        [np.stack([xs[gx], xs[gx + 1]], -1), np.stack([ys[gy], ys[gy + 1]], -1)], axis=1
+    )
+
+
+def exact_paving(robot: int, y, boxes, env: Environment, eps: float, *, split: int = 8) -> Paving:
+    """Pave the positions of ``robot`` consistent with one step's measurements and boxes.
+
+    The set LUVIA contracts towards, with one witness per measurement (the robots l are
+    distinct) and E⁻ for "visible", E⁺ for "not visible" [GLH12, Props. 15-16]:
+
+        S_i = {x ∈ [x_i] : for every l ≠ i there is an x_l ∈ [x_l] with
+               Seg(x, x_l) ∩ E⁻ = ∅ if y_il, Seg(x, x_l) ∩ E⁺ ≠ ∅ if not}.
+
+    Algorithm 2 bisects ``[x_i]`` only and tests each sub-box against the whole ``[x_l]``;
+    here each ``[x_l]`` is also cut into ``split`` x ``split`` cells, so a box is refuted when
+    every cell is (no witness anywhere) and proven inner when one cell witnesses all its
+    points. The hull of the inner boxes and that of the inner and boundary boxes bracket the
+    hull of S_i: the best any contraction from this step's data alone can return.
+
+    Parameters
+    ----------
+    robot, y, boxes, env
+        As for :func:`optbound.localization.visibility.luvia` (``y[robot]`` is ignored).
+    eps
+        Boxes whose widest side is at most ``eps`` (metres) are not bisected further.
+    split
+        Each other robot's box is cut into ``split`` x ``split`` cells (1: Algorithm 2's test).
+
+    Returns
+    -------
+    Paving
+        ``inner ⊂ S_i ⊂ inner ∪ boundary`` within ``boxes[robot]``.
+    """
+    b = box_array("boxes", boxes, 2, volume=True)
+    m = len(b)
+    if isinstance(robot, bool) or not isinstance(robot, int | np.integer) or not 0 <= robot < m:
+        raise ValueError(f"robot must be an index in [0, {m}), got {robot!r}")
+    y, env = _check_measurements(y, m), _check_env(env)
+    if isinstance(split, bool) or not isinstance(split, int) or split < 1:
+        raise ValueError(f"split must be a positive integer, got {split!r}")
+    inner, outer = as_polygons(env.inner), as_polygons(env.outer)
+    others = [(_cells(b[j], split), inner if y[j] else outer, bool(y[j])) for j in range(m)]
+    others = [o for j, o in enumerate(others) if j != robot]
+
+    def test(x, yy) -> np.ndarray:
+        n = len(x.lo)
+        xbox = np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+        proven = np.ones(n, dtype=bool)
+        refuted = np.zeros(n, dtype=bool)
+        for cells, polygons, visible in others:
+            c = len(cells)
+            meets = segments_meet_polygons(
+                np.repeat(xbox, c, axis=0), np.tile(cells, (n, 1, 1)), polygons
+            ).reshape(n, c)
+            good, bad = (Tri.FALSE, Tri.TRUE) if visible else (Tri.TRUE, Tri.FALSE)
+            proven &= np.any(meets == good, axis=1)
+            refuted |= np.all(meets == bad, axis=1)
+        out = np.full(n, Tri.UNKNOWN, dtype=np.int8)
+        out[proven] = Tri.TRUE
+        out[refuted] = Tri.FALSE
+        return out
+
+    return pave(test, b[robot], eps)
+
+
 __all__ = [
     "MAX_DEPTH",
+    "exact_paving",
     "luvia",
     "measure",
     "odometry",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
@@ -35,9 +36,16 @@ class OuterResult(BoundResult):
     lower_bound : float or None
         When requested, a lower bound on the true minimum of the objective over *all*
         ellipsoids containing the set (so the reference's own gap is known).
+    accuracy : float
+        Class constant 1e-5: how far (as a relative level, ``compare.max_level - 1``) the
+        ellipsoid may lie from the true optimum in either direction. The conic solvers stop at
+        relative gaps near 1e-8, which leaves the optimal shape itself accurate to a few 1e-6
+        (2.9e-6 with Clarabel on the README's ellipse ∩ strip); ``compare.contains`` uses it
+        as its default tolerance when this result is one of its arguments.
     """
 
     set_attribute = "ellipsoid"
+    accuracy: ClassVar[float] = 1e-5
 
     ellipsoid: Ellipsoid
     objective: float

@@ -152,9 +152,14 @@ class Evaluation:
 
 
 def _bracket(lo, hi) -> str:
-    if lo is None:
+    if lo is None and hi is None:
         return "–"
-    return f"[{lo:.4g}, {hi:.4g}]"
+    # One end None: a non-finite float read back from JSON (an unbounded size or ratio).
+    return f"[{_end(lo, '?')}, {_end(hi, 'inf')}]"
+
+
+def _end(value, missing: str) -> str:
+    return missing if value is None else f"{value:.4g}"
 
 
 def _point(x) -> str:

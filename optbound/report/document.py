@@ -5,9 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from optbound.report import figures
+from optbound.report.estimators import estimators_section
 from optbound.report.headline import HEADERS, headline_rows
 from optbound.report.results import write_csv
 from optbound.report.summary import (
+    BELOW_ONE_TOL,
     DEGENERATE_GAP,
     group,
     ratio_stats,
@@ -45,6 +47,14 @@ analytic bound itself is an outer bound is checked separately by sampling the ex
 ("sampled points outside")."""
 
 
+BELOW_ONE_NOTE = (
+    f'"below 1" counts ratios under 1 − {BELOW_ONE_TOL:g}, which the headline\'s ratios '
+    "(rounded to 7 digits) do not show. Where the reference is the true optimum they come from "
+    "the reference's own inaccuracy (an SDP answer is accurate to about 1e-6 and is inflated to "
+    'be certified), not from a bound smaller than the optimum; see "About the references".'
+)
+
+
 def write_report(results: dict, out_dir: str | Path) -> Path:
     """Write report.md, the PNG figures and the CSV files of ``results`` into ``out_dir``.
 
@@ -53,8 +63,12 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    write_csv(results, out)
-    parts = [_header(results), "## Headline", markdown_table(HEADERS, headline_rows(results))]
+    csv_files = write_csv(results, out)
+    parts = [
+        _header(results, [p.name for p in csv_files]),
+        "## Headline",
+        markdown_table(HEADERS, headline_rows(results)),
+    ]
     pictures = []
     for name, fam in results["families"].items():
         parts.append(f"## {fam['title']}")
@@ -69,23 +83,39 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
             "it, the SDP optimum dashed.",
             "![2-D instances](instances_2d.png)",
         ]
+    parts += estimators_section(results)
     parts += ["## About the references", REFERENCES_NOTE]
     path = out / REPORT_FILE
     path.write_text("\n\n".join(parts) + "\n")
     return path
 
 
-def _header(results: dict) -> str:
+def _header(results: dict, csv_files: list[str]) -> str:
+    """Title, run facts, and how to repeat the run (the command recorded in ``meta``)."""
     m = results["meta"]
+    # Reports written before meta recorded the command were all bench runs.
+    command = m.get("command", f"optbound bench --suite {m['suite']} --seed {m['seed']}")
+    title = "paper reproductions" if command.startswith("optbound repro") else "benchmark report"
+    raw = f" Raw records: {', '.join(f'`{name}`' for name in csv_files)}." if csv_files else ""
     return (
-        "# optbound benchmark report\n\n"
+        f"# optbound {title}\n\n"
         f"Suite **{m['suite']}**, seed {m['seed']}, {m['jobs']} job(s), started {m['started']}, "
-        f"wall time {m['wall_time_s']:.1f} s (optbound {m['optbound']}, Python {m['python']}, "
+        f"{_wall_time(m)} (optbound {m['optbound']}, Python {m['python']}, "
         f"numpy {m['numpy']}, {m['machine']}).\n\n"
-        f"Re-run with `optbound bench --suite {m['suite']} --seed {m['seed']}`; rebuild this "
-        "report from `results.json` with `optbound report DIR`. Every instance is rebuilt by "
-        "its family's `instance(task)` from the seed shown. Raw records: `tightness.csv`, "
-        "`speed.csv`."
+        f"Re-run with `{command}`; rebuild this report from `results.json` with "
+        "`optbound report DIR`. Every instance is rebuilt by its family's `instance(task)` from "
+        f"the seed shown.{raw}"
+    )
+
+
+def _wall_time(meta: dict) -> str:
+    """What the run cost: the tasks alone, and (if run by the command) from its start."""
+    tasks = f"{meta['wall_time_s']:.1f} s running the tasks"
+    if "since_start_s" not in meta:
+        return f"wall time {tasks}"
+    return (
+        f"wall time {meta['since_start_s']:.1f} s from the command's start to the end of its "
+        f"tasks ({tasks}; the rest is start-up: imports, compiling, setting up the workers)"
     )
 
 
@@ -153,6 +183,9 @@ def _tightness_section(name: str, records: list[dict], out: Path) -> list[str]:
     ] + (["sampled points outside"] if checked else [])
     png = figures.ratio_histograms(records, out / f"hist_{name}.png", f"{name}: ratio − 1")
     parts = [markdown_table(headers, rows)]
+    below = headers.index("below 1")
+    if any(row[below] for row in rows):
+        parts.append(BELOW_ONE_NOTE)
     if checked:
         parts.append(
             '"sampled points outside": points drawn uniformly in the exact set that the '

@@ -10,6 +10,12 @@ and are not imitated. The robots' sensing follows the paper: the displacement pe
 known within ±0.1 cm, the heading within ±2.5° (compass), the initial box is 1 m x 1 m and
 contains the truth at a random offset. The visibility measurements come from the model's
 :func:`optbound.localization.visibility.measure` on the exact obstacles.
+
+One designed room is one sample of a world. :class:`Setting` names the factors a study can vary
+one at a time, each with stated alternatives: ``layout="random"`` draws 11 convex obstacles
+and 11 start positions from the run's seed (a different room per seed, same rules as the
+designed one), ``turn`` the motion (0: straight lines, a new random heading when blocked),
+``heading_error`` the compass bound and ``box_offset`` where the truth sits in its initial box.
 """
 
 from __future__ import annotations
@@ -57,6 +63,40 @@ STARTS = np.array(
 
 
 @dataclass(frozen=True)
+class Setting:
+    """The factors of a simulated run; the defaults are the designed room and the paper's sensing.
+
+    Attributes
+    ----------
+    layout
+        ``"designed"`` (:data:`OBSTACLES`, :data:`STARTS`) or ``"random"`` (drawn from the
+        seed by :func:`random_layout`).
+    turn
+        Standard deviation (radians) of the heading's random walk per step; 0 gives straight
+        lines with a new random heading when blocked.
+    heading_error
+        Compass error bound (radians); the paper's is 2.5°.
+    box_offset
+        ``"random"`` (the truth anywhere at least 5 cm inside its 1 m box) or ``"centre"``.
+    """
+
+    layout: str = "designed"
+    turn: float = TURN
+    heading_error: float = float(HEADING_ERROR)
+    box_offset: str = "random"
+
+    def __post_init__(self) -> None:
+        if self.layout not in ("designed", "random"):
+            raise ValueError(f"layout must be 'designed' or 'random', got {self.layout!r}")
+        if self.box_offset not in ("random", "centre"):
+            raise ValueError(f"box_offset must be 'random' or 'centre', got {self.box_offset!r}")
+        for name in ("turn", "heading_error"):
+            value = getattr(self, name)
+            if not isinstance(value, int | float) or not np.isfinite(value) or value < 0:
+                raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
+
+
+@dataclass(frozen=True)
 class Run:
     """One simulated run: the truth and what the robots measure."""
 
@@ -66,36 +106,90 @@ class Run:
     distance: np.ndarray  # (2,) known interval of each step's travel
     headings: np.ndarray  # (K, m) compass readings
     visibility: np.ndarray  # (K, m, m) measurements y_il after each step
+    heading_error: float = float(HEADING_ERROR)  # the compass bound of ``headings``
 
 
-def environment(n_obstacles: int) -> Environment:
-    """E⁻ ⊂ E ⊂ E⁺ made of the first ``n_obstacles`` designed obstacles (margin 5 cm)."""
-    if not 0 <= n_obstacles <= len(OBSTACLES):
-        raise ValueError(f"n_obstacles must be in [0, {len(OBSTACLES)}], got {n_obstacles}")
-    return Environment.from_polygons(list(OBSTACLES[:n_obstacles]), MARGIN)
+def environment(n_obstacles: int, obstacles=OBSTACLES) -> Environment:
+    """E⁻ ⊂ E ⊂ E⁺ made of the first ``n_obstacles`` obstacles (margin 5 cm).
+
+    ``obstacles``: the designed :data:`OBSTACLES` (default) or a :func:`random_layout`'s.
+    """
+    if not 0 <= n_obstacles <= len(obstacles):
+        raise ValueError(f"n_obstacles must be in [0, {len(obstacles)}], got {n_obstacles}")
+    return Environment.from_polygons(list(obstacles[:n_obstacles]), MARGIN)
 
 
-def _free(points: np.ndarray, obstacles) -> np.ndarray:
-    """Points at least ``CLEARANCE`` (in the sup norm) inside the room and off the obstacles."""
-    inside = np.all((points > CLEARANCE) & (points < SIZE - CLEARANCE), axis=1)
-    boxes = np.stack([points - CLEARANCE, points + CLEARANCE], axis=-1)
+def _random_obstacle(rng: np.random.Generator) -> np.ndarray:
+    """A convex obstacle about the size of the designed ones: a rectangle or a triangle."""
+    centre = rng.uniform(1.0, SIZE - 1.0, 2)
+    if rng.uniform() < 0.5:
+        a, b = rng.uniform(0.5, 2.0) / 2, rng.uniform(0.3, 0.8) / 2
+        poly = np.array([[-a, -b], [a, -b], [a, b], [-a, b]])
+    else:
+        gaps = rng.uniform(0.7, 1.0, 3)  # angles between vertices, at least ~40° each
+        angles = np.cumsum(2 * np.pi * gaps / gaps.sum())
+        poly = rng.uniform(0.5, 0.9) * np.column_stack([np.cos(angles), np.sin(angles)])
+    phi = rng.uniform(0.0, np.pi)
+    rot = np.array([[np.cos(phi), -np.sin(phi)], [np.sin(phi), np.cos(phi)]])
+    return centre + poly @ rot.T  # a rotation keeps the counter-clockwise order
+
+
+def random_layout(seed: int) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
+    """11 convex obstacles and 11 free start positions drawn from ``seed`` (our design).
+
+    The rules, fixed before any result was seen: obstacles as :func:`_random_obstacle` draws
+    them, inside ``[0.4, 9.6]²`` and with bounding boxes at least 0.6 m apart (robots pass
+    between any two); starts at least 0.3 m (sup norm) from every obstacle and the walls.
+    The stream is independent of the one :func:`simulate` draws the paths from.
+    """
+    rng = np.random.default_rng([seed, 1])
+    placed: list[np.ndarray] = []
+    while len(placed) < len(OBSTACLES):
+        poly = _random_obstacle(rng)
+        lo, hi = poly.min(axis=0), poly.max(axis=0)
+        if np.any(lo < 0.4) or np.any(hi > SIZE - 0.4):
+            continue
+        if all(np.any((lo > q.max(axis=0) + 0.6) | (hi < q.min(axis=0) - 0.6)) for q in placed):
+            placed.append(poly)
+    starts: list[np.ndarray] = []
+    while len(starts) < len(STARTS):
+        p = rng.uniform(0.3, SIZE - 0.3, (1, 2))
+        if _free(p, placed, 0.3)[0]:
+            starts.append(p[0])
+    return tuple(placed), np.array(starts)
+
+
+def _free(points: np.ndarray, obstacles, clearance: float = CLEARANCE) -> np.ndarray:
+    """Points at least ``clearance`` (in the sup norm) inside the room and off the obstacles."""
+    inside = np.all((points > clearance) & (points < SIZE - clearance), axis=1)
+    boxes = np.stack([points - clearance, points + clearance], axis=-1)
     return inside & (segments_meet_polygons(boxes, boxes, obstacles) == 0)
 
 
-def simulate(n_robots: int, n_obstacles: int, steps: int, seed: int) -> Run:
-    """Seeded run of ``n_robots`` robots among the first ``n_obstacles`` obstacles."""
+def simulate(
+    n_robots: int, n_obstacles: int, steps: int, seed: int, setting: Setting | None = None
+) -> Run:
+    """Seeded run of ``n_robots`` robots among the first ``n_obstacles`` obstacles.
+
+    ``setting`` (default :class:`Setting()`: the designed room, the paper's sensing) chooses
+    the factors; with ``layout="random"`` the room itself is drawn from ``seed``.
+    """
+    setting = Setting() if setting is None else setting
+    if not isinstance(setting, Setting):
+        raise TypeError(f"setting must be an arena.Setting, got {type(setting).__name__}")
     if not 1 <= n_robots <= len(STARTS):
         raise ValueError(f"n_robots must be in [1, {len(STARTS)}], got {n_robots}")
     if steps < 0:
         raise ValueError(f"steps must be >= 0, got {steps}")
-    env = environment(n_obstacles)
+    obstacles, starts = (OBSTACLES, STARTS) if setting.layout == "designed" else random_layout(seed)
+    env = environment(n_obstacles, obstacles)
     rng = np.random.default_rng(seed)
     truth = np.empty((steps + 1, n_robots, 2))
-    truth[0] = STARTS[:n_robots]
+    truth[0] = starts[:n_robots]
     theta = rng.uniform(-np.pi, np.pi, n_robots)
     true_heading = np.empty((steps, n_robots))
     for k in range(steps):
-        theta = theta + rng.normal(0.0, TURN, n_robots)
+        theta = theta + rng.normal(0.0, setting.turn, n_robots)
         d = rng.uniform(STEP - STEP_ERROR, STEP + STEP_ERROR, n_robots)
         nxt = truth[k] + d[:, None] * np.column_stack([np.cos(theta), np.sin(theta)])
         for _ in range(50):  # blocked robots draw a new heading
@@ -112,14 +206,17 @@ def simulate(n_robots: int, n_obstacles: int, steps: int, seed: int) -> Run:
         true_heading[k] = theta
     # The compass error is drawn a relative 1e-9 inside ±2.5°: the reading's rounding (half
     # an ulp) then stays inside the announced bound.
-    noise = rng.uniform(-1.0, 1.0, (steps, n_robots)) * HEADING_ERROR * (1 - 1e-9)
+    noise = rng.uniform(-1.0, 1.0, (steps, n_robots)) * setting.heading_error * (1 - 1e-9)
     offset = rng.uniform(0.05, 0.95, (n_robots, 2))  # away from the edges: no rounding issue
+    if setting.box_offset == "centre":
+        offset[:] = 0.5
     lo = truth[0] - offset
     boxes0 = np.stack([lo, lo + 1.0], axis=-1)
     vis = np.array([measure(truth[k + 1], env.exact) for k in range(steps)])
     vis = vis.reshape(steps, n_robots, n_robots)
     distance = np.array([STEP - STEP_ERROR, STEP + STEP_ERROR])
-    return Run(env, truth, boxes0, distance, true_heading + noise, vis)
+    heading = true_heading + noise
+    return Run(env, truth, boxes0, distance, heading, vis, setting.heading_error)
 
 
 __all__ = [
@@ -133,6 +230,8 @@ __all__ = [
     "STEP_ERROR",
     "TURN",
     "Run",
+    "Setting",
     "environment",
+    "random_layout",
     "simulate",
 ]

@@ -91,3 +91,12 @@ def test_sample_exact_draws_points_of_the_inner_boxes():
         inside |= np.all((pts >= b[:, 0]) & (pts <= b[:, 1]), axis=1)
     assert inside.all()
     assert lt.rb.in_exact_set(data, pts).all()
+
+
+def test_each_bound_is_labelled_for_what_it_is(tiny):
+    """The paving's SDP ellipse is an outer ellipse of a coarse paving, not the optimum."""
+    _, out = tiny
+    kinds = {rec["criterion"]: rec["bound"] for rec in out["records"]}
+    assert kinds["sdp_ellipse"] == "paving SDP (outer, not optimal)"
+    assert kinds["hs96_linearized"] == kinds["bh_L4"] == "analytic"
+    assert all(k == "optimal" for c, k in kinds.items() if c.startswith("optimal_pseudo"))

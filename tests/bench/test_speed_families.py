@@ -53,3 +53,16 @@ def test_sdp_cache_measures_clarabels_own_time():
 def test_per_call_measures_seconds_per_call():
     seconds = per_call(lambda: time.sleep(0.002), repeat=2, min_time=0.01)
     assert 0.002 <= seconds < 0.05
+
+
+def test_one_analytic_call_is_measured_once_and_the_sdp_ratio_uses_it():
+    from optbound.bench import speed_analytic
+
+    for run in (speed_analytic.run_strip, speed_analytic.run_minkowski):
+        records = run({"seed": 3, "batches": [10]})
+        one_call = [r for r in records if "one call" in r["name"] and "optbound" in r["name"]]
+        sdp = [r for r in records if r["name"].startswith("SDP")]
+        assert len(one_call) == 1 and len(sdp) == 1
+        assert len([r for r in records if "one call" in r["name"]]) == 2  # optbound, reference
+        assert sdp[0]["ratio"] == sdp[0]["value"] / one_call[0]["value"]
+        assert one_call[0]["name"] in sdp[0]["ratio_label"]

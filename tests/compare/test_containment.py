@@ -66,3 +66,16 @@ def test_nearly_equal_ellipsoids_do_not_break_the_root_bracket():
     twin = Ellipsoid(a.center * (1 + 1e-12) + 1e-13, a.shape * (1 - 1e-10))
     assert max_level(a, twin) == pytest.approx(1.0, abs=1e-8)
     assert contains(a, twin)
+
+
+def test_an_analytic_bound_equal_to_the_sdp_optimum_contains_it_by_default():
+    """HS96 on one ellipse ∩ one strip is the optimum; the SDP finds it to solver accuracy."""
+    from optbound import optimal
+
+    E = Ellipsoid([0.0, 0.0], np.diag([4.0, 1.0]))
+    S = Strip.from_bounds([1.0, 1.0], -0.5, 1.5)
+    a = analytic.intersect_strip(E, S)
+    sdp = optimal.outer_ellipsoid([E, S])
+    assert contains(a, sdp) and contains(sdp, a)  # equal, to the reference's accuracy
+    assert not contains(a.ellipsoid.scaled(1 - 1e-3), sdp)  # a smaller bound is not equal
+    assert not contains(E, E.scaled(1.0 + 1e-6))  # two plain ellipsoids: rounding only

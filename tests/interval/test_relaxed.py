@@ -2,8 +2,11 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from optbound import interval as iv
+from optbound.interval.relaxed import relaxed_paving
 
 LANDMARKS = np.array([[0.0, 0.0], [10.0, 0.0], [0.0, 10.0], [10.0, 10.0], [5.0, -4.0]])
 TRUTH = np.array([3.0, 4.0])
@@ -73,3 +76,35 @@ def test_bad_relaxed_input():
     far = [iv.constraint(lambda x, y: x, [[100.0, 101.0]])] * 2
     with pytest.raises(ValueError, match="empty for every q"):
         iv.min_outliers(far, X0, 0.5, q_max=1)
+
+
+@settings(max_examples=200, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), m=st.integers(1, 7), data=st.data())
+def test_lazy_relaxed_test_equals_counting_every_test(seed, m, data):
+    """Tests evaluated one by one on the undecided boxes give the all-tests verdict."""
+    q = data.draw(st.integers(0, m))
+    rng = np.random.default_rng(seed)
+    table = rng.integers(0, 3, (m, 60)).astype(np.int8)
+    seen = []
+
+    def make(i):
+        def test(x):
+            seen.append(x.size)
+            return table[i, x.astype(int)]
+
+        return test
+
+    got = iv.relaxed_test([make(i) for i in range(m)], q)(np.arange(60.0))
+    n_true, n_false = (table == iv.Tri.TRUE).sum(0), (table == iv.Tri.FALSE).sum(0)
+    want = np.where(
+        n_true >= m - q, iv.Tri.TRUE, np.where(n_false > q, iv.Tri.FALSE, iv.Tri.UNKNOWN)
+    )
+    assert got.tolist() == want.tolist()
+    assert sum(seen) <= 60 * m
+
+
+def test_prior_is_required_whatever_q():
+    tests = _range_tests(_measurements())
+    prior = iv.constraint(lambda x, y: x, [[4.0, np.inf]])  # excludes the truth (x = 3)
+    paving = relaxed_paving(tests, 5, X0, 0.2, prior=prior)
+    assert not _covers(paving, TRUTH) and _covers(relaxed_paving(tests, 5, X0, 0.2), TRUTH)

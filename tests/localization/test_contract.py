@@ -35,7 +35,7 @@ VERBS = {
     "linearized_bearing": {"localize"},
     "relative_bearing": {"localize", "exact_paving", "exact_tests", "measure"},
     "sonar": {"localize", "exact_paving", "exact_tests", "measure"},
-    "visibility": {"measure", "track"},
+    "visibility": {"measure", "track", "exact_paving"},
 }
 #: Names a module had first for a verb: they stay, as the same object.
 ALIASES = {

@@ -341,3 +341,36 @@ def test_intervals_are_accepted_as_exact_points():
     enc = range_inclusion(SQUARE, CROSS, np.array([[[0, 0], [0, 0], [0, 0]]], float))
     assert isinstance(enc, Interval) and enc.lo.dtype == float
     assert np.all(enc.lo <= 2.0) and np.all(2.0 <= enc.hi)
+
+
+# ----- proven components ----------------------------------------------------------------------
+
+
+def test_witness_is_a_consistent_pose_of_the_component():
+    d = simulate_ranges(rooms.TRIANGLE, rooms.triangle_sonars(), rooms.TRIANGLE_POSE)
+    X0 = [[-7, 4], [-1, 8], [-np.pi, np.pi]]
+    paving = localize(rooms.TRIANGLE, rooms.triangle_sonars(), d, X0, 0.05)
+    [q1] = [c for c in paving.components() if c.contains(rooms.TRIANGLE_POSE)]
+    w = q1.witness()
+    assert w is not None and q1.contains(w)
+    box = measurement_box(rooms.triangle_sonars(), d)
+    r = simulate_ranges(rooms.TRIANGLE, rooms.triangle_sonars(), w)
+    assert np.all((box[:, 0] <= r) & (r <= box[:, 1]))
+
+
+def test_no_witness_where_no_pose_is_consistent():
+    from optbound.interval import Paving
+    from optbound.localization.sonar import SonarPaving
+    from optbound.sets import Box
+
+    d = simulate_ranges(rooms.TRIANGLE, rooms.triangle_sonars(), rooms.TRIANGLE_POSE)
+    X0 = [[-7, 4], [-1, 8], [-np.pi, np.pi]]
+    paving = localize(rooms.TRIANGLE, rooms.triangle_sonars(), d, X0, 0.2)
+    far = np.array([[[2.0, 2.1], [6.0, 6.1], [1.0, 1.1]]])  # outside the room
+    empty = np.empty((0, 3, 2))
+    fake = SonarPaving(
+        Paving(empty, far, empty, Box([-7, -1, -4], [4, 8, 4]), 0.2), paving.problem, 0, False
+    )
+    assert fake.witness() is None
+    with pytest.raises(ValueError, match="per_side"):
+        fake.witness(per_side=0)

@@ -257,3 +257,46 @@ def test_measure_sees_through_free_space_only():
     pts = np.array([[1.0, 3.0], [4.0, 3.0], [2.5, 1.0]])  # obstacle 0 spans x 2..3, y 2..4.5
     y = v.measure(pts, arena.environment(1).exact)
     assert y.tolist() == [[True, False, True], [False, True, True], [True, True, True]]
+
+
+def test_fixpoint_sweeps_keep_the_exact_truth_and_refine_one_sweep():
+    """Team contraction to a fixpoint: measurements from exact rational visibility on E, the
+    truth stays in every box, and every box lies in the one-sweep box from the same input."""
+    rng = np.random.default_rng(7)
+    env = _env()
+    gained = 0
+    for _ in range(15):
+        truth = rng.uniform(0.2, 9.8, (6, 2))
+        pts = ex.rational(truth)
+        truth = truth[[not any(ex.inside(p, ex.rational(q)) for q in env.outer) for p in pts]]
+        m = len(truth)
+        if m < 3:
+            continue
+        lo = truth - rng.uniform(0.05, 1.45, truth.shape)
+        boxes = np.stack([lo, lo + 1.5], -1)
+        y = np.array([[ex.visible(a, b, env.exact) for b in truth] for a in truth])
+        args = ([0.0, 0.0], np.zeros((1, m)), 0.0, y[None], env, 0.005)
+        one = v.track(boxes, *args)[1]
+        fix = v.track(boxes, *args, passes=50)[1]
+        assert np.all((fix[..., 0] <= truth) & (truth <= fix[..., 1]))
+        assert np.all((one[..., 0] <= fix[..., 0]) & (fix[..., 1] <= one[..., 1]))
+        gained += (
+            np.prod(np.diff(fix), axis=(1, 2)).sum() < np.prod(np.diff(one), axis=(1, 2)).sum()
+        )
+    assert gained >= 1
+
+
+def test_track_region_clips_and_keeps_the_truth():
+    run = arena.simulate(4, 6, 60, 2)
+    common = (run.distance, run.headings, arena.HEADING_ERROR, run.visibility, run.env, 0.01)
+    room = [[0.0, arena.SIZE], [0.0, arena.SIZE]]
+    boxes = v.track(run.boxes0, *common, region=room)
+    assert np.all((boxes[..., 0] <= run.truth) & (run.truth <= boxes[..., 1]))
+    assert np.all((boxes[1:, :, :, 0] >= 0.0) & (boxes[1:, :, :, 1] <= arena.SIZE))
+    with pytest.raises(ValueError, match="misses region"):
+        v.track(run.boxes0, *common, region=[[20.0, 21.0], [20.0, 21.0]])
+    with pytest.raises(ValueError, match="region"):
+        v.track(run.boxes0, *common, region=[[0.0, 1.0]])
+    for bad in (0, 1.5, True):
+        with pytest.raises(ValueError, match="passes"):
+            v.track(run.boxes0, *common, passes=bad)

@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from optbound.papers_repro import _glh12_verdicts as verdicts
 from optbound.papers_repro import glh12_visibility as repro
 
 
@@ -13,24 +14,54 @@ def result(tmp_path_factory):
 
 def test_quick_variant_keeps_the_truth_and_reports(result):
     assert repro.PAPER == "GLH12"
-    assert result["lost"] == 0
-    assert set(result["robots"]) == set(repro.QUICK["robots"])
-    assert set(result["obstacles"]) == set(repro.QUICK["obstacles"])
-    assert "| quantity | paper | optbound |" in result["markdown"]
+    assert result["lost"] == 0 and result["contraction"]["truth_lost"] == 0
+    assert set(result["robots"]) == set(repro.ROBOTS)
+    assert set(result["obstacles"]) == set(repro.OBSTACLES)
+    assert set(result["factors"]) == set(repro.FACTORS)
+    n = len(repro.QUICK["seeds"])
+    assert all(s["n"] == n for s in (*result["robots"].values(), *result["obstacles"].values()))
+    assert "| quantity | paper | optbound | verdict |" in result["markdown"]
+    assert "**Why ours differ.**" in result["markdown"]
     for path in result["figures"]:
         assert path.suffix == ".png" and path.stat().st_size > 10_000
 
 
+def test_verdicts_are_computed_from_the_reported_fractions(result):
+    """Each verdict in the table is the rule applied to the distributions beside it."""
+    rows = {row[0]: row[3] for row in result["claims"]}
+    for key, reading in repro.READINGS.items():
+        frac_r = {n: s[key] for n, s in result["robots"].items()}
+        frac_o = {n: s[key] for n, s in result["obstacles"].items()}
+        assert rows[f"robots needed, 6 obstacles ({reading})"] == verdicts.threshold_verdict(
+            frac_r, 7
+        )
+        assert rows[f"obstacles that work, 7 robots ({reading})"] == verdicts.window_verdict(
+            frac_o, (4, 5, 6, 8)
+        )
+        assert rows[f"7 obstacles, 7 robots ({reading})"] == verdicts.dip_verdict(frac_o, 7, (6, 8))
+
+
+def test_distribution_summarizes_final_areas():
+    runs = [{"final_area": a, "lost": 0, "visible_fraction": 0.5, "cpu_seconds": 1.0,
+             "drift": d} for a, d in ((0.5, 1.0), (2.0, 1.5), (0.9, 1.1), (4.0, 0.9))]  # fmt: skip
+    s = repro.distribution(runs)
+    assert s["n"] == 4 and s["median"] == pytest.approx(1.45)
+    assert s["efficient"] == 0.5 and s["drift_free"] == 0.75
+
+
 def test_run_one_is_a_pure_function_of_params_and_seed():
-    params = {"robots": 3, "obstacles": 4, "steps": 30, "eps": 0.02, "max_depth": 6}
+    params = {**repro.BASE, "robots": 3, "obstacles": 4, "steps": 30, "eps": 0.02,
+              "max_depth": 6}  # fmt: skip
     a, b = repro.run_one(params, 5), repro.run_one(params, 5)
     assert a["area"] == b["area"] and a["lost"] == 0 and len(a["area"]) == 31
     assert a["area"][0] == pytest.approx(1.0)
+    assert repro.run_one(params, 6)["area"] != a["area"]  # another seed: another room
 
 
 def test_sweep_on_two_processes_matches_serial():
     configs = [
-        {"robots": n, "obstacles": 3, "steps": 15, "eps": 0.02, "max_depth": 6} for n in (2, 4)
+        {**repro.BASE, "robots": n, "obstacles": 3, "steps": 15, "eps": 0.02, "max_depth": 6}
+        for n in (2, 4)
     ]
     serial, parallel = repro.sweep(configs, (0, 1)), repro.sweep(configs, (0, 1), jobs=2)
     assert [r["area"] for r in serial] == [r["area"] for r in parallel]

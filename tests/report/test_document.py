@@ -72,3 +72,31 @@ def test_a_family_without_tasks_in_the_suite_says_so(tmp_path):
     results["families"]["speed"].update(records=[], notes=[])
     text = write_report(results, tmp_path).read_text()
     assert "## Speed: analytic\n\nNo task in this suite." in text
+
+
+def test_header_names_the_command_and_only_the_csv_files_written(tmp_path):
+    results = sample_results()
+    text = write_report(results, tmp_path).read_text()
+    assert text.startswith("# optbound benchmark report\n")
+    assert "Re-run with `optbound bench --suite quick --seed 0`" in text  # meta without command
+    assert {p.name for p in tmp_path.glob("*.csv")} == {"tightness.csv", "speed.csv"}
+    assert "Raw records: `tightness.csv`, `speed.csv`." in text
+    speedless = {
+        "meta": {**results["meta"], "command": "optbound repro HS96"},
+        "families": {k: v for k, v in results["families"].items() if v["kind"] != "speed"},
+    }
+    text = write_report(speedless, tmp_path / "repro").read_text()
+    assert text.startswith("# optbound paper reproductions\n")
+    assert "Re-run with `optbound repro HS96`" in text and "speed.csv" not in text
+
+
+def test_below_one_counts_are_explained_where_they_appear(tmp_path):
+    results = sample_results()
+    strip = results["families"]["strip"]["records"]
+    strip[0] = {**strip[0], "ratio": 1.0 - 1e-5}  # an SDP reference a little off the optimum
+    text = write_report(results, tmp_path).read_text()
+    section = text.split(f"## {results['families']['strip']['title']}")[1].split("\n## ")[0]
+    assert '"below 1" counts ratios under 1 − 1e-06' in section
+    assert "the reference's own inaccuracy" in section
+    text = write_report(sample_results(), tmp_path / "none").read_text()
+    assert '"below 1" counts ratios under 1 − 1e-06' not in text  # said only where it applies
