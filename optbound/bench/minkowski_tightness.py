@@ -17,13 +17,8 @@ import numpy as np
 from optbound.bench import records
 from optbound.bench.family import Family
 from optbound.problems.generators import random_ellipsoid, task_seeds
+from optbound.problems.minkowski import NAME, SIZES  # one source of instances
 
-NAME = "minkowski"
-SIZES = {
-    "tiny": ((2, 3), (10.0,), (1e-1,), 1),
-    "quick": ((2, 3, 4, 5, 6), (1.0, 10.0, 1e3, 1e6), (1.0, 1e-1, 1e-3), 3),
-    "full": ((2, 3, 4, 5, 6), (1.0, 10.0, 1e2, 1e4, 1e6), (1.0, 1e-1, 1e-2, 1e-3), 8),
-}
 # 2-D instances drawn in the report: this condition number, summands of these relative scales.
 FIGURE_COND, FIGURE_SCALES = 10.0, (1.0, 1e-1)
 # HS96's pose (x, y, ψ): the size measure needs a position block and a heading coordinate.

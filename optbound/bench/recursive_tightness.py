@@ -17,14 +17,8 @@ import numpy as np
 from optbound.bench import records
 from optbound.bench.family import Family
 from optbound.problems.generators import random_ellipsoid, strips_around, task_seeds
+from optbound.problems.recursive import NAME, PRIOR_COND, SIZES  # one source of instances
 
-NAME = "recursive"
-PRIOR_COND = 10.0
-SIZES = {
-    "tiny": ((2,), (0.3,), (1, 3, 5), 1),
-    "quick": ((2, 3, 4), (0.2, 1.0), (1, 2, 3, 5, 10, 20, 30, 40, 50), 4),
-    "full": ((2, 3, 4, 5, 6), (0.2, 0.5, 1.0), tuple(range(1, 51)), 6),
-}
 FIGURE_K = 5
 
 

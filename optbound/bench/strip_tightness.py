@@ -23,14 +23,8 @@ import numpy as np
 from optbound.bench import records
 from optbound.bench.family import Family
 from optbound.problems.generators import STRIP_KINDS, random_ellipsoid, random_strip, task_seeds
+from optbound.problems.strip import NAME, SIZES  # one source of instances
 
-NAME = "strip"
-# (dims, condition numbers, repetitions per cell); 10 is in every suite for the 2-D figures.
-SIZES = {
-    "tiny": ((2,), (10.0,), 1),
-    "quick": ((2, 3, 4, 5, 6), (1.0, 10.0, 1e2, 1e4, 1e6), 3),
-    "full": ((2, 3, 4, 5, 6), (1.0, 10.0, 1e2, 1e3, 1e4, 1e5, 1e6), 10),
-}
 FIGURE_COND = 10.0
 SAMPLES = 20_000  # points of E tested against each bound (those in S are points of E ∩ S)
 
