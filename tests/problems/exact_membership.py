@@ -195,14 +195,7 @@ def _outside_minkowski_sum(E1, E2, x) -> bool:
 
 def _outside_bearing_set(data, x) -> bool:
     """Some relative bearing beyond its bound, in 50-digit arithmetic."""
-    px, py = (mpmath.mpf(float(v)) for v in x)
-    for (i, j), g, e in zip(data.pairs, data.gammas, data.eps, strict=True):
-        Li, Lj = data.landmarks[i], data.landmarks[j]
-        ai = mpmath.atan2(py - mpmath.mpf(Li[1]), px - mpmath.mpf(Li[0]))
-        aj = mpmath.atan2(py - mpmath.mpf(Lj[1]), px - mpmath.mpf(Lj[0]))
-        if abs(_wrap(ai - aj - mpmath.mpf(float(g)))) > mpmath.mpf(float(e)):
-            return True
-    return False
+    return not in_bearing_set(data, x)
 
 
 #: Families whose FALSE points :func:`check_outside` can verify.
