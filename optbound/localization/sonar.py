@@ -11,7 +11,10 @@ bound on the number of outliers, see :func:`localize`). Optionally, every box is
 by the sonars' upper range bounds before bisection (:func:`sonar_contractors`).
 
 The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_in_cone`,
-one formula for points and boxes. The heading ``theta`` is an angle: an initial box covering
+one formula for points and boxes. On SIVIA's boxes the belt is evaluated by a compiled loop
+(:mod:`optbound.localization._sonar_kernel`) that computes the same outward-rounded bounds bit
+for bit and counts the inconsistent sonars per box, stopping at the first that decides it
+(:func:`sonar_tests`); the numpy evaluation stays the reference. The heading ``theta`` is an angle: an initial box covering
 a whole turn is widened to contain the true circle, and components that meet across the seam
 ``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
 
@@ -447,7 +450,7 @@ def localize(
         Contract every box by the sonars' :func:`sonar_contractors` before it is tested
         (their q-relaxed union, :func:`~optbound.interval.relaxed.relaxed_contractor`);
         ``False`` (default) is plain SIVIA. Both are guaranteed. The contractors act on
-        ``(x, y)`` only and, measured in ``benchmarks/sonar_codac.py``, do not pay for
+        ``(x, y)`` only and, measured in :mod:`optbound.bench.sonar_codac`, do not pay for
         themselves on our rooms; they are kept as a sound option.
 
     Returns
