@@ -14,9 +14,9 @@ The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_i
 one formula for points and boxes. On SIVIA's boxes the belt is evaluated by a compiled loop
 (:mod:`optbound.localization._sonar_kernel`) that computes the same outward-rounded bounds bit
 for bit and counts the inconsistent sonars per box, stopping at the first that decides it
-(:func:`sonar_tests`); the numpy evaluation stays the reference. The heading ``theta`` is an angle: an initial box covering
-a whole turn is widened to contain the true circle, and components that meet across the seam
-``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
+(:func:`sonar_tests`); the numpy evaluation stays the reference. The heading ``theta`` is an
+angle: an initial box covering a whole turn is widened to contain the true circle, and
+components that meet across the seam ``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
 
 A world is an (s, 2, 2) array of oriented segments; :func:`polygon_walls` builds a room's
 walls from its vertices and :func:`clearance_test` is a "centre inside the room" prior. Under
