@@ -358,10 +358,11 @@ def _figure(trials: list[dict], n: int, out_dir: Path) -> Path:
     ]
     ax.set_xticks(x, ticks, fontsize=8)
     ax.set_ylabel("share of trials keeping the truth")
-    ax.set_ylim(0, 1.15)
+    ax.set_ylim(0, 1.22)
+    ax.set_yticks(np.linspace(0, 1, 6))
     ax.set_title(
         f"KJWM00 (our scenarios): share of trials keeping the truth, n = {n} seeded trials "
-        "per outlier rate (k/n on the bars)",
+        "per group (k/n on the bars)",
         fontsize=10,
     )
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), title="estimator")
