@@ -2,7 +2,7 @@
 
 import pytest
 
-import tests.readme_tables as rt
+import tests.doc_tables as rt
 
 
 def test_update_fills_an_indented_block_and_is_idempotent(monkeypatch):
