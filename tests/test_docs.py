@@ -11,7 +11,8 @@ Every fenced block of README.md and ``docs/**/*.md`` is found automatically and 
 - ``bash``: shell commands, not run here (they install, benchmark or build): each line is one
   of the commands this project documents, and every ``optbound ...`` line parses with the real
   command-line parser, every ``python -m M`` names a module that exists;
-- ``toml``: parses.
+- ``toml``: parses;
+- ``{toctree}``: a MyST directive (the site's table of contents), not code.
 
 The gallery's examples (``examples/``) run in the documentation build (``.ci/run`` builds it
 with ``-W``).
@@ -31,6 +32,8 @@ README = ROOT / "README.md"
 PAGES = pages()
 OWN_TESTS = {ROOT / "docs" / "extending.md", *sorted((ROOT / "docs" / "tutorials").glob("*.md"))}
 HEADLINE = re.compile(r"<!-- BEGIN bench-headline -->.*?<!-- END bench-headline -->", re.S)
+# A table of the papers' stated values and settings (no measurement) is marked as such.
+DESCRIPTIVE = re.compile(r"<!-- descriptive table: [^>]+ -->\n(?:\|.*\|[ \t]*\n)+")
 # A measured value: a decimal fraction (1.0013, 6.2e-10) or a time in ms; "1e6" or "n = 2–6"
 # in a descriptive table are not.
 MEASURED = re.compile(r"(?<![\w.])\d+\.\d+|\d\s*ms\b")
@@ -69,7 +72,7 @@ def test_the_pages_have_python_blocks():
 
 def test_every_block_has_a_known_language():
     unknown = [(_name(p), n, lang) for p, n, lang, _ in BLOCKS if lang not in LANGUAGES]
-    assert not unknown, f"fenced blocks must be python, text, bash or toml: {unknown}"
+    assert not unknown, f"fenced blocks must be one of {sorted(LANGUAGES)}: {unknown}"
 
 
 @pytest.mark.parametrize(
@@ -144,7 +147,7 @@ def test_toml_blocks_parse():
             tomllib.loads(code)
 
 
-LANGUAGES = {"python", "text", "bash", "toml"}
+LANGUAGES = {"python", "text", "bash", "toml", "{toctree}"}
 
 
 def _tables(text: str) -> list[str]:
@@ -156,7 +159,7 @@ def _tables(text: str) -> list[str]:
 def test_every_table_of_measured_numbers_is_generated(page):
     if page in OWN_TESTS:  # the tutorial's tables are its code's output, compared by its test
         return
-    outside = HEADLINE.sub("", BLOCK.sub("", page.read_text()))
+    outside = DESCRIPTIVE.sub("", HEADLINE.sub("", BLOCK.sub("", page.read_text())))
     typed = [t.splitlines()[0] for t in _tables(outside) if MEASURED.search(t)]
     assert not typed, (
         "tables with measured numbers outside a generated block (tests/doc_tables.py) "
@@ -182,6 +185,9 @@ def test_the_headline_markers_are_on_the_benchmark_page():
 def test_the_checks_catch_a_typed_table():
     typed = "| case | ratio |\n|---|---|\n| x | 1.0013 |\n"
     assert MEASURED.search(_tables(typed)[0])
+    marked = "<!-- descriptive table: settings -->\n" + typed
+    assert not _tables(DESCRIPTIVE.sub("", marked))
+    assert _tables(DESCRIPTIVE.sub("", "<!-- generated -->\n" + typed))  # only that marker
     assert not MEASURED.search("| n = 2–6 | condition number 1–1e6 |")  # ranges are not data
 
 

@@ -157,6 +157,20 @@ def bounding_update(
     ------
     ValueError
         Non-finite or mismatched inputs, V not SPD, unknown criterion, negative lambda.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid, analytic
+    >>> E = Ellipsoid(np.zeros(3), np.eye(3))
+    >>> u = analytic.bounding_update(E, H=[[1.0, 1.0, 0.0]], z=[0.5], V=[[0.04]])
+    >>> bool(u.ellipsoid.contains([0.25, 0.25, 0.0]))
+    True
     """
     if not isinstance(E, Ellipsoid):
         raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")

@@ -321,6 +321,8 @@ def sivia(
     --------
     >>> p = sivia(lambda x, y: (x**2 + y**2, 2 * x**2 + y**2),
     ...           [[-np.inf, 1], [1, np.inf]], [[-2.5, 2.5], [-2, 2]], 0.05)
-    >>> inner, outer = p.volume_bounds()   # inner <= pi (1 - 1/sqrt 2) <= outer
+    >>> inner, outer = p.volume_bounds()
+    >>> bool(inner <= np.pi * (1 - 1 / np.sqrt(2)) <= outer)
+    True
     """
     return pave(constraint(f, Y), X0, eps, ratio=ratio, max_boxes=max_boxes)

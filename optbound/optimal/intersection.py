@@ -277,6 +277,21 @@ def outer_ellipsoid(
     ValueError
         For bad arguments, or when no S-procedure certificate can exist (unbounded
         intersection, or one bounded by half-spaces only).
+
+    References
+    ----------
+    .. [BEFB94] S. Boyd, L. El Ghaoui, E. Feron, V. Balakrishnan, "Linear Matrix Inequalities
+       in System and Control Theory", SIAM, 1994, Sect. 3.7 (the S-procedure).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid, Strip, optimal
+    >>> r = optimal.outer_ellipsoid([Ellipsoid(np.zeros(2), np.eye(2)), Strip([2.0, 0.0], 0.0)])
+    >>> r.certified
+    True
+    >>> np.round(np.diag(r.ellipsoid.shape), 4)  # the optimum: diag(0.5, 1.5)
+    array([0.5, 1.5])
     """
     quadratics = lift(intersection, clip=clip, products=products)
     n, k = quadratics[0].dim, len(quadratics)
