@@ -218,3 +218,16 @@ def test_readme_starts_with_the_two_setup_commands_and_is_short():
         'pip install -e . && optbound bench\npip install -e ".[test]" && pytest\n',
     )
     assert "sphinx-build -W -b html docs docs/_build/html" in text
+
+
+def test_the_readme_links_and_picture_exist():
+    text = README.read_text()
+    links = re.findall(r"\]\(([^)#]+)(?:#[^)]*)?\)", text)
+    assert links and all((ROOT / link).is_file() for link in links), links
+    (picture,) = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", text)
+    spec = importlib.util.spec_from_file_location(
+        "report_figure", ROOT / "docs" / "report_figure.py"
+    )
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    assert script.FIGURE == ROOT / picture  # drawn by docs/report_figure.py, not by hand
