@@ -1,4 +1,4 @@
-"""The README table generator rewrites only its blocks, keeps their indentation, is idempotent."""
+"""The docs' table generator rewrites only its blocks, keeps their indentation, is idempotent."""
 
 import pytest
 

@@ -241,11 +241,11 @@ def outer_ellipsoid(
         [HS96, eq. (24)] family's optimum instead. ``"intersection"``: then to the exact
         extent of each normal over the first bounded member ∩ all the linear ranges (one
         certified SOCP, ``optbound.optimal.extents``); with many strips this is much tighter
-        (README, optimal section), and with one strip it is the same as ``"ellipsoids"``.
+        (``docs/user_guide/optimal.md``), and with one strip it is the same as ``"ellipsoids"``.
     products : bool
         Also impose the pair products of the (clipped) linear ranges, four per pair
         (``optbound.optimal.lift``): tighter for many strips, at ``2 r (r - 1)`` extra
-        multipliers for ``r`` ranges (README, optimal section, for the measured effect).
+        multipliers for ``r`` ranges (``docs/user_guide/optimal.md`` has the measured effect).
     solver : {"CLARABEL", "SCS"}
         Conic solver.
     lower_bound : bool
