@@ -31,6 +31,10 @@ exact.plot(ax=ax, show_outside=False)
 for (size, bound), color in zip(bounds.items(), ("C0", "C3"), strict=True):
     for k, line in enumerate(bound.boundary(X0=box)):
         ax.plot(*line.T, color=color, lw=2, label=f"L = {size}" if k == 0 else None)
+hull = exact.hull()
+pad = 0.6 * (hull.hi - hull.lo)
+ax.set_xlim(hull.lo[0] - pad[0], hull.hi[0] + pad[0])
+ax.set_ylim(hull.lo[1] - pad[1], hull.hi[1] + pad[1])
 ax.set_aspect("equal")
 ax.legend()
 ax.set_title("exact set (paving) and the two BH pseudo-ellipsoids")
