@@ -114,13 +114,20 @@ def api_pages(app) -> None:
     """Write ``api/generated/<module>.rst`` for every public module (see above)."""
     out = Path(app.srcdir) / "api" / "generated"
     out.mkdir(parents=True, exist_ok=True)
+    import importlib
+
     for name, subs in public_modules().items():
         lines = [name, "=" * len(name), "", f".. automodule:: {name}"]
+        module = importlib.import_module(name)
+        own = own_names(name) if subs else []
+        code = [a for a in own if callable(getattr(module, a))]  # functions and classes
         if not subs:
             lines.append("   :members:")
-        elif own_names(name):
-            lines.append(f"   :members: {', '.join(own_names(name))}")
+        elif code:
+            lines.append(f"   :members: {', '.join(code)}")
         lines.append("")
+        # Constants a package re-exports (autodoc documents module data only where assigned).
+        lines += [f".. autodata:: {name}.{a}\n   :no-value:\n" for a in own if a not in code]
         if subs:
             lines += [".. rubric:: Submodules", "", ".. toctree::", "   :maxdepth: 1", ""]
             lines += [f"   {sub}" for sub in subs]
