@@ -1,0 +1,276 @@
+"""Convex hulls of rational points in R^n (small n), exact: vertices, edges and volume.
+
+:func:`convex_hull` builds the *placing triangulation* of the points (Lee, *Regular
+triangulations of convex polytopes*, 1991; the beneath-beyond method of Edelsbrunner,
+*Algorithms in Combinatorial Geometry*, 1987, Sect. 8.4): starting from a simplex, each point
+strictly beyond some boundary facet is joined to the visible facets, and the horizon ridges
+(those of exactly one visible facet) spawn the new boundary facets. Every predicate is a sign
+of a ``fractions.Fraction`` expression, so the result is exact, degenerate inputs included
+(coplanar and repeated points, flat point sets: a set of affine dimension d < n is hulled in
+its own affine coordinates and has volume 0).
+
+From the triangulated boundary, oriented outward from an interior point ``o``:
+
+- the volume is ``sum_F |det(q_1 - o, ..., q_n - o)| / n!`` over the boundary simplices
+  ``F = (q_1, ..., q_n)`` (the cone decomposition, i.e. the divergence theorem);
+- a boundary point is a vertex iff the normals of the boundary simplices through it span R^n
+  (a point inside a face of dimension >= 1 has all its facet normals orthogonal to that face);
+- every edge of the polytope is a union of boundary-simplex edges, so those edges (a
+  superset) are all a hyperplane cut needs (:meth:`RationalPolytope.cut`).
+
+Cost: ``O(N F n^2)`` rational operations for N points and F boundary simplices; meant for
+n <= 4 and a few hundred points.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+from fractions import Fraction
+from itertools import combinations
+from math import factorial, lcm
+
+import numpy as np
+
+Point = tuple[Fraction, ...]
+
+
+def _sub(p, q) -> list:
+    return [a - b for a, b in zip(p, q, strict=True)]
+
+
+def dot(a, p):
+    """Exact ``a^T p`` (ints or Fractions)."""
+    return sum(x * y for x, y in zip(a, p, strict=True))
+
+
+def integer_determinant(M: list[list[int]]) -> int:
+    """Exact determinant of an integer matrix (Bareiss' fraction-free elimination)."""
+    a = [list(r) for r in M]
+    n, sign, prev = len(a), 1, 1
+    for k in range(n - 1):
+        p = next((i for i in range(k, n) if a[i][k] != 0), None)
+        if p is None:
+            return 0
+        if p != k:
+            a[k], a[p], sign = a[p], a[k], -sign
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                a[i][j] = (a[i][j] * a[k][k] - a[i][k] * a[k][j]) // prev
+        prev = a[k][k]
+    return sign * a[n - 1][n - 1] if n else 1
+
+
+def normal(vectors: list[list[int]]) -> list[int]:
+    """An integer vector orthogonal to n - 1 integer vectors of R^n (the generalized cross
+    product: entry i is the signed minor without column i; zero iff the vectors are
+    dependent)."""
+    n = len(vectors) + 1
+    return [
+        (-1) ** i * integer_determinant([[v[j] for j in range(n) if j != i] for v in vectors])
+        for i in range(n)
+    ]
+
+
+def integer_scaled(vectors) -> tuple[list[list[int]], int]:
+    """Rational vectors times the least common denominator D: ``(integer vectors, D)``."""
+    D = lcm(*(Fraction(x).denominator for v in vectors for x in v)) if vectors else 1
+    return [[int(Fraction(x) * D) for x in v] for v in vectors], D
+
+
+def _rank(rows: list[list[int]]) -> int:
+    """Exact rank of an integer matrix (fraction-free row echelon form)."""
+    rows = [list(r) for r in rows if any(r)]
+    rank, col, width = 0, 0, len(rows[0]) if rows else 0
+    while rows and col < width:
+        p = next((i for i, r in enumerate(rows) if r[col] != 0), None)
+        if p is None:
+            col += 1
+            continue
+        piv = rows.pop(p)
+        rows = [[piv[col] * x - r[col] * y for x, y in zip(r, piv, strict=True)] for r in rows]
+        rows = [r for r in rows if any(r)]
+        rank, col = rank + 1, col + 1
+    return rank
+
+
+def _affine_basis(points: list[list[int]]) -> list[int]:
+    """Indices of a maximal affinely independent subset (greedy, exact), first point first."""
+    basis: list[int] = [0]
+    kept: list[list[int]] = []
+    for k in range(1, len(points)):
+        d = _sub(points[k], points[0])
+        if _rank([*kept, d]) > len(kept):
+            kept.append(d)
+            basis.append(k)
+            if len(kept) == len(d):
+                break
+    return basis
+
+
+class _Placing:
+    """The boundary of the placing triangulation of full-dimensional integer points (module
+    docstring). ``o = S / (n + 1)``, S the sum of the first simplex, is interior; tests against
+    it are scaled by n + 1 to stay in integers."""
+
+    def __init__(self, points: list[list[int]], simplex: list[int]):
+        self.points = points
+        n = len(points[0])
+        self.S = [sum(points[i][j] for i in simplex) for j in range(n)]
+        self.facets: dict[frozenset[int], tuple[list[int], int]] = {}
+        for k in range(n + 1):
+            self._add(frozenset(simplex[:k] + simplex[k + 1 :]))
+        for i in range(len(points)):
+            if i not in simplex:
+                self._place(i)
+
+    def _add(self, facet: frozenset[int]) -> None:
+        q = [self.points[i] for i in sorted(facet)]
+        a = normal([_sub(p, q[0]) for p in q[1:]])
+        beta = dot(a, q[0])
+        if dot(a, self.S) > len(q[0]) * beta + beta:
+            a, beta = [-x for x in a], -beta
+        self.facets[facet] = (a, beta)
+
+    def _place(self, i: int) -> None:
+        p = self.points[i]
+        visible = [f for f, (a, beta) in self.facets.items() if dot(a, p) > beta]
+        if not visible:
+            return
+        ridges = Counter(r for f in visible for r in combinations(sorted(f), len(f) - 1))
+        for f in visible:
+            del self.facets[f]
+        for ridge, count in ridges.items():
+            if count == 1:
+                self._add(frozenset((*ridge, i)))
+
+
+@dataclass(frozen=True)
+class RationalPolytope:
+    """The convex hull of finitely many rational points of R^n, exact (module docstring).
+
+    Attributes
+    ----------
+    dim : int
+        Ambient dimension n.
+    vertices : tuple of tuple of Fraction
+        The extreme points, sorted (empty for the empty set).
+    edges : tuple of (Point, Point)
+        Pairs of hull points whose segments cover every edge of the polytope.
+    volume : Fraction
+        The exact n-dimensional volume (0 for a flat or empty set).
+    """
+
+    dim: int
+    vertices: tuple[Point, ...]
+    edges: tuple[tuple[Point, Point], ...]
+    volume: Fraction
+
+    @property
+    def is_empty(self) -> bool:
+        return not self.vertices
+
+    def as_array(self) -> np.ndarray:
+        """The vertices as floats (nearest), shape (V, n)."""
+        return np.array([[float(x) for x in p] for p in self.vertices]).reshape(-1, self.dim)
+
+    def volume_bounds(self) -> tuple[float, float]:
+        """``(lo, hi)`` floats with ``lo <= volume <= hi`` (the exact volume rounded outward)."""
+        f = float(self.volume)
+        lo = f if Fraction(f) <= self.volume else float(np.nextafter(f, -np.inf))
+        hi = f if Fraction(f) >= self.volume else float(np.nextafter(f, np.inf))
+        return lo, hi
+
+    def cut(self, a, beta: Fraction) -> RationalPolytope:
+        """``P ∩ {x : a^T x <= beta}``, exact: the hull of the vertices inside and of the
+        crossings of the edges with the hyperplane ``a^T x = beta``."""
+        f = {p: dot(a, p) - beta for p in {q for e in self.edges for q in e} | set(self.vertices)}
+        pts = [p for p in self.vertices if f[p] <= 0]
+        for p, q in self.edges:
+            if (f[p] < 0 < f[q]) or (f[q] < 0 < f[p]):
+                t = f[p] / (f[p] - f[q])
+                pts.append(tuple(x + t * (y - x) for x, y in zip(p, q, strict=True)))
+        return convex_hull(pts, self.dim)
+
+    def minkowski_segment(self, g) -> RationalPolytope:
+        """``P + {s g : |s| <= 1}``, exact (the hull of ``P - g`` and ``P + g``)."""
+        if not any(g):
+            return self
+        return convex_hull(
+            [
+                tuple(x + s * y for x, y in zip(p, g, strict=True))
+                for p in self.vertices
+                for s in (-1, 1)
+            ],
+            self.dim,
+        )
+
+
+def convex_hull(points, dim: int) -> RationalPolytope:
+    """The exact convex hull of rational (or float, read exactly) points in R^dim.
+
+    Parameters
+    ----------
+    points : iterable of sequences of length dim
+        Fractions, ints or floats (a float is the rational it denotes).
+    dim : int
+        The ambient dimension (needed for an empty input).
+
+    Returns
+    -------
+    RationalPolytope
+    """
+    pts = sorted({tuple(Fraction(x) for x in p) for p in points})
+    if any(len(p) != dim for p in pts):
+        raise ValueError(f"points must have {dim} coordinates each")
+    if not pts:
+        return RationalPolytope(dim, (), (), Fraction(0))
+    ints, D = integer_scaled(pts)
+    basis = _affine_basis(ints)
+    d = len(basis) - 1
+    if d == 0:
+        return RationalPolytope(dim, (pts[0],), (), Fraction(0))
+    if dim == 1:
+        return _segment(pts)
+    if d < dim:
+        return _flat_hull(pts, ints, basis, dim)
+    facets = _Placing(ints, basis).facets
+    S = [sum(ints[i][j] for i in basis) for j in range(dim)]
+    scaled = [[(dim + 1) * x for x in p] for p in ints]  # (n + 1) D p, and S = (n + 1) D o
+    cones = sum(abs(integer_determinant([_sub(scaled[i], S) for i in sorted(f)])) for f in facets)
+    volume = Fraction(cones, factorial(dim) * ((dim + 1) * D) ** dim)
+    normals: dict[int, list[list[int]]] = {}
+    for f, (a, _) in facets.items():
+        for i in f:
+            normals.setdefault(i, []).append(a)
+    vertices = tuple(sorted(pts[i] for i, rows in normals.items() if _rank(rows) == dim))
+    edges = {(pts[i], pts[j]) for f in facets for i, j in combinations(sorted(f), 2)}
+    return RationalPolytope(dim, vertices, tuple(sorted(edges)), volume)
+
+
+def _flat_hull(
+    pts: list[Point], ints: list[list[int]], basis: list[int], dim: int
+) -> RationalPolytope:
+    """The hull of points spanning an affine subspace of dimension d < dim: hulled in d
+    coordinates on which the spanning directions are independent (an exact projection,
+    one-to-one on the subspace), mapped back; volume 0."""
+    dirs = [_sub(ints[k], ints[0]) for k in basis[1:]]
+    rows: list[int] = []
+    for j in range(dim):
+        if _rank([[v[r] for r in [*rows, j]] for v in dirs]) > len(rows):
+            rows.append(j)
+    low = [tuple(p[j] for j in rows) for p in pts]
+    back = dict(zip(low, pts, strict=True))
+    sub = convex_hull(low, len(rows))
+    return RationalPolytope(
+        dim,
+        tuple(sorted(back[p] for p in sub.vertices)),
+        tuple(sorted((back[p], back[q]) for p, q in sub.edges)),
+        Fraction(0),
+    )
+
+
+def _segment(pts: list[Point]) -> RationalPolytope:
+    """The hull of distinct points on a line, in one coordinate."""
+    a, b = min(pts), max(pts)
+    return RationalPolytope(1, (a, b), ((a, b),), b[0] - a[0])
