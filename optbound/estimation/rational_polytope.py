@@ -35,10 +35,6 @@ import numpy as np
 Point = tuple[Fraction, ...]
 
 
-def _sub(p, q) -> list:
-    return [a - b for a, b in zip(p, q, strict=True)]
-
-
 def dot(a, p):
     """Exact ``a^T p`` (ints or Fractions)."""
     return sum(x * y for x, y in zip(a, p, strict=True))
@@ -72,10 +68,11 @@ def normal(vectors: list[list[int]]) -> list[int]:
     ]
 
 
-def integer_scaled(vectors) -> tuple[list[list[int]], int]:
-    """Rational vectors times the least common denominator D: ``(integer vectors, D)``."""
-    D = lcm(*(Fraction(x).denominator for v in vectors for x in v)) if vectors else 1
-    return [[int(Fraction(x) * D) for x in v] for v in vectors], D
+def homogeneous(p) -> list[int]:
+    """The rational point p as integers ``[d p_1, ..., d p_n, d]``, d > 0 the least common
+    denominator (a point's own scale: hulls of points with unrelated denominators stay small)."""
+    d = lcm(*(x.denominator for x in p))
+    return [int(x * d) for x in p] + [d]
 
 
 def _rank(rows: list[list[int]]) -> int:
@@ -94,47 +91,41 @@ def _rank(rows: list[list[int]]) -> int:
     return rank
 
 
-def _affine_basis(points: list[list[int]]) -> list[int]:
-    """Indices of a maximal affinely independent subset (greedy, exact), first point first."""
-    basis: list[int] = [0]
-    kept: list[list[int]] = []
-    for k in range(1, len(points)):
-        d = _sub(points[k], points[0])
-        if _rank([*kept, d]) > len(kept):
-            kept.append(d)
+def _independent(vectors: list[list[int]]) -> list[int]:
+    """Indices of a maximal linearly independent subset (greedy, exact), first vector first.
+
+    Points are affinely independent iff their homogeneous vectors are linearly independent."""
+    basis: list[int] = []
+    for k, v in enumerate(vectors):
+        if _rank([*(vectors[i] for i in basis), v]) > len(basis):
             basis.append(k)
-            if len(kept) == len(d):
+            if len(basis) == len(v):
                 break
     return basis
 
 
 class _Placing:
-    """The boundary of the placing triangulation of full-dimensional integer points (module
-    docstring). ``o = S / (n + 1)``, S the sum of the first simplex, is interior; tests against
-    it are scaled by n + 1 to stay in integers."""
+    """The boundary of the placing triangulation of full-dimensional points, in homogeneous
+    integer coordinates (module docstring). A facet is ``h`` with ``h^T X = 0`` at its points,
+    oriented so that ``h^T X_o < 0`` at the interior point X_o (the first simplex's centroid);
+    a point X is beyond it iff ``h^T X > 0``."""
 
-    def __init__(self, points: list[list[int]], simplex: list[int]):
-        self.points = points
-        n = len(points[0])
-        self.S = [sum(points[i][j] for i in simplex) for j in range(n)]
-        self.facets: dict[frozenset[int], tuple[list[int], int]] = {}
-        for k in range(n + 1):
+    def __init__(self, points: list[list[int]], simplex: list[int], interior: list[int]):
+        self.points, self.interior = points, interior
+        self.facets: dict[frozenset[int], list[int]] = {}
+        for k in range(len(simplex)):
             self._add(frozenset(simplex[:k] + simplex[k + 1 :]))
         for i in range(len(points)):
             if i not in simplex:
                 self._place(i)
 
     def _add(self, facet: frozenset[int]) -> None:
-        q = [self.points[i] for i in sorted(facet)]
-        a = normal([_sub(p, q[0]) for p in q[1:]])
-        beta = dot(a, q[0])
-        if dot(a, self.S) > len(q[0]) * beta + beta:
-            a, beta = [-x for x in a], -beta
-        self.facets[facet] = (a, beta)
+        h = normal([self.points[i] for i in sorted(facet)])
+        self.facets[facet] = [-x for x in h] if dot(h, self.interior) > 0 else h
 
     def _place(self, i: int) -> None:
         p = self.points[i]
-        visible = [f for f, (a, beta) in self.facets.items() if dot(a, p) > beta]
+        visible = [f for f, h in self.facets.items() if dot(h, p) > 0]
         if not visible:
             return
         ridges = Counter(r for f in visible for r in combinations(sorted(f), len(f) - 1))
@@ -225,39 +216,48 @@ def convex_hull(points, dim: int) -> RationalPolytope:
         raise ValueError(f"points must have {dim} coordinates each")
     if not pts:
         return RationalPolytope(dim, (), (), Fraction(0))
-    ints, D = integer_scaled(pts)
-    basis = _affine_basis(ints)
-    d = len(basis) - 1
-    if d == 0:
+    hom = [homogeneous(p) for p in pts]
+    basis = _independent(hom)
+    if len(basis) == 1:
         return RationalPolytope(dim, (pts[0],), (), Fraction(0))
     if dim == 1:
         return _segment(pts)
-    if d < dim:
-        return _flat_hull(pts, ints, basis, dim)
-    facets = _Placing(ints, basis).facets
-    S = [sum(ints[i][j] for i in basis) for j in range(dim)]
-    scaled = [[(dim + 1) * x for x in p] for p in ints]  # (n + 1) D p, and S = (n + 1) D o
-    cones = sum(abs(integer_determinant([_sub(scaled[i], S) for i in sorted(f)])) for f in facets)
-    volume = Fraction(cones, factorial(dim) * ((dim + 1) * D) ** dim)
+    if len(basis) <= dim:
+        return _flat_hull(pts, basis, dim)
+    o = tuple(sum(pts[i][j] for i in basis) / (dim + 1) for j in range(dim))
+    facets = _Placing(hom, basis, homogeneous(o)).facets
+    volume = sum(
+        (abs(_det_of_differences([pts[i] for i in sorted(f)], o)) for f in facets), Fraction(0)
+    ) / factorial(dim)
     normals: dict[int, list[list[int]]] = {}
-    for f, (a, _) in facets.items():
+    for f, h in facets.items():
         for i in f:
-            normals.setdefault(i, []).append(a)
+            normals.setdefault(i, []).append(h[:dim])
     vertices = tuple(sorted(pts[i] for i, rows in normals.items() if _rank(rows) == dim))
     edges = {(pts[i], pts[j]) for f in facets for i, j in combinations(sorted(f), 2)}
     return RationalPolytope(dim, vertices, tuple(sorted(edges)), volume)
 
 
-def _flat_hull(
-    pts: list[Point], ints: list[list[int]], basis: list[int], dim: int
-) -> RationalPolytope:
+def _det_of_differences(q: list[Point], o: Point) -> Fraction:
+    """Exact ``det(q_1 - o, ..., q_n - o)`` (each row scaled to integers, then unscaled)."""
+    rows, scale = [], 1
+    for p in q:
+        r = [x - y for x, y in zip(p, o, strict=True)]
+        d = lcm(*(x.denominator for x in r))
+        rows.append([int(x * d) for x in r])
+        scale *= d
+    return Fraction(integer_determinant(rows), scale)
+
+
+def _flat_hull(pts: list[Point], basis: list[int], dim: int) -> RationalPolytope:
     """The hull of points spanning an affine subspace of dimension d < dim: hulled in d
     coordinates on which the spanning directions are independent (an exact projection,
     one-to-one on the subspace), mapped back; volume 0."""
-    dirs = [_sub(ints[k], ints[0]) for k in basis[1:]]
+    dirs = [[x - y for x, y in zip(pts[k], pts[basis[0]], strict=True)] for k in basis[1:]]
     rows: list[int] = []
     for j in range(dim):
-        if _rank([[v[r] for r in [*rows, j]] for v in dirs]) > len(rows):
+        cols = [*rows, j]
+        if _rank([homogeneous([v[r] for r in cols])[:-1] for v in dirs]) > len(rows):
             rows.append(j)
     low = [tuple(p[j] for j in rows) for p in pts]
     back = dict(zip(low, pts, strict=True))
