@@ -38,7 +38,7 @@ Point = tuple[Fraction, ...]
 # Snapping thresholds of the certificate: parameters within 1 - eps of a bound are set on it.
 _SNAP = (1e-9, 1e-12, 0.0)
 # At most this many subsets of snapped parameters are freed per try.
-_MAX_SUBSETS = 64
+_MAX_SUBSETS = 512
 
 
 def _solve_consistent(M: list[list[Fraction]], e: list[Fraction]) -> list[Fraction] | None:
@@ -184,6 +184,17 @@ def _in_zonotope(Z: Zonotope, points: list[Point]) -> bool | None:
     return True if spans else None
 
 
+def max_level(E: Ellipsoid, points) -> Fraction:
+    """The largest ``(p - c)^T Q^{-1} (p - c)`` over the rational points, exact (``Q^{-1}``
+    inverted in rational arithmetic); ``<= 1`` iff every point lies in E."""
+    Q_inv, c = inverse(fractions(E.shape)), fractions(E.center)
+    worst = Fraction(0)
+    for p in points:
+        d = [Fraction(x) - y for x, y in zip(p, c, strict=True)]
+        worst = max(worst, dot(d, [dot(row, d) for row in Q_inv]))
+    return worst
+
+
 def proven_inside(outer, points) -> bool | None:
     """Whether every rational point lies in ``outer``, decided exactly (module docstring).
 
@@ -205,12 +216,7 @@ def proven_inside(outer, points) -> bool | None:
         lo, hi = fractions(outer.lo), fractions(outer.hi)
         return all(a <= x <= b for p in pts for a, x, b in zip(lo, p, hi, strict=True))
     if isinstance(outer, Ellipsoid):
-        Q_inv, c = inverse(fractions(outer.shape)), fractions(outer.center)
-        for p in pts:
-            d = [x - y for x, y in zip(p, c, strict=True)]
-            if dot(d, [dot(row, d) for row in Q_inv]) > 1:
-                return False
-        return True
+        return max_level(outer, pts) <= 1
     if isinstance(outer, Zonotope):
         return _in_zonotope(outer, pts)
     if isinstance(outer, ConstrainedZonotope):
