@@ -97,14 +97,41 @@ def _pivot_order(Mf: np.ndarray, cols: list[int], weights: np.ndarray) -> list[i
     return [cols[k] for k in perm]
 
 
-def _repair(M, Mf: np.ndarray, r, xi0: np.ndarray, eps: float) -> list[Fraction] | None:
+def _direction_columns(
+    Mf: np.ndarray, e: np.ndarray, signs: np.ndarray, near: list[int]
+) -> list[int] | None:
+    """The support of a least-``l_1`` direction ``d`` with ``M d = e / |e|`` that moves no
+    snapped parameter outward (``sign_j d_j <= 0``), by a float LP (HiGHS), or None."""
+    from scipy.optimize import linprog
+
+    m = Mf.shape[1]
+    up = [(0.0, 0.0) if j in near and signs[j] > 0 else (0.0, None) for j in range(m)]
+    down = [(0.0, 0.0) if j in near and signs[j] < 0 else (0.0, None) for j in range(m)]
+    res = linprog(
+        np.ones(2 * m),
+        A_eq=np.hstack([Mf, -Mf]),
+        b_eq=e / np.max(np.abs(e)),
+        bounds=up + down,
+        method="highs",
+    )
+    if res.status != 0:
+        return None
+    d = res.x[:m] - res.x[m:]
+    return [j for j in np.argsort(-np.abs(d), kind="stable") if abs(d[j]) > 1e-9]
+
+
+def _repair(
+    M, Mf: np.ndarray, r, xi0: np.ndarray, eps: float, subsets: bool
+) -> list[Fraction] | None:
     """``xi0`` with the parameters within ``1 - eps`` of a bound set on it, corrected exactly
     to ``M xi = r``; the result if it satisfies ``|xi| <= 1``, else None.
 
-    The correction moves the parameters off the bounds, pivoting on well-conditioned ones far
-    from the bounds first (:func:`_pivot_order`), plus, if they cannot absorb the residual,
-    subsets of the snapped ones (of increasing size, at most ``_MAX_SUBSETS`` tries): a
-    parameter the float LP put on a bound may lie just inside it in the exact solution.
+    The correction is solved exactly on a set of columns: the support of a float direction
+    that moves no snapped parameter outward (:func:`_direction_columns`), or (``subsets``,
+    the fallback) the parameters off the bounds (well-conditioned, far from the bounds first,
+    :func:`_pivot_order`) with subsets of the snapped ones of increasing size (at most
+    ``_MAX_SUBSETS``): a parameter the float LP put on a bound may lie just inside it in the
+    exact solution.
     """
     slack = 1.0 - np.abs(xi0)
     near = [j for j in range(len(xi0)) if slack[j] <= eps]
@@ -114,22 +141,31 @@ def _repair(M, Mf: np.ndarray, r, xi0: np.ndarray, eps: float) -> list[Fraction]
         for j in range(len(xi0))
     ]
     e = [ri - dot(row, xi) for row, ri in zip(M, r, strict=True)]
+    if not any(e):
+        return xi if all(abs(x) <= 1 for x in xi) else None
     e_float = np.array([float(x) for x in e])
-    xi_float = np.array([float(x) for x in xi])
+    signs = np.sign(xi0)
     rank = np.linalg.matrix_rank(Mf)
-    subsets = (P for k in range(len(near) + 1) for P in combinations(near, k))
-    for P in islice(subsets, _MAX_SUBSETS):
-        cols = free + list(P)
-        if len(cols) < rank:
-            continue
-        weights = np.array([max(slack[j], 0.0) if j in free else 1e-6 for j in cols])
-        basis = _pivot_order(Mf, cols, weights)[:rank]
+
+    def bases():
+        if not subsets:
+            support = _direction_columns(Mf, e_float, signs, near) if np.any(e_float) else None
+            if support is not None:
+                yield support
+            return
+        snapped = (P for k in range(len(near) + 1) for P in combinations(near, k))
+        for P in islice(snapped, _MAX_SUBSETS):
+            cols = free + list(P)
+            if len(cols) >= rank:
+                weights = np.array([max(slack[j], 0.0) if j in free else 1e-6 for j in cols])
+                yield _pivot_order(Mf, cols, weights)[:rank]
+
+    xi_float = np.array([float(x) for x in xi])
+    for basis in bases():
         d_float = np.linalg.lstsq(Mf[:, basis], e_float, rcond=None)[0]
-        outward = d_float * np.sign(xi_float[basis])
-        if np.any(np.abs(xi_float[basis] + d_float) > 1.0) or np.any(
-            outward[[j in near for j in basis]] > 1e-20
-        ):  # a float preview: the snapped parameters must not move outward
-            continue
+        outward = (d_float * signs[basis])[[j in near for j in basis]]
+        if np.any(np.abs(xi_float[basis] + d_float) > 1.0) or np.any(outward > 1e-20):
+            continue  # a float preview: no parameter may leave [-1, 1]
         d = _solve_consistent([[row[j] for j in basis] for row in M], e)
         if d is None:
             continue
@@ -149,9 +185,9 @@ def parameter_certificate(Z: ConstrainedZonotope, p) -> list[Fraction] | None:
     Float parameters (a basic feasible point of the LP ``|xi| <= 1, G xi = p - c, A xi = b``
     and the minimiser of ``|xi|_inf``, HiGHS) are repaired in rational arithmetic: parameters
     within ``1 - eps`` of a bound are set on it, and the residual of the equalities is removed
-    by an exact solve, pivoting on the parameters farthest from the bounds first. A result is
-    accepted only if every ``|xi_i| <= 1`` and both equalities hold exactly (tried for eps in
-    1e-9, 1e-12, 0). Cost: two LPs and a few exact ``(n + nc) x m`` eliminations.
+    by an exact solve on chosen columns (:func:`_repair`). A result is accepted only if every
+    ``|xi_i| <= 1`` and both equalities hold exactly (tried for eps in 1e-9, 1e-12, 0). Cost:
+    a few float LPs and, typically, one exact ``(n + nc) x (n + nc)`` elimination.
     """
     p = [Fraction(x) for x in p]
     r = [x - y for x, y in zip(p, fractions(Z.center), strict=True)] + fractions(Z.b)
@@ -159,11 +195,13 @@ def parameter_certificate(Z: ConstrainedZonotope, p) -> list[Fraction] | None:
         return [] if not any(r) else None
     Mf = np.vstack([Z.generators, Z.A])
     M = fractions(Mf)
-    for xi0 in _float_parameters(Z, np.array([float(x) for x in p])):
-        for eps in _SNAP:
-            xi = _repair(M, Mf, r, xi0[: Z.n_generators], eps)
-            if xi is not None:
-                return xi
+    candidates = _float_parameters(Z, np.array([float(x) for x in p]))
+    for subsets in (False, True):
+        for xi0 in candidates:
+            for eps in _SNAP:
+                xi = _repair(M, Mf, r, xi0[: Z.n_generators], eps, subsets)
+                if xi is not None:
+                    return xi
     return None
 
 
