@@ -25,14 +25,19 @@ n <= 4 and a few hundred points.
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import cached_property
 from itertools import combinations
 from math import factorial, lcm
 
 import numpy as np
 
 Point = tuple[Fraction, ...]
+
+# The float filter's relative and absolute error bounds (see _Placing).
+_FILTER = 1e-12
+_TINY = 1e-280
 
 
 def dot(a, p):
@@ -108,29 +113,62 @@ class _Placing:
     """The boundary of the placing triangulation of full-dimensional points, in homogeneous
     integer coordinates (module docstring). A facet is ``h`` with ``h^T X = 0`` at its points,
     oriented so that ``h^T X_o < 0`` at the interior point X_o (the first simplex's centroid);
-    a point X is beyond it iff ``h^T X > 0``."""
+    a point X is beyond it iff ``h^T X > 0``.
 
-    def __init__(self, points: list[list[int]], simplex: list[int], interior: list[int]):
-        self.points, self.interior = points, interior
-        self.facets: dict[frozenset[int], list[int]] = {}
+    A floating-point filter decides most of these signs: with ``h / max|h|`` and the point
+    rounded to floats, ``s = h^T x`` is within ``_FILTER * sum |h_i x_i|`` (far above the
+    rounding error of 2n + 4 roundings) of the exact value scaled alike, so ``|s|`` above that
+    bound fixes the sign; only the others are computed in integers.
+    """
+
+    def __init__(self, points: list[list[int]], approx: np.ndarray, simplex: list[int], interior):
+        self.points, self.approx, self.interior = points, approx, interior
+        self.keys: list[frozenset[int]] = []
+        self.exact: list[list[int]] = []
+        self.floats = np.zeros((16, approx.shape[1]))
+        self.alive = np.zeros(16, dtype=bool)
         for k in range(len(simplex)):
             self._add(frozenset(simplex[:k] + simplex[k + 1 :]))
-        for i in range(len(points)):
+        spread = np.linalg.norm(approx - approx.mean(axis=0), axis=1)
+        for i in np.argsort(-spread, kind="stable"):  # far points first: fewer passing facets
             if i not in simplex:
-                self._place(i)
+                self._place(int(i))
+
+    @property
+    def facets(self) -> dict[frozenset[int], list[int]]:
+        return {self.keys[k]: self.exact[k] for k in np.flatnonzero(self.alive)}
 
     def _add(self, facet: frozenset[int]) -> None:
         h = normal([self.points[i] for i in sorted(facet)])
-        self.facets[facet] = [-x for x in h] if dot(h, self.interior) > 0 else h
+        if dot(h, self.interior) > 0:
+            h = [-x for x in h]
+        k = len(self.keys)
+        if k == len(self.alive):
+            self.floats = np.vstack([self.floats, np.zeros_like(self.floats)])
+            self.alive = np.concatenate([self.alive, np.zeros_like(self.alive)])
+        top = max(abs(x) for x in h)
+        self.floats[k] = [x / top for x in h]
+        self.alive[k] = True
+        self.keys.append(facet)
+        self.exact.append(h)
 
     def _place(self, i: int) -> None:
+        k = len(self.keys)
+        H, x = self.floats[:k], self.approx[i]
+        s = H @ x
+        bound = _FILTER * (np.abs(H) @ np.abs(x)) + _TINY
         p = self.points[i]
-        visible = [f for f, h in self.facets.items() if dot(h, p) > 0]
+        visible = [
+            f
+            for f in np.flatnonzero(self.alive[:k] & (s > -bound))
+            if s[f] > bound[f] or dot(self.exact[f], p) > 0
+        ]
         if not visible:
             return
-        ridges = Counter(r for f in visible for r in combinations(sorted(f), len(f) - 1))
-        for f in visible:
-            del self.facets[f]
+        ridges = Counter(
+            r for f in visible for r in combinations(sorted(self.keys[f]), len(self.keys[f]) - 1)
+        )
+        self.alive[visible] = False
         for ridge, count in ridges.items():
             if count == 1:
                 self._add(frozenset((*ridge, i)))
@@ -149,13 +187,24 @@ class RationalPolytope:
     edges : tuple of (Point, Point)
         Pairs of hull points whose segments cover every edge of the polytope.
     volume : Fraction
-        The exact n-dimensional volume (0 for a flat or empty set).
+        The exact n-dimensional volume (0 for a flat or empty set), computed on first use
+        from the boundary simplices and the interior point (the cone formula).
     """
 
     dim: int
     vertices: tuple[Point, ...]
     edges: tuple[tuple[Point, Point], ...]
-    volume: Fraction
+    simplices: tuple[tuple[Point, ...], ...] = field(default=(), repr=False)
+    interior: Point | None = field(default=None, repr=False)
+
+    @cached_property
+    def volume(self) -> Fraction:
+        if self.interior is not None:
+            cones = (abs(_det_of_differences(list(q), self.interior)) for q in self.simplices)
+            return sum(cones, Fraction(0)) / factorial(self.dim)
+        if self.dim == 1 and len(self.vertices) == 2:  # a segment of the line
+            return self.vertices[1][0] - self.vertices[0][0]
+        return Fraction(0)  # flat, a point or empty
 
     @property
     def is_empty(self) -> bool:
@@ -215,27 +264,26 @@ def convex_hull(points, dim: int) -> RationalPolytope:
     if any(len(p) != dim for p in pts):
         raise ValueError(f"points must have {dim} coordinates each")
     if not pts:
-        return RationalPolytope(dim, (), (), Fraction(0))
+        return RationalPolytope(dim, (), ())
     hom = [homogeneous(p) for p in pts]
     basis = _independent(hom)
     if len(basis) == 1:
-        return RationalPolytope(dim, (pts[0],), (), Fraction(0))
+        return RationalPolytope(dim, (pts[0],), ())
     if dim == 1:
         return _segment(pts)
     if len(basis) <= dim:
         return _flat_hull(pts, basis, dim)
     o = tuple(sum(pts[i][j] for i in basis) / (dim + 1) for j in range(dim))
-    facets = _Placing(hom, basis, homogeneous(o)).facets
-    volume = sum(
-        (abs(_det_of_differences([pts[i] for i in sorted(f)], o)) for f in facets), Fraction(0)
-    ) / factorial(dim)
+    approx = np.array([[float(x) for x in p] + [1.0] for p in pts])
+    facets = _Placing(hom, approx, basis, homogeneous(o)).facets
     normals: dict[int, list[list[int]]] = {}
     for f, h in facets.items():
         for i in f:
             normals.setdefault(i, []).append(h[:dim])
     vertices = tuple(sorted(pts[i] for i, rows in normals.items() if _rank(rows) == dim))
     edges = {(pts[i], pts[j]) for f in facets for i, j in combinations(sorted(f), 2)}
-    return RationalPolytope(dim, vertices, tuple(sorted(edges)), volume)
+    simplices = tuple(tuple(pts[i] for i in sorted(f)) for f in facets)
+    return RationalPolytope(dim, vertices, tuple(sorted(edges)), simplices, o)
 
 
 def _det_of_differences(q: list[Point], o: Point) -> Fraction:
@@ -266,11 +314,10 @@ def _flat_hull(pts: list[Point], basis: list[int], dim: int) -> RationalPolytope
         dim,
         tuple(sorted(back[p] for p in sub.vertices)),
         tuple(sorted((back[p], back[q]) for p, q in sub.edges)),
-        Fraction(0),
     )
 
 
 def _segment(pts: list[Point]) -> RationalPolytope:
     """The hull of distinct points on a line, in one coordinate."""
     a, b = min(pts), max(pts)
-    return RationalPolytope(1, (a, b), ((a, b),), b[0] - a[0])
+    return RationalPolytope(1, (a, b), ((a, b),))
