@@ -7,7 +7,8 @@ the polygon is clipped by the two lines of each output row (``y_i - hi_i <= c_i^
 lo_i``, ``[lo_i, hi_i]`` the interval hull of V's i-th coordinate, exact for a box V). The
 vertices, the area and any membership test on them are therefore exact; this is the
 reference against which containment is *proven* (:func:`optbound.estimation.references.
-proven_contains`). Limited to n = 2 and box V (or p = 1 zonotope V, whose interval is exact).
+proven_contains`). Limited to n = 2 and box V (or p = 1 zonotope V, whose interval is exact);
+:mod:`optbound.estimation.exact_polytope` computes the same sets (tested equal) for n <= 4.
 """
 
 from __future__ import annotations
