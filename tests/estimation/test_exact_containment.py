@@ -16,7 +16,7 @@ from optbound import estimation as est
 from optbound.estimation import references as ref
 from optbound.estimation.exact_membership import max_level, parameter_certificate
 from optbound.estimation.rational_polytope import convex_hull
-from tests.estimation.test_exact_polytope import three_d
+from tests.estimation.test_exact_polytope import box_system
 from tests.estimation.test_observers import box_noise
 from tests.sets import exact_polytopes as X
 
@@ -39,7 +39,7 @@ def _certified(Z: ConstrainedZonotope, p) -> bool:
 @pytest.mark.parametrize("case", ["2d-2", "3d"])
 def test_every_method_contains_the_exact_set_at_every_step(case):
     if case == "3d":
-        system, X0, ys = three_d(steps=2)
+        system, X0, ys = box_system(3, steps=2)
     else:
         system, X0, _, ys = box_noise(int(case[-1]))
     exact = est.exact_polytopes(system, X0, ys)
@@ -51,7 +51,7 @@ def test_every_method_contains_the_exact_set_at_every_step(case):
 
 
 def test_refutations_and_undecided():
-    system, X0, ys = three_d(steps=1)
+    system, X0, ys = box_system(3, steps=1)
     P = est.exact_polytopes(system, X0, ys)[0]
     E = est.observe(system, X0, ys, method="ellipsoid_volume")[0]
     assert ref.proven_contains(E.scaled(0.9), P.vertices) is False
@@ -89,7 +89,7 @@ def test_mvee_of_the_cube_is_the_circumscribed_ball(n):
 
 
 def test_exact_mvee_bounds_the_ellipsoidal_observers():
-    system, X0, ys = three_d(steps=2)
+    system, X0, ys = box_system(3, steps=2)
     P = est.exact_polytopes(system, X0, ys)[-1]
     M = ref.polytope_mvee(P)
     assert M.certified and max_level(M.ellipsoid, P.vertices) <= 1

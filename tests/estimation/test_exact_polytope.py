@@ -94,15 +94,16 @@ def test_two_d_is_the_exact_polygon(seed):
         assert P.volume == area(Q) == X.area(R)
 
 
-def three_d(seed: int = 0, steps: int = 2):
-    """A random stable 3-D system with box noise, one output, simulated measurements."""
+def box_system(n: int = 3, steps: int = 2, seed: int = 0):
+    """A random stable n-D system with box noise, one output, simulated measurements."""
     rng = np.random.default_rng(seed)
-    A = rng.normal(size=(3, 3))
+    A = rng.normal(size=(n, n))
     A *= 0.9 / max(abs(np.linalg.eigvals(A)))
-    C = rng.normal(size=3)
-    W, V = Box([-0.1, -0.05, -0.1], [0.1, 0.05, 0.1]), Box([-0.2], [0.1])
-    X0 = Box([-1.0] * 3, [1.0] * 3)
-    x, ys = rng.uniform(-1, 1, 3), []
+    C = rng.normal(size=n)
+    half = [0.1, 0.05, 0.1, 0.05][:n]
+    W, V = Box([-h for h in half], half), Box([-0.2], [0.1])
+    X0 = Box([-1.0] * n, [1.0] * n)
+    x, ys = rng.uniform(-1, 1, n), []
     for _ in range(steps):
         x = A @ x + rng.uniform(W.lo, W.hi)
         ys.append(float(C @ x + rng.uniform(V.lo, V.hi)[0]))
@@ -117,7 +118,7 @@ def parameter_oracle(system, X0, ys):
     lo, hi = F(float(system.V.lo[0])), F(float(system.V.hi[0]))
     n = len(A)
     center = [F(0)] * n
-    G = [[F(int(i == j)) for j in range(n)] for i in range(n)]  # X0 = [-1, 1]^3
+    G = [[F(int(i == j)) for j in range(n)] for i in range(n)]  # X0 = [-1, 1]^n
     w = X.exact(system.W.widths / 2)
     rows, rhs, out = [], [], []
     for y in ys:
@@ -135,21 +136,25 @@ def parameter_oracle(system, X0, ys):
 
 
 @pytest.mark.parametrize(
-    "steps",
-    [1, pytest.param(2, marks=pytest.mark.slow)],  # the oracle's enumeration: 18 s
+    ("n", "steps"),
+    [  # slow: 9 s (the 4-D hulls) and 18 s (the oracle's enumeration)
+        (3, 1),
+        pytest.param(4, 1, marks=pytest.mark.slow),
+        pytest.param(3, 2, marks=pytest.mark.slow),
+    ],
 )
-def test_three_d_exact_sets_match_the_parameter_oracle(steps):
-    system, X0, ys = three_d(steps=steps)
+def test_exact_sets_match_the_parameter_oracle(n, steps):
+    system, X0, ys = box_system(n, steps)
     for P, pts in zip(
         est.exact_polytopes(system, X0, ys), parameter_oracle(system, X0, ys), strict=True
     ):
         assert set(P.vertices) <= set(pts)  # every vertex is an exact point of the set
-        assert sorted(convex_hull(pts, 3).vertices) == sorted(P.vertices)
+        assert sorted(convex_hull(pts, n).vertices) == sorted(P.vertices)
         assert P.volume > 0
 
 
 def test_bad_input_is_refused():
-    system, X0, ys = three_d(steps=1)
+    system, X0, ys = box_system(3, steps=1)
     with pytest.raises(TypeError, match="X0 must be a Box or Zonotope of dimension 3"):
         est.exact_polytopes(system, Ellipsoid(np.zeros(3), np.eye(3)), ys)
     big = est.LinearSystem(np.eye(5), np.ones(5), Box([-1.0] * 5, [1.0] * 5), Box([-1.0], [1.0]))
