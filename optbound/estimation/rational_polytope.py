@@ -30,6 +30,7 @@ from fractions import Fraction
 from functools import cached_property
 from itertools import combinations
 from math import factorial, lcm
+from operator import mul
 
 import numpy as np
 
@@ -41,8 +42,8 @@ _TINY = 1e-280
 
 
 def dot(a, p):
-    """Exact ``a^T p`` (ints or Fractions)."""
-    return sum(x * y for x, y in zip(a, p, strict=True))
+    """Exact ``a^T p`` (ints or Fractions of equal length)."""
+    return sum(map(mul, a, p))
 
 
 def integer_determinant(M: list[list[int]]) -> int:
