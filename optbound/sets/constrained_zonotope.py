@@ -412,12 +412,27 @@ class ConstrainedZonotope(ConvexSet):
         the LP tolerance). An edge that did not move is never asked again, so the cost is
         about two LPs per vertex.
         """
+        return self._vertex_search()[0]
+
+    def _vertex_search(self) -> tuple[np.ndarray, list[np.ndarray]]:
+        """:meth:`vertices` and, per vertex, the LP solution ``xi`` it came from (a point
+        of the set up to the LP tolerance; the certified inner polygon starts from them)."""
         if self.dim != 2:
             raise ValueError(f"vertices() is for 2-D sets, this one has dim {self.dim}")
+        xis: dict[tuple, np.ndarray] = {}  # the rounded point (as _ccw_unique rounds) -> xi
+
+        def support_point(d: np.ndarray) -> np.ndarray | None:
+            xi = self._support_xi(d)
+            if xi is None:
+                return None
+            point = self._c + self._G @ xi
+            xis[tuple(np.round(point, 12))] = xi
+            return point
+
         angles = np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False)
-        pts = [self._support_point(np.array([np.cos(t), np.sin(t)])) for t in angles]
+        pts = [support_point(np.array([np.cos(t), np.sin(t)])) for t in angles]
         if any(p is None for p in pts):
-            return np.zeros((0, 2))
+            return np.zeros((0, 2)), []
         poly = _ccw_unique(np.array(pts))
         scale = 1e-9 * max(1.0, float(np.abs(self._G).sum() + np.abs(self._c).sum()))
         final: set[tuple] = set()  # edges (p, q) whose outward support point is on them
@@ -428,8 +443,8 @@ class ConstrainedZonotope(ConvexSet):
                 edge = (*p, *q)
                 normal = np.array([q[1] - p[1], p[0] - q[0]])
                 if edge not in final and np.any(normal != 0):
-                    s = self._support_point(normal)
-                    if normal @ (s - p) > scale * np.linalg.norm(normal):
+                    s = support_point(normal)
+                    if s is not None and normal @ (s - p) > scale * np.linalg.norm(normal):
                         out.append(s)
                         grown = True
                     else:
@@ -438,11 +453,7 @@ class ConstrainedZonotope(ConvexSet):
             poly = _ccw_unique(np.array(out[:-1]))
             if not grown:
                 break
-        return poly
-
-    def _support_point(self, d: np.ndarray) -> np.ndarray | None:
-        xi = self._support_xi(d)
-        return None if xi is None else self._c + self._G @ xi
+        return poly, [xis[key] for p in poly if (key := tuple(p)) in xis]
 
     def _support_xi(self, d: np.ndarray) -> np.ndarray | None:
         """The LP's ``xi`` maximising ``d^T G xi`` (float, not certified); None if it fails."""

@@ -9,8 +9,8 @@ proven, so two proven ones are built around it:
   polygon's edge normals and ``h_i`` the certified support values
   (:meth:`ConstrainedZonotope.support`, LP duals checked with outward rounding); the bounding
   box is clipped by each edge half-plane in exact rational arithmetic;
-- **inner**: the convex hull of points *proven* in the set: for each vertex, the LP's
-  ``xi`` along the vertex's bisecting direction is made to satisfy ``A xi = b`` exactly
+- **inner**: the convex hull of points *proven* in the set: each support LP's solution
+  ``xi`` of the vertex search is made to satisfy ``A xi = b`` exactly
   (``xi + A^T (A A^T)^{-1} (b - A xi)`` in ``Fraction``), then pulled towards an interior
   ``xi_0`` (the least-infinity-norm solution, repaired the same way) until ``|xi| <= 1``
   holds exactly; the point ``c + G xi`` is then in the set with every float read as exact.
@@ -136,7 +136,7 @@ def certified_polygons(cz) -> CertifiedPolygons:
     """
     if cz.dim != 2:
         raise ValueError(f"certified polygons are for 2-D sets, got dimension {cz.dim}")
-    V = cz.vertices()
+    V, xis = cz._vertex_search()
     if len(V) < 3:
         raise ValueError("the set is flat or empty: it has no polygon")
     edges = np.array(
@@ -153,7 +153,7 @@ def certified_polygons(cz) -> CertifiedPolygons:
     outer = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
     for (a, b), hk in zip(edges, h[4:], strict=True):
         outer = _clip(outer, Fraction(float(a)), Fraction(float(b)), Fraction(float(hk)))
-    return CertifiedPolygons(_inner(cz, V, edges), outer, normals, h)
+    return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
 
 
 def _clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
@@ -170,8 +170,8 @@ def _clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
     return out
 
 
-def _inner(cz, V: np.ndarray, normals: np.ndarray) -> list[Point]:
-    """Points proven in ``cz``, near the vertices ``V`` (module docstring); their hull."""
+def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
+    """Points proven in ``cz`` from the LP solutions ``xis`` (module docstring); their hull."""
     from scipy.optimize import linprog
 
     A = [[Fraction(float(x)) for x in row] for row in cz.A]
@@ -195,13 +195,7 @@ def _inner(cz, V: np.ndarray, normals: np.ndarray) -> list[Point]:
     c = [Fraction(float(x)) for x in cz.center]
     G = [[Fraction(float(x)) for x in row] for row in cz.generators]
     points = []
-    for k in range(len(V)):
-        d = normals[k - 1] / np.linalg.norm(normals[k - 1]) + normals[k] / np.linalg.norm(
-            normals[k]
-        )
-        xi = cz._support_xi(d)
-        if xi is None:
-            continue
+    for xi in xis:
         xi = _repair(A, b, xi)
         if xi is None:
             continue
