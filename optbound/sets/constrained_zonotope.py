@@ -363,15 +363,18 @@ class ConstrainedZonotope(ConvexSet):
         return Z
 
     def _pivot(self) -> tuple[int, int] | None:
+        """The pair (i, j) of :meth:`eliminate_constraints` (vectorised; ties: larger
+        ``|a_ij|``, then the first in row-major order), None if ``A`` is all zero."""
         A, b = np.abs(self._A), np.abs(self._b)
+        rows, cols = np.nonzero(A)
+        if rows.size == 0:
+            return None
         G = np.linalg.norm(np.vstack([self._G, self._A]), axis=0)
-        best, key = None, None
-        for i, j in zip(*np.nonzero(A), strict=True):
-            rho = (b[i] + A[i].sum() - A[i, j]) / A[i, j]
-            k = (G[j] * max(0.0, rho - 1.0), -A[i, j])
-            if key is None or k < key:
-                best, key = (int(i), int(j)), k
-        return best
+        a = A[rows, cols]
+        rho = (b[rows] + A.sum(axis=1)[rows] - a) / a
+        cost = G[cols] * np.maximum(0.0, rho - 1.0)
+        best = np.lexsort((np.arange(rows.size), -a, cost))[0]
+        return int(rows[best]), int(cols[best])
 
     def _eliminate_one(self) -> ConstrainedZonotope:
         pivot = self._pivot()
