@@ -89,7 +89,10 @@ def matmul(M, X) -> Interval:
     if rM is not None:
         rad = rad + (1.0 + g) * (rM @ (aX if rX is None else aX + rX))
     rad = np.nextafter(rad * (1.0 + 4.0 * _U), np.inf) + (q + 2) * _TINY
-    return Interval(np.nextafter(C - rad, -np.inf), np.nextafter(C + rad, np.inf))
+    lo, hi = np.nextafter(C - rad, -np.inf), np.nextafter(C + rad, np.inf)
+    if np.isnan(lo).any() or np.isnan(hi).any():
+        raise ValueError("the product overflowed (its enclosure has NaN bounds)")
+    return Interval._make(lo, hi)  # lo <= hi, no NaN: checked above
 
 
 def magnitude(iv: Interval) -> np.ndarray:
@@ -252,8 +255,9 @@ def compact(G: np.ndarray, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     rows = np.argmax(nonzero, axis=0)
     drop = counts == 0
     merged = []
-    for i in range(L.shape[0]):
-        cols = np.flatnonzero((counts == 1) & (rows == i))
+    single = counts == 1
+    for i in np.flatnonzero(np.bincount(rows[single], minlength=L.shape[0]) >= 2):
+        cols = np.flatnonzero(single & (rows == i))
         if cols.size >= 2:
             merged.append((cols[0], float(row_sum_up(np.abs(L[i, cols])[None, :])[0])))
             drop[cols[1:]] = True
