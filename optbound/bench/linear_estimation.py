@@ -288,7 +288,7 @@ def cost(task: dict) -> float:
     """Rough seconds of a task (2-core VM): the tank's constrained zonotopes and zonotopes
     dominate the full suite."""
     if task["system"] == "tank":
-        return 400.0
+        return 120.0
     return 0.1 * task["steps"] * task["n"]
 
 
