@@ -37,7 +37,6 @@ from __future__ import annotations
 import base64
 import io
 import time
-from fractions import Fraction
 
 import numpy as np
 
@@ -154,21 +153,6 @@ def _box_noise(system) -> bool:
     return not isinstance(system.W, Ellipsoid) and not isinstance(system.V, Ellipsoid)
 
 
-def _down(x: Fraction) -> float:
-    f = float(x)
-    return f if Fraction(f) <= x else float(np.nextafter(f, -np.inf))
-
-
-def _up(x: Fraction) -> float:
-    f = float(x)
-    return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
-
-
-def _area(P) -> Fraction:
-    n = len(P)
-    return abs(sum(P[i][0] * P[(i + 1) % n][1] - P[(i + 1) % n][0] * P[i][1] for i in range(n))) / 2
-
-
 def _polygon_measures(system, X0, ys, runs: dict, ks: list[int]):
     """2-D, box noise: area ratios to the exact polygon and its MVEE, exact containment."""
     from optbound import optimal
@@ -177,13 +161,14 @@ def _polygon_measures(system, X0, ys, runs: dict, ks: list[int]):
     from optbound.estimation.exact_polygon import exact_polygons
     from optbound.estimation.references import proven_contains
     from optbound.problems.linear_estimation import outward_hull
+    from optbound.sets.constrained_zonotope_polygon import polygon_area, round_down, round_up
 
     polygons = exact_polygons(system, X0, ys)
     out: dict = {m: {} for m in runs}
     for k in ks:
         P = polygons[k - 1]
-        area = _area(P)
-        exact = (_down(area), _up(area))
+        area = polygon_area(P)
+        exact = (round_down(area), round_up(area))
         mvee = ellipsoid_volume_bracket(optimal.mvee(np.array(P, dtype=float)).ellipsoid)
         domain = outward_hull(P)
         for method, (sets, _) in runs.items():

@@ -37,6 +37,7 @@ import numpy as np
 
 from optbound.estimation import LinearSystem
 from optbound.sets import Box
+from optbound.sets.constrained_zonotope_polygon import round_up
 
 __all__ = ["REFERENCE", "TankScenario", "data", "scenario"]
 
@@ -62,11 +63,6 @@ def data() -> dict:
     """CORA's numbers as stored in ``_data/tank30.json`` (lists; see the module docstring)."""
     text = resources.files("optbound.scenarios").joinpath("_data/tank30.json").read_text()
     return json.loads(text)
-
-
-def _up(x: Fraction) -> float:
-    f = float(x)
-    return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
 
 
 def _exact_product(M: np.ndarray, x: np.ndarray) -> list[Fraction]:
@@ -110,8 +106,8 @@ def scenario() -> TankScenario:
         e_max = _max_abs(e_max, exact, y_shift)
         offsets.append(s)
         ys.append(y_shift)
-    half_w = np.array([_up(Fraction(x) + r) for x, r in zip(w, r_max, strict=True)])
-    half_v = np.array([_up(Fraction(x) + e) for x, e in zip(v, e_max, strict=True)])
+    half_w = np.array([round_up(Fraction(x) + r) for x, r in zip(w, r_max, strict=True)])
+    half_v = np.array([round_up(Fraction(x) + e) for x, e in zip(v, e_max, strict=True)])
     r0 = _box_noise(d["R0"])
     W, V, X0 = Box(-half_w, half_w), Box(-half_v, half_v), Box(-r0, r0)
     return TankScenario(LinearSystem(A, C, W, V), X0, np.array(ys), np.array(offsets))

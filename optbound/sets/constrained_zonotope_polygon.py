@@ -47,8 +47,8 @@ class CertifiedPolygons:
 
     def area_bracket(self) -> tuple[float, float]:
         """``(lo, hi)`` with ``lo <= area(CZ) <= hi`` (floats rounded outward)."""
-        lo = _shoelace(self.inner) if len(self.inner) >= 3 else Fraction(0)
-        return round_down(lo), round_up(_shoelace(self.outer))
+        lo = polygon_area(self.inner) if len(self.inner) >= 3 else Fraction(0)
+        return round_down(lo), round_up(polygon_area(self.outer))
 
     def tri(self, B: np.ndarray) -> np.ndarray:
         """Tri values (int8) of the boxes ``B`` (m, 2, 2) (module docstring)."""
@@ -152,11 +152,11 @@ def certified_polygons(cz) -> CertifiedPolygons:
     ]
     outer = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
     for (a, b), hk in zip(edges, h[4:], strict=True):
-        outer = _clip(outer, Fraction(float(a)), Fraction(float(b)), Fraction(float(hk)))
+        outer = clip(outer, Fraction(float(a)), Fraction(float(b)), Fraction(float(hk)))
     return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
 
 
-def _clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
+def clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
     """The convex polygon ``P ∩ {a x + b y <= h}`` (exact; Sutherland-Hodgman, one plane)."""
     out: list[Point] = []
     for k in range(len(P)):
@@ -211,7 +211,7 @@ def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
                 for ci, row in zip(c, G, strict=True)
             )
         )
-    return _hull(points)
+    return convex_hull(points)
 
 
 def _repair(A: list, b: list, xi: np.ndarray) -> list[Fraction] | None:
@@ -246,7 +246,7 @@ def _solve(M: list, r: list) -> list[Fraction] | None:
     return [aug[i][n] / aug[i][i] for i in range(n)]
 
 
-def _hull(points: list[Point]) -> list[Point]:
+def convex_hull(points: list[Point]) -> list[Point]:
     """Convex hull, counter-clockwise (Andrew's monotone chain, exact)."""
     pts = sorted(set(points))
     if len(pts) < 3:
@@ -268,7 +268,8 @@ def _hull(points: list[Point]) -> list[Point]:
     return lower[:-1] + upper[:-1]
 
 
-def _shoelace(P: list[Point]) -> Fraction:
+def polygon_area(P: list[Point]) -> Fraction:
+    """Exact area of the polygon ``P`` (shoelace; vertices in order)."""
     n = len(P)
     return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
 
