@@ -140,7 +140,8 @@ class ConstrainedZonotope(ConvexSet):
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         """Float test per row of ``X``: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is at
         most ``1 + tol`` (one LP per point). In 2-D a point inside the certified inner polygon
-        or beyond the certified outer one (:meth:`tri_contains`) is answered without an LP."""
+        (:meth:`tri_contains`) is answered True without an LP, and with ``tol == 0`` a point
+        beyond the certified outer polygon False."""
         from optbound.interval.tribool import Tri
         from optbound.sets.zonotope_membership import lp_contains
 
@@ -149,7 +150,8 @@ class ConstrainedZonotope(ConvexSet):
         todo = np.ones(pts.shape[0], dtype=bool)
         if self.dim == 2 and (polygons := self._certified_polygons()) is not None:
             tri = polygons.tri(np.stack([pts, pts], axis=2))
-            inside, todo = tri == Tri.TRUE, tri == Tri.UNKNOWN
+            inside = tri == Tri.TRUE
+            todo = (tri == Tri.UNKNOWN) if tol == 0 else ~inside
         if todo.any():
             inside[todo] = lp_contains(self._c, self._G, self._A, self._b, pts[todo], tol)
         return bool(inside[0]) if single else inside
