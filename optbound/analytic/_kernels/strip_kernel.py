@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from optbound._core import MAG, MAX_DIAG, check_ellipsoid
+from optbound.analytic._kernels import threads
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
@@ -50,7 +51,6 @@ from optbound.analytic._kernels.midrad import (
     segment_term,
 )
 from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
-from optbound.analytic._kernels.threads import ellipsoid_outputs
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
 # How lambda is chosen (ROBUST_PROJECTION: [HS96, eq. (30)] with the projection-optimal lambda).
@@ -677,22 +677,28 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
     return first_error(out[2], start, stop)
 
 
+def _single_buffers(n: int) -> tuple:
+    """Inputs and outputs of a batch of one in dimension n (``threads.workspace``'s factory):
+    c, C, a, b, lam and the outputs of :func:`fuse_range`."""
+    return (
+        np.empty((1, n)), np.empty((1, n, n)), np.empty((1, n)), np.empty(1), np.empty(1),
+        threads.ellipsoid_outputs(1, n, np.int8, np.int8, float, float, np.bool_, float),
+    )  # fmt: skip
+
+
 def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
     """One instance as a batch of one through :func:`fuse_range` (the same compiled code, so
     single and batched results agree bitwise and the kernel is compiled once), plus the
     result's Cholesky factor and its validation code (0 by construction: the member keeps
     the result in the domain as ``midrad.inflate`` does). ``ws`` is ``workspace(n)``.
     Returns (centre, shape, factor, code, (code, case, consistency, lam, empty, margin)).
-    The inputs are copied into new (writable) arrays: the batch's argument types, so that
-    numba compiles :func:`fuse_range` once."""
+    The instance is copied into the calling thread's buffers of a batch of one (writable
+    arrays: the batch's argument types, so that numba compiles :func:`fuse_range` once)."""
     n = c.shape[0]
-    out = ellipsoid_outputs(1, n, np.int8, np.int8, float, float, np.bool_, float)
-    fuse_range(
-        np.array(c, float, ndmin=2), np.array(C, float, ndmin=3), np.array(a, float, ndmin=2),
-        np.full(1, b, float), halfspace, clip, mode, np.full(1, lam, float), idx, steep, midp,
-        out, ws, 0, 1,
-    )  # fmt: skip
-    out_c, out_C = out[0][0], out[1][0]
-    out_L = np.empty((n, n))
+    c1, C1, a1, b1, lam1, out = threads.workspace(_single_buffers, n)
+    c1[0], C1[0], a1[0], b1[0], lam1[0] = c, C, a, b, lam
+    fuse_range(c1, C1, a1, b1, halfspace, clip, mode, lam1, idx, steep, midp, out, ws, 0, 1)
+    out_c, out_C, out_L = out[0][0].copy(), out[1][0].copy(), np.empty((n, n))
     valid = check_ellipsoid(out_c, out_C, out_L)
-    return out_c, out_C, out_L, valid, tuple(x[0] for x in out[2:])
+    return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0], out[5][0],
+                                        out[6][0], out[7][0])  # fmt: skip
