@@ -471,7 +471,9 @@ def main(
             f"quarter is <= {verdicts.DRIFT} x the one over the second quarter (the paper's "
             "aim, 'avoiding its drifting'). A configuration qualifies when at least "
             f"{verdicts.MAJORITY:.0%} of its runs do; the verdicts follow the rules of "
-            "`papers_repro/_glh12_verdicts.py`, fixed before the sweeps were run.",
+            "`papers_repro/_glh12_verdicts.py`, fixed before the sweeps were run ('over 9 "
+            "robots the results are similar' is not applicable when neither 9 nor 11 robots "
+            "qualify: similar failures are not the paper's plateau).",
             markdown_table(("quantity", "paper", "optbound", "verdict"), claims),
             _dist_table(stats_r, "robots (6 obstacles)"),
             _dist_table(stats_o, "obstacles (7 robots)"),
