@@ -235,10 +235,16 @@ def _mark(name: str, index: int) -> str:
 
 
 def _run_marked(item: tuple[str, str, int, dict]) -> tuple[str, int, dict]:
-    """A pool worker's task: mark its start in the folder ``item[0]``, then run it."""
+    """A pool worker's task: mark its start in the folder ``item[0]``, then run it.
+
+    A remote Dask worker has no such folder; it needs no mark (only a process pool breaks).
+    """
     marks, name, index, task = item
-    with open(os.path.join(marks, _mark(name, index)), "w") as fh:
-        fh.write(str(os.getpid()))
+    try:
+        with open(os.path.join(marks, _mark(name, index)), "w") as fh:
+            fh.write(str(os.getpid()))
+    except OSError:
+        pass
     return _run_registered((name, index, task))
 
 

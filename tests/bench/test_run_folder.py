@@ -79,6 +79,7 @@ def test_a_killed_run_resumes_to_the_uninterrupted_results(tmp_path, monkeypatch
     assert [(name, index) for name, index, _ in ran] == [("sleeper", 0), ("sleeper", 1)]
     resumed = load_results(out)
     assert resumed["meta"]["resumed_tasks"] == len(stored)
+    assert "(2 task(s) were)" in (out / "report.md").read_text()
     assert (resumed["meta"]["suite"], resumed["meta"]["seed"]) == ("tiny", 0)
     whole = runner.run_suite("tiny", 0, jobs=1, progress=False, names=["minkowski", "sleeper"])
     _assert_same_records(resumed["families"], whole["families"])
