@@ -202,8 +202,8 @@ def _run_pooled(pooled: list, finish: Callable, executor: str, jobs: int, schedu
 
     A task whose future raises (a Dask worker lost, say) is a failed task. A dead worker
     breaks a process pool and fails every unfinished future with it: the tasks that had
-    started (each marks its start in ``marks``) are run again alone (:func:`_run_alone`),
-    and the others go to a new pool.
+    started (each marks its start in a temporary folder) are run again alone
+    (:func:`_run_alone`), and the others go to a new pool.
     """
     with tempfile.TemporaryDirectory(prefix="optbound-started-") as marks:
         while pooled:
@@ -224,7 +224,9 @@ def _run_pooled(pooled: list, finish: Callable, executor: str, jobs: int, schedu
                     del left[futures[future]]
                     finish(*item, result)
             started = [k for k in left if os.path.exists(os.path.join(marks, _mark(*k)))]
-            for key in started:
+            # A pool that broke before any task started (a worker that cannot start) would
+            # break again: then every task left runs alone, so the run always progresses.
+            for key in started or list(left):
                 fam, i, task, cost = left.pop(key)
                 finish(fam, i, task, cost, _run_alone((fam.name, i, task))[2])
             pooled = list(left.values())
