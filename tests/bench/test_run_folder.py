@@ -137,3 +137,11 @@ def test_a_stored_task_is_used_only_for_the_same_task(run_dir):
     assert folder.load("strip", 1, {"seed": 1}) is None
     assert sorted(p.name for p in run_dir.rglob("*")) == ["run.json", "strip-0000.json", "tasks"]
     assert json.loads((run_dir / "run.json").read_text())["arguments"]["family"] == ["strip"]
+
+
+def test_repro_resume_refuses_other_papers(tmp_path, capsys):
+    arguments = {"command": "repro", "papers": ["BH"], "quick": True}
+    RunFolder(tmp_path, arguments).save("papers", 0, {"seed": 1}, {"records": [], "seconds": 0})
+    assert main(["repro", "GLH12", "--resume", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "was started with papers ['BH'], not ['GLH12']" in err and err.count("\n") == 1
