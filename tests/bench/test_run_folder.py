@@ -145,3 +145,18 @@ def test_repro_resume_refuses_other_papers(tmp_path, capsys):
     assert main(["repro", "GLH12", "--resume", str(tmp_path)]) == 2
     err = capsys.readouterr().err
     assert "was started with papers ['BH'], not ['GLH12']" in err and err.count("\n") == 1
+
+
+def test_ctrl_c_after_a_stored_task_keeps_the_folder_and_says_how_to_resume(
+    tmp_path, capsys, monkeypatch
+):
+    def interrupted(*args, folder, **kwargs):
+        folder.save("strip", 0, {"seed": 1}, {"records": [], "seconds": 0})
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(runner, "run_suite", interrupted)
+    out = tmp_path / "new" / "out"
+    assert main(["bench", "--suite", "tiny", "--out", str(out)]) == 130
+    err = capsys.readouterr().err
+    assert err == f"optbound bench: interrupted; finish it with: optbound bench --resume {out}\n"
+    assert RunFolder.open(out).arguments["suite"] == "tiny"
