@@ -21,10 +21,14 @@ import os
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from optbound.bench.executors import EXECUTORS
 from optbound.bench.family import SUITES
 from optbound.bench.registry import FAMILIES, PAPERS
+
+if TYPE_CHECKING:
+    from optbound.bench.run_folder import RunFolder
 
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
@@ -259,7 +263,7 @@ _RUN_ARGUMENTS = {
 }
 
 
-def _resolve_run_arguments(args: argparse.Namespace):
+def _resolve_run_arguments(args: argparse.Namespace) -> RunFolder:
     """Fill in the run arguments: from ``--resume DIR``'s stored ones, else the defaults.
 
     Returns the run folder (:class:`optbound.bench.run_folder.RunFolder`). With
