@@ -300,7 +300,8 @@ def _claims(stats_r: dict, stats_o: dict, lost: int, n_runs: int, steps: int) ->
             rows.append(
                 (f"7 obstacles, 7 robots ({reading})",
                  "'7 obstacles do not lead to an efficient pose tracking'",
-                 f"qualify 6: {frac_o[6]:.0%}, 7: {frac_o[7]:.0%}, 8: {frac_o[8]:.0%}",
+                 f"qualify 6: {frac_o[6]:.0%}, 7: {frac_o[7]:.0%}, 8: {frac_o[8]:.0%} "
+                 f"({n_o} runs each)",
                  verdicts.dip_verdict(frac_o, 7, (6, 8)))
             )  # fmt: skip
     return rows

@@ -22,6 +22,8 @@ def test_quick_variant_keeps_the_truth_and_reports(result):
     assert all(s["n"] == n for s in (*result["robots"].values(), *result["obstacles"].values()))
     assert "| quantity | paper | optbound | verdict |" in result["markdown"]
     assert "**Why ours differ.**" in result["markdown"]
+    n_runs = f"({n} runs each)"
+    assert all(n_runs in row[2] or f"({n} each)" in row[2] for row in result["claims"][1:])
     for path in result["figures"]:
         assert path.suffix == ".png" and path.stat().st_size > 10_000
 
