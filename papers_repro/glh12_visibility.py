@@ -165,6 +165,26 @@ def sweep(configs: list[dict], seeds, jobs: int = 1, runs: Path | None = None) -
     return [done[i] for i in range(len(tasks))]
 
 
+def _contraction_rows(params: dict, cstudy: dict, runs: Path | None) -> list[dict]:
+    """The contraction study's rows; with ``runs``, kept in ``runs`` + ``.contraction`` (one
+    JSON line per study) and taken from there when the same study was stored."""
+    key = _run_key({**params, **cstudy}, -1)
+    store = Path(f"{runs}.contraction") if runs else None
+    for line in store.read_text().splitlines() if store and store.exists() else ():
+        stored = json.loads(line)
+        if stored["key"] == key:
+            return stored["rows"]
+    rows = []
+    for seed in cstudy["seeds"]:
+        rows += contraction.study(
+            params, seed, list(cstudy["at"]), cstudy["paving_eps"], cstudy["split"]
+        )
+    if store:
+        with store.open("a") as out:
+            out.write(json.dumps({"key": key, "rows": rows}) + "\n")
+    return rows
+
+
 def _run_key(params: dict, seed: int) -> str:
     return json.dumps([{k: params[k] for k in sorted(params)}, seed])
 
@@ -430,12 +450,7 @@ def main(
     rows = sweep(configs, seeds, jobs, runs)
     frows = sweep(list(factor_configs.values()), factor_seeds, jobs, runs)
     cpu_c = time.process_time()
-    crows = []
-    for seed in cstudy["seeds"]:
-        crows += contraction.study(
-            {**base, "steps": max(cstudy["at"])}, seed, list(cstudy["at"]),
-            cstudy["paving_eps"], cstudy["split"],
-        )  # fmt: skip
+    crows = _contraction_rows({**base, "steps": max(cstudy["at"])}, cstudy, runs)
     cpu_c = time.process_time() - cpu_c
     wall = time.perf_counter() - wall
     by_robots = _by([r for r in rows if r["obstacles"] == BASE["obstacles"]], "robots")

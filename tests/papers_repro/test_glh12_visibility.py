@@ -91,3 +91,18 @@ def test_sweep_stores_each_run_and_takes_the_stored_ones(tmp_path, monkeypatch):
     assert ran == [2]
     assert [r["area"] for r in again[:2]] == [r["area"] for r in first]
     assert again[2] == real(configs[0], 2) | {k: again[2][k] for k in ("seconds", "cpu_seconds")}
+
+
+def test_contraction_rows_are_kept_beside_the_runs(tmp_path, monkeypatch):
+    calls = []
+    fake = lambda params, seed, at, eps, split: calls.append(seed) or [{"seed": seed}]  # noqa: E731
+    monkeypatch.setattr(repro.contraction, "study", fake)
+    study = {"seeds": (0, 1), "at": (5,), "paving_eps": 0.1, "split": 2}
+    runs = tmp_path / "runs.jsonl"
+    first = repro._contraction_rows({"robots": 2}, study, runs)
+    assert (
+        repro._contraction_rows({"robots": 2}, study, runs) == first == [{"seed": 0}, {"seed": 1}]
+    )
+    assert calls == [0, 1]
+    repro._contraction_rows({"robots": 3}, study, runs)  # another study: run, not taken
+    assert calls == [0, 1, 0, 1]
