@@ -140,7 +140,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument(
         "--update-readme",
         action="store_true",
-        help="write the headline numbers into the README's bench section; only for a "
+        help="write the headline numbers into the docs' benchmark page; only for a "
         "complete default run (--suite quick --seed 0, every family)",
     )
     bench.add_argument(
@@ -319,7 +319,7 @@ def _bench(args: argparse.Namespace) -> int:
             raise CommandError(f"--update-readme: {refusal}")
         readme = report.source_readme()
         if readme is None:
-            raise CommandError("--update-readme: no README.md with headline markers found")
+            raise CommandError("--update-readme: no docs/benchmarks.md with headline markers found")
     estimators = _user_estimators(args)
     out = _prepare(args)
     results = _run(args, args.suite, args.seed, names=args.family, folder=args.folder)

@@ -2,7 +2,7 @@
 
 [KJWM00, abstract]: the interval method "bypasses the data-association step, handles the
 problem as nonlinear and in a global way and is (extraordinarily) robust to outliers". The
-paper's test cases (Sect. 6) are lost with most of the text (see papers/README.md), so this
+paper's test cases (Sect. 6) are lost with most of the text of the copy we work from, so this
 script checks the claim on a scenario of **our own design**:
 :data:`optbound.scenarios.rooms.BELT_ROOM` (a 10 m × 8 m room with a chamfered corner), a
 belt of 16 sonars (±12° cones, 2 % accuracy), random poses at least 0.5 m inside the room,

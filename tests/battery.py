@@ -3,7 +3,7 @@
 In the style of cvxpy's ``solver_test_helpers``: each function builds a problem object that
 knows its sets, its objective and the answer both routes must reach, so one test can run it
 through ``optbound.analytic`` *and* ``optbound.optimal`` and compare. The known answers come
-from the "Known facts" of the project (``/work/shared/papers/README.md``):
+from closed-form results (the papers' equations and the anchors below):
 
 - ellipsoid ∩ strip with both planes cutting: the [HS96, eq. (26)] member is the minimum-volume
   outer ellipsoid, and the S-procedure SDP reaches it; the same for the projection [HS96,

@@ -7,8 +7,8 @@ two endpoints and its midpoint (the image of the interval's midpoint ``w0``): wr
 ``S = [[1, 0], [2 w0, 1]]``, and in ``(t, t^2)`` the ellipse has centre ``(0, 2 r^2 / 3)`` and
 shape ``diag(4 r^2 / 3, 4 r^4 / 9)``. Along the arc its level is ``(9 tau^2 - 9 tau + 4) / 4``
 with ``tau = t^2 / r^2``: 1 at the three points of contact, below 1 in between. Its area is
-``4 pi r^3 / (3 sqrt 3)`` (``../shared/papers/README.md``, "BH lifted noise", which states it
-for an arc centred at 0; the shear moves it to any centre without changing the area).
+``4 pi r^3 / (3 sqrt 3)``: a Steiner circum-ellipse has ``4 pi / (3 sqrt 3)`` times the area of
+its triangle, here ``r^3``; the shear has determinant 1, so the area holds for any centre.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """The standard bounding-ellipsoid measurement update [BH, eqs. (4)-(8)].
 
 Prior E = {x : (x - c)^T C^{-1} (x - c) <= 1} [BH, eq. (4)], measurement z = H x + v
-[BH, eq. (5)] with v in {v : v^T V^{-1} v <= 1} [BH, eq. (8)]. For every lambda >= 0 [BH, eq. (7)]
+[BH, eq. (5)] with v in {v : v^T V^{-1} v <= 1} [BH, eq. (8)]. For every lambda >= 0 [BH, eq. (7)]::
 
     S = V + lambda H C H^T,   r = z - H c,
     centre = c + lambda C H^T S^{-1} r,
@@ -9,7 +9,7 @@ Prior E = {x : (x - c)^T C^{-1} (x - c) <= 1} [BH, eq. (4)], measurement z = H x
 
 is an outer bound of the feasible set when s > 0, and s(lambda) < 0 for some lambda certifies
 that the feasible set is empty. In the eigenbasis of ``V^{-1/2} H C H^T V^{-1/2} = U diag(mu) U^T``
-everything is a scalar function of lambda:
+everything is a scalar function of lambda::
 
     s(lambda) = 1 + lambda - lambda sum_j rho_j^2 / (1 + lambda mu_j),   rho = U^T V^{-1/2} r,
     log det P = log det C - sum_j log(1 + lambda mu_j),
@@ -157,6 +157,20 @@ def bounding_update(
     ------
     ValueError
         Non-finite or mismatched inputs, V not SPD, unknown criterion, negative lambda.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid, analytic
+    >>> E = Ellipsoid(np.zeros(3), np.eye(3))
+    >>> u = analytic.bounding_update(E, H=[[1.0, 1.0, 0.0]], z=[0.5], V=[[0.04]])
+    >>> bool(u.ellipsoid.contains([0.25, 0.25, 0.0]))
+    True
     """
     if not isinstance(E, Ellipsoid):
         raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")

@@ -24,9 +24,9 @@ Criteria:
   ``AREA_T_MAX`` caps lambda at ~1e3. The grid area is an estimate (its boundary cells make
   up a few per cent of a thin set), and the area is often flat over a wide range of lambda,
   where the raw grid minimum lands anywhere, up to the cap, by noise: there the lifted shape
-  is nearly singular (cond ~1e8 at the cap against ~1e5 near lambda = 1,
-  ``../shared/papers/README.md``, "BH filter numerics"), the later updates can only return
-  lambda = 0 and the containment of the exact set can no longer be proven (1 of 10 sweep
+  is nearly singular (cond ~1e8 at the cap against ~1e5 near lambda = 1; "BH filter
+  numerics" in the documentation's *Guarantees and numerics* page), the later updates can
+  only return lambda = 0 and the containment of the exact set can no longer be proven (1 of 10 sweep
   geometries of the BH reproduction). So the smallest grid lambda whose area is within
   ``AREA_RTOL`` of the grid minimum is taken (the best-conditioned of the equally small
   candidates); only when that is the grid minimum itself is it refined by Brent. Every lambda

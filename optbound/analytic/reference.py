@@ -79,7 +79,7 @@ def strip_lam_volume(G: float, eps: float, n: int) -> float:
 
 
 def intersect_strip_volume(c, C, a, b, out_c, out_C, w) -> float:
-    """E ∩ {x : |a^T x - b| <= 1}, volume criterion, with the strip clipped to E's extent
+    """``E ∩ {x : |a^T x - b| <= 1}``, volume criterion, with the strip clipped to E's extent
     ``[a^T c - g, a^T c + g]`` along a (g = sqrt(a^T C a)) and floored at MIN_REL_WIDTH g, as
     ``intersect_strip(E, S, "volume")`` does; returns lambda (0: the member is E itself).
 

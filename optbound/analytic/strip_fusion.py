@@ -1,6 +1,6 @@
 """Outer ellipsoid of an ellipsoid intersected with a strip [HS96, eqs. (24)-(30)].
 
-For E = {x : (x - c)^T C^{-1} (x - c) <= 1} and the strip S = {x : |a^T x - b| <= 1}
+For ``E = {x : (x - c)^T C^{-1} (x - c) <= 1}`` and the strip ``S = {x : |a^T x - b| <= 1}``
 [HS96, eq. (23)], every lambda >= 0 gives the ellipsoid [HS96, eq. (24)]
 
     eps = b - a^T c,   G = a^T C a,   u = 1 + lambda G,
@@ -227,6 +227,29 @@ def intersect_strip(
         ``E`` not an Ellipsoid, ``S`` neither a Strip nor a Halfspace.
     ValueError
         Dimension mismatch, unknown criterion, missing or invalid ``dims``, negative ``lam``.
+
+    Notes
+    -----
+    The family is ``{x : (x - c)^T C^{-1} (x - c) + lam (a^T x - b)^2 <= 1 + lam}``, i.e. the
+    ellipsoid with centre ``c + lam C a (b - a^T c) / (1 + lam a^T C a)`` and shape
+    ``(1 + lam - lam (b - a^T c)^2 / (1 + lam a^T C a)) (C^{-1} + lam a a^T)^{-1}`` [HS96,
+    eqs. (24)-(25)]; every lam >= 0 gives an outer bound of E ∩ S, the criterion picks one.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid, Strip, analytic
+    >>> E = Ellipsoid(np.zeros(2), np.eye(2))
+    >>> f = analytic.intersect_strip(E, Strip([2.0, 0.0], 0.0))  # |2 x1| <= 1
+    >>> f.case
+    'consistent'
+    >>> np.round(np.diag(f.ellipsoid.shape), 6)  # unit disc ∩ {|x1| <= 0.5}: diag(0.5, 1.5)
+    array([0.5, 1.5])
     """
     if not isinstance(E, Ellipsoid):
         raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")

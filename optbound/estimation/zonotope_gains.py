@@ -10,7 +10,7 @@ gain ``lam`` gives the guaranteed enclosure ``X(lam) = <c + lam (mid - a^T c),
 - :func:`volume_gain`: the minimiser of the *volume* of ``X(lam)``, the size criterion that
   Alamo et al. (2005, Sect. 5) weigh against the F-radius. By the zonotope volume formula
   ``vol = 2^n sum_S |det H_S|`` over n-subsets S of the generators H (Shephard 1974) and column
-  operations (subtract multiples of the column ``s lam``; ``det (I - lam a^T) = 1 - a^T lam``):
+  operations (subtract multiples of the column ``s lam``; ``det (I - lam a^T) = 1 - a^T lam``)::
 
       vol(X(lam)) / 2^n = |1 - a^T lam| sum_{|S|=n} |det G_S|
                           + s sum_{|T|=n-1} |det [G_T, lam]|,

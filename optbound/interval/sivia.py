@@ -313,14 +313,49 @@ def sivia(
 ) -> Paving:
     """Characterise ``{x in X0 : f(x) in Y}`` [LJMW97, Sect. 3.2].
 
-    ``f(*coords)`` returns its p outputs (see :func:`constraint`); ``Y`` and ``X0`` are
-    ``(p, 2)`` / ``(n, 2)`` rows of ``[lo, hi]`` or :class:`~optbound.sets.Box` (``Y`` may be
-    unbounded). Other parameters as in :func:`pave`.
+    Set inversion by bisection: a box whose image is proven inside ``Y`` is inner, one whose
+    image is proven disjoint from ``Y`` is outside, the others are bisected until narrower
+    than ``eps``. Every bound is rounded outward, so the inner boxes lie in the set and the
+    set lies in the inner and boundary boxes, with the floats read as exact numbers.
+
+    Parameters
+    ----------
+    f : callable
+        ``f(*coords)`` returns its p outputs (see :func:`constraint`); evaluated once per
+        bisection level on ``Interval`` arrays of all the level's boxes.
+    Y : array_like, shape (p, 2), or Box
+        Rows ``[lo, hi]`` of the outputs' target set; may be unbounded.
+    X0 : array_like, shape (n, 2), or Box
+        The bounded initial box.
+    eps : float
+        A box is not split once its widest side is at most ``eps``.
+    ratio : float
+        Where the widest side is cut (codac's rule, 0.49).
+    max_boxes : int
+        Refuse to create more boxes than this.
+
+    Returns
+    -------
+    Paving
+        ``inner``, ``boundary`` and ``outside`` box arrays of the set.
+
+    Raises
+    ------
+    ValueError
+        On NaN, ``lo > hi``, ``eps <= 0``, a wrong number of outputs or too many boxes (see
+        :func:`pave`).
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 
     Examples
     --------
     >>> p = sivia(lambda x, y: (x**2 + y**2, 2 * x**2 + y**2),
     ...           [[-np.inf, 1], [1, np.inf]], [[-2.5, 2.5], [-2, 2]], 0.05)
-    >>> inner, outer = p.volume_bounds()   # inner <= pi (1 - 1/sqrt 2) <= outer
+    >>> inner, outer = p.volume_bounds()
+    >>> bool(inner <= np.pi * (1 - 1 / np.sqrt(2)) <= outer)
+    True
     """
     return pave(constraint(f, Y), X0, eps, ratio=ratio, max_boxes=max_boxes)

@@ -5,7 +5,7 @@ frame, counter-clockwise) of landmark ``L_i``: ``alpha_i + psi = atan2(L_iy - y,
 [HS96, eq. (18)] (eq. (3) prints the atan2 arguments swapped; eq. (18) is the convention that
 makes eqs. (5)-(6) hold).
 
-With ``gamma_i = alpha_{i+1} - alpha_i`` (indices modulo N), each pair gives [HS96, eq. (5)]
+With ``gamma_i = alpha_{i+1} - alpha_i`` (indices modulo N), each pair gives [HS96, eq. (5)]::
 
     A_i = g_i^T (x, y) - (x^2 + y^2),
     A_i = x_i x_{i+1} + y_i y_{i+1} + cot(gamma_i) (x_{i+1} y_i - y_{i+1} x_i),

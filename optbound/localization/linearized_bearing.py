@@ -5,6 +5,8 @@ set-membership filter of [HS96, eqs. (18)-(24)] applied to the relative-bearing 
 [BH, eq. (2)]. Each measurement ``|gamma_ij(x) - gamma_hat| <= eps`` is linearized around the
 current centre ``c`` (``geometry.bearing_gradient``),
 
+::
+
     |g^T x - (g^T c + wrap(gamma_hat - gamma_ij(c)))| <= eps,   g = grad gamma_ij(c),
 
 as [HS96, eqs. (19)-(23)] linearize the bearing equation (18) around the predicted centre, and

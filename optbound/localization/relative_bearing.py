@@ -33,7 +33,8 @@ measurement is the crescent ``M_ij`` between two circles through the landmarks.
   opposite of [BH, eq. (11)]; here the interval is derived from the ring itself:
   ``v = z_hat - w`` with ``z_hat = (r1 + d/2)^2`` resp. ``(r2 - d/2)^2`` [BH, eq. (21)].
 
-Numerics (``../shared/papers/README.md``, "BH filter numerics"): the filter runs in coordinates
+Numerics ("BH filter numerics" in the documentation's *Guarantees and numerics* page): the
+filter runs in coordinates
 ``u = (x - o) / s`` centred and scaled on a box that provably contains the feasible set (the
 intersection of the bounding boxes of the discs 2), and the prior is the smallest axis-aligned
 lifted ellipsoid around the interval image of that box: it contains the lifted feasible set,

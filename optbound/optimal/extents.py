@@ -3,8 +3,8 @@
 With many strips, each one is much wider than the intersection along its normal, and the
 S-procedure (one multiplier per member) cannot see that the other strips cut it. Clipping every
 range ``lo_i <= a_i^T x <= hi_i`` to the exact range of ``a_i^T x`` over the *whole*
-intersection leaves the set unchanged but makes the SDP far tighter (see the README's optimal
-section for the measured effect).
+intersection leaves the set unchanged but makes the SDP far tighter (the user guide's
+optimal page, ``docs/user_guide/optimal.md``, has the measured effect).
 
 In the frame ``x = c + W y`` of an ellipsoid E (``C = W W^T``), E is the unit ball and the
 rows become ``lo_i - a_i^T c <= (W^T a_i)^T y <= hi_i - a_i^T c``. The extent of each row over

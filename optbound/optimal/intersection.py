@@ -241,11 +241,11 @@ def outer_ellipsoid(
         [HS96, eq. (24)] family's optimum instead. ``"intersection"``: then to the exact
         extent of each normal over the first bounded member ∩ all the linear ranges (one
         certified SOCP, ``optbound.optimal.extents``); with many strips this is much tighter
-        (README, optimal section), and with one strip it is the same as ``"ellipsoids"``.
+        (``docs/user_guide/optimal.md``), and with one strip it is the same as ``"ellipsoids"``.
     products : bool
         Also impose the pair products of the (clipped) linear ranges, four per pair
         (``optbound.optimal.lift``): tighter for many strips, at ``2 r (r - 1)`` extra
-        multipliers for ``r`` ranges (README, optimal section, for the measured effect).
+        multipliers for ``r`` ranges (``docs/user_guide/optimal.md`` has the measured effect).
     solver : {"CLARABEL", "SCS"}
         Conic solver.
     lower_bound : bool
@@ -277,6 +277,21 @@ def outer_ellipsoid(
     ValueError
         For bad arguments, or when no S-procedure certificate can exist (unbounded
         intersection, or one bounded by half-spaces only).
+
+    References
+    ----------
+    .. [BEFB94] S. Boyd, L. El Ghaoui, E. Feron, V. Balakrishnan, "Linear Matrix Inequalities
+       in System and Control Theory", SIAM, 1994, Sect. 3.7 (the S-procedure).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid, Strip, optimal
+    >>> r = optimal.outer_ellipsoid([Ellipsoid(np.zeros(2), np.eye(2)), Strip([2.0, 0.0], 0.0)])
+    >>> r.certified
+    True
+    >>> np.round(np.diag(r.ellipsoid.shape), 4)  # the optimum: diag(0.5, 1.5)
+    array([0.5, 1.5])
     """
     quadratics = lift(intersection, clip=clip, products=products)
     n, k = quadratics[0].dim, len(quadratics)

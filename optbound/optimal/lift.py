@@ -22,8 +22,8 @@ With ``products=True`` the inequalities also include, for every pair of finite r
 ``l_i <= a_i^T x <= u_i`` and ``l_j <= a_j^T x <= u_j``, the four products of one side of each,
 such as ``(a_i^T x - l_i)(a_j^T x - u_j) <= 0`` (the Reformulation-Linearization Technique of
 Sherali & Adams; Shor-type constraints): valid on the set, and no combination of the single
-ranges gives them, so the S-procedure with them is tighter on polytopes (README, optimal
-section), at 2 r (r - 1) extra inequalities for r ranges.
+ranges gives them, so the S-procedure with them is tighter on polytopes
+(``docs/user_guide/optimal.md``), at 2 r (r - 1) extra inequalities for r ranges.
 
 The range is then written in product form ``(a^T x - lo)(a^T x - hi) <= 0``; for a strip
 ``|a^T x - b| <= 1`` this is the very same polynomial as ``(a^T x - b)^2 <= 1``, so the two

@@ -40,7 +40,7 @@ class OuterResult(BoundResult):
         Class constant 1e-5: how far (as a relative level, ``compare.max_level - 1``) the
         ellipsoid may lie from the true optimum in either direction. The conic solvers stop at
         relative gaps near 1e-8, which leaves the optimal shape itself accurate to a few 1e-6
-        (2.9e-6 with Clarabel on the README's ellipse ∩ strip); ``compare.contains`` uses it
+        (2.9e-6 with Clarabel on the user guide's ellipse ∩ strip); ``compare.contains`` uses it
         as its default tolerance when this result is one of its arguments.
     """
 

@@ -1,15 +1,15 @@
 """Public set-membership problems and the evaluation of any estimator on them.
 
-```python
-from optbound import problems, evaluate
-suite = problems.suite("tiny")                  # list[Problem], seeded like `optbound bench`
-p = suite[0]
-p.family, p.name, p.seed, p.dim, p.data, p.truth
-p.member(X)        # Tri per float point: proven in the true set?
-p.exact(eps=None)  # Paving: inner ⊂ true set ⊂ inner ∪ boundary
-p.references()     # {"optimal_ellipsoid": ..., "best_box": ...}, certified outer bounds
-result = evaluate(my_estimator, suite)          # size brackets, ratios, soundness per problem
-```
+Usage::
+
+    from optbound import problems, evaluate
+    suite = problems.suite("tiny")                  # list[Problem], seeded like `optbound bench`
+    p = suite[0]
+    p.family, p.name, p.seed, p.dim, p.data, p.truth
+    p.member(X)        # Tri per float point: proven in the true set?
+    p.exact(eps=None)  # Paving: inner ⊂ true set ⊂ inner ∪ boundary
+    p.references()     # {"optimal_ellipsoid": ..., "best_box": ...}, certified outer bounds
+    result = evaluate(my_estimator, suite)          # size brackets, ratios, soundness per problem
 
 Families (one module each, defining ``problems(suite, seed) -> list[Problem]``): ``strip``
 (ellipsoid ∩ strip), ``minkowski`` (sum of two ellipsoids), ``recursive`` (ellipsoid ∩ a

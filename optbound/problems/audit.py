@@ -75,6 +75,16 @@ def evaluate(
     ------
     TypeError
         If ``estimator`` is not callable or a problem is not a ``Problem``.
+
+    Examples
+    --------
+    >>> from optbound import analytic, evaluate, problems
+    >>> suite = problems.suite("tiny", families=["strip"])
+    >>> def fused(p):
+    ...     return analytic.intersect_strip(p.data["ellipsoid"], p.data["strip"]).ellipsoid
+    >>> result = evaluate(fused, suite)
+    >>> len(result.rows) == len(suite)
+    True
     """
     if not callable(estimator):
         raise TypeError(f"estimator must be callable, got {type(estimator).__name__}")

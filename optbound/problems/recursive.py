@@ -1,4 +1,4 @@
-"""Family ``recursive``: a prior ellipsoid cut by a sequence of strips, ``E0 ∩ S_1 ∩ ... ∩ S_k``.
+"""Family ``recursive``: a prior ellipsoid cut by a sequence of strips, ``E0 ∩ S_1 ∩ … ∩ S_k``.
 
 The instances of the benchmark family of the same name, with its seeds: a random prior
 ellipsoid (condition number 10, dimension 2-4 in the quick suite, up to 6 in full), a true

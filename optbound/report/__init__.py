@@ -1,4 +1,4 @@
-"""Benchmark reports: results.json/CSV, Markdown tables, PNG figures, README headline.
+"""Benchmark reports: results.json/CSV, Markdown tables, PNG figures, the bench headline.
 
 ``write_report(results, out_dir)`` builds everything from the results dict that
 ``optbound bench`` saves, so ``optbound report DIR`` can rebuild a report from

@@ -1,7 +1,7 @@
 """The headline numbers of a run: one line per criterion, recursion depth and speed ratio.
 
 The same rows go to the top of report.md, to the terminal after ``optbound bench`` and into
-the README's bench section, so every number a reader sees first is computed here.
+the benchmark page of the documentation, so every number a reader sees first is computed here.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
-"""Insert the headline numbers of a quick run into the README's bench section.
+"""Insert the headline numbers of a quick run into the documentation's benchmark page.
 
-The numbers sit between two HTML comments inside the bench section, so the README never
-holds a hand-typed benchmark figure. Only ``optbound bench --update-readme`` rewrites them,
+The numbers sit between two HTML comments of ``docs/benchmarks.md``, so the documentation
+never holds a hand-typed benchmark figure. Only ``optbound bench --update-readme`` rewrites them,
 and only from a complete run of the default suite (quick, seed 0, every family): a partial
 run must not replace the headline with a part of it.
 """
@@ -46,12 +46,12 @@ def machine_text(meta: dict) -> str:
 
 
 def headline_refusal(meta: dict) -> str | None:
-    """Why a run with this ``meta`` may not write the README headline, or None if it may."""
+    """Why a run with this ``meta`` may not write the bench headline, or None if it may."""
     differs = [f"--{k} {meta.get(k)}" for k, v in DEFAULT_SUITE.items() if meta.get(k) != v]
     if differs:
-        return f"the README headline comes from the default suite only, not {' '.join(differs)}"
+        return f"the bench headline comes from the default suite only, not {' '.join(differs)}"
     if not meta.get("complete", False):
-        return "the README headline needs a complete run (no --family selection)"
+        return "the bench headline needs a complete run (no --family selection)"
     return None
 
 
@@ -77,8 +77,9 @@ def update_readme(path: str | Path, results: dict) -> bool:
 
 
 def source_readme() -> Path | None:
-    """README.md of the source checkout this package runs from (editable install), if any."""
+    """The page holding the headline markers, ``docs/benchmarks.md`` of the source checkout
+    this package runs from (editable install), if any."""
     import optbound
 
-    candidate = Path(optbound.__file__).resolve().parents[1] / "README.md"
+    candidate = Path(optbound.__file__).resolve().parents[1] / "docs" / "benchmarks.md"
     return candidate if candidate.is_file() and BEGIN in candidate.read_text() else None

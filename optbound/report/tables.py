@@ -1,4 +1,4 @@
-"""Markdown tables and number formatting shared by report.md, the README and the terminal."""
+"""Markdown tables and number formatting shared by report.md, the documentation and the terminal."""
 
 from __future__ import annotations
 

@@ -34,9 +34,10 @@ the two methods of :class:`QuadraticallyDescribed` by a ``ValueError`` naming th
     known to contain the set, or None; the SDP layer clips the other members' linear ranges to
     it (raise :class:`EmptySetError` if the set is found empty). With both, the type works in
     ``optimal.outer_ellipsoid`` and everything built on it.
-:class:`BoxProver` - soundness proofs (``optimal.optimal_pseudo_ellipsoid``,
-``localization.relative_bearing``) and pavings of the set (``interval.sivia`` on its box test)
-    ``tri_contains(boxes) -> ndarray of int8``: for boxes (m, n, 2) of ``[lo, hi]`` rows,
+:class:`BoxProver` - soundness proofs and pavings of the set
+    For ``optimal.optimal_pseudo_ellipsoid``, ``localization.relative_bearing`` and
+    ``interval.sivia`` on its box test. ``tri_contains(boxes) -> ndarray of int8``: for
+    boxes (m, n, 2) of ``[lo, hi]`` rows,
     ``Tri.TRUE`` where the box is proven inside the set, ``Tri.FALSE`` where proven disjoint,
     ``Tri.UNKNOWN`` otherwise; proven with outward-rounded interval arithmetic
     (``optbound.interval``), so a TRUE is a proof for the floats read as exact numbers.

@@ -9,7 +9,8 @@ L = 8 map of [BH, eq. (23)] are instances (:meth:`PolynomialLifting.bh4`,
 Why the affine pre-map ``u = (x - offset) / scale``: the lifted filter runs in floating point
 with monomials up to degree 4, and coordinates of size ``|x| ~ 10`` give lifted entries of
 size ``10^4`` beside entries of size 10, which makes the lifted shape matrices
-ill-conditioned (``../shared/papers/README.md``, "BH filter numerics"). Centring and scaling
+ill-conditioned ("BH filter numerics" in the documentation's *Guarantees and numerics* page).
+Centring and scaling
 the plane first keeps every monomial of order one. The span of the BH monomials (with 1) is
 closed under translations and scalings, so nothing is lost.
 

@@ -273,16 +273,10 @@ def test_rings_refuse_a_set_that_is_no_crescent():
         rb.rings([0.0, 0.0], [1.0, 0.0], 3.1, 0.1)
 
 
-def test_readme_example_runs(capsys):
-    import re
-    from pathlib import Path
+def test_guide_example_runs(capsys):
+    from tests.doc_section import run_section
 
-    text = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-    section = text.split("<!-- BEGIN pseudo-ellipsoids -->")[1].split(
-        "<!-- END pseudo-ellipsoids -->"
-    )[0]
-    (code,) = re.findall(r"```python\n(.*?)```", section, flags=re.S)
-    exec(compile(code, "README.md", "exec"), {})
+    run_section("pseudo-ellipsoids")
     out = capsys.readouterr().out.splitlines()
     assert out[0].startswith("L = 4") and out[0].endswith("proven True")
     assert out[1].startswith("L = 8") and out[1].endswith("proven True")

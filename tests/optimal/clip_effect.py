@@ -1,4 +1,4 @@
-"""Effect of ``clip`` on the S-procedure reference with many strips (README, optimal section).
+"""Effect of ``clip`` on the S-procedure reference with many strips (docs' optimal page).
 
 ``python -m tests.optimal.clip_effect`` rebuilds instances of the benchmark's recursive family
 (``optbound/bench/recursive_tightness.py``: a prior ellipsoid of condition number 10 and k strips of
@@ -78,7 +78,7 @@ def _chain(cell: dict, template: str, digits: str) -> str:
 
 
 def table(dims=DIMS, ks=KS) -> str:
-    """The README's table: each entry ``ellipsoids → intersection → products`` (k > 1 only)."""
+    """The optimal page table: each entry ``ellipsoids → intersection → products`` (k > 1 only)."""
     lines = [
         "| n | k | SDP / lower bound | recursive filter / SDP | time per call (ms) |",
         "|---|---|---|---|---|",

@@ -1,8 +1,8 @@
-"""The README table generator rewrites only its blocks, keeps their indentation, is idempotent."""
+"""The docs' table generator rewrites only its blocks, keeps their indentation, is idempotent."""
 
 import pytest
 
-import tests.readme_tables as rt
+import tests.doc_tables as rt
 
 
 def test_update_fills_an_indented_block_and_is_idempotent(monkeypatch):

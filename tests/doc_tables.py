@@ -1,12 +1,12 @@
-"""Every table of measured numbers in README.md is generated here, never typed by hand.
+"""Every table of measured numbers in the documentation is generated here, never typed by hand.
 
 A generated table sits between ``<!-- BEGIN generated:NAME -->`` and
 ``<!-- END generated:NAME -->``; ``GENERATORS[NAME]`` returns its Markdown. The bench headline
 (``<!-- BEGIN bench-headline -->``) is written by ``optbound bench --update-readme`` instead.
 
-``python -m tests.readme_tables [NAME ...]`` recomputes the named blocks (default: all) and
-rewrites them in place. ``tests/test_readme.py`` checks that
-no table of measured numbers lies outside such a block.
+``python -m tests.doc_tables [NAME ...]`` recomputes the named blocks (default: all) and
+rewrites them in place, in whichever page (README.md or ``docs/**/*.md``) holds them.
+``tests/test_docs.py`` checks that no table of measured numbers lies outside such a block.
 """
 
 from __future__ import annotations
@@ -16,7 +16,16 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def pages() -> list[Path]:
+    """README.md and every Markdown page of the documentation (not the build output)."""
+    docs = ROOT / "docs"
+    found = [p for p in sorted(docs.rglob("*.md")) if "_build" not in p.relative_to(docs).parts]
+    return [ROOT / "README.md", *found]
+
+
 # The markers may be indented (a table inside a list item); the body gets their indentation.
 BLOCK = re.compile(
     r"^(?P<indent>[ \t]*)<!-- BEGIN generated:(?P<name>[\w-]+) -->\n(?P<body>.*?)"
@@ -39,7 +48,7 @@ def _battery() -> str:
         for row in agreement_rows()
     ]
     headers = ("case", "analytic/SDP − 1", "inflation − 1", "SDP / lower bound")
-    return "Output of `python -m tests.readme_tables battery`:\n\n" + markdown_table(headers, rows)
+    return "Output of `python -m tests.doc_tables battery`:\n\n" + markdown_table(headers, rows)
 
 
 def _clip_effect() -> str:
@@ -87,7 +96,7 @@ def _speed_analytic() -> str:
         "time ratio",
     )
     return (
-        f"Output of `python -m tests.readme_tables speed-analytic` (1-min load average "
+        f"Output of `python -m tests.doc_tables speed-analytic` (1-min load average "
         f"{os.getloadavg()[0]:.1f}):\n\n" + markdown_table(headers, rows)
     )
 
@@ -111,7 +120,7 @@ def _margin() -> str:
         "median cond(result)",
         "median margin / (U cond(result))",
     )
-    return "Output of `python -m tests.readme_tables margin`:\n\n" + markdown_table(headers, rows)
+    return "Output of `python -m tests.doc_tables margin`:\n\n" + markdown_table(headers, rows)
 
 
 def _localization() -> str:
@@ -148,7 +157,7 @@ def _localization() -> str:
     )
     first = records[0]
     return (
-        "Output of `python -m tests.readme_tables localization` (BH Sect. V geometry, eps = 4°, "
+        "Output of `python -m tests.doc_tables localization` (BH Sect. V geometry, eps = 4°, "
         f"exact area in [{first['exact_lo']:.4f}, {first['exact_hi']:.4f}] m² by a paving of "
         f"width {first['paving_width']:.4f} m; 1-min load average {os.getloadavg()[0]:.1f}):\n\n"
         + markdown_table(headers, rows)
@@ -197,4 +206,8 @@ if __name__ == "__main__":
         "names", nargs="*", help=f"blocks to recompute (default all: {', '.join(GENERATORS)})"
     )
     args = parser.parse_args()
-    README.write_text(update(README.read_text(), args.names or list(GENERATORS)))
+    for page in pages():
+        text = page.read_text()
+        wanted = [name for name in args.names or list(GENERATORS) if name in blocks(text)]
+        if wanted:
+            page.write_text(update(text, wanted))

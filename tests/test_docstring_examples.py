@@ -1,0 +1,27 @@
+"""The Examples sections of the main public entry points run and print what they show."""
+
+import doctest
+import importlib
+
+import pytest
+
+ENTRY_POINTS = [
+    "optbound.analytic.strip_fusion:intersect_strip",
+    "optbound.analytic.minkowski:minkowski_sum",
+    "optbound.analytic.bounding_update:bounding_update",
+    "optbound.optimal.intersection:outer_ellipsoid",
+    "optbound.interval.sivia:sivia",
+    "optbound.problems.audit:evaluate",
+]
+
+
+@pytest.mark.parametrize("name", ENTRY_POINTS)
+def test_docstring_examples_run(name):
+    module, attr = name.split(":")
+    mod = importlib.import_module(module)
+    tests = doctest.DocTestFinder(recurse=False).find(getattr(mod, attr), name, module=mod)
+    (test,) = tests
+    assert test.examples, f"{name} has no Examples"
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    assert runner.summarize(verbose=False).failed == 0
