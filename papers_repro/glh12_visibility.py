@@ -446,6 +446,9 @@ def main(
     configs = [{**base, "robots": n} for n in ROBOTS]
     configs += [{**base, "obstacles": n} for n in OBSTACLES if n != BASE["obstacles"]]
     factor_configs = {name: {**base, **change} for name, change in FACTORS.items() if change}
+    stored = _stored_runs(runs)
+    taken = sum(_run_key(c, s) in stored for c in configs for s in seeds)
+    taken += sum(_run_key(c, s) in stored for c in factor_configs.values() for s in factor_seeds)
     wall = time.perf_counter()
     rows = sweep(configs, seeds, jobs, runs)
     frows = sweep(list(factor_configs.values()), factor_seeds, jobs, runs)
@@ -496,9 +499,10 @@ def main(
             markdown_table(*table_f),
             _contraction_table(csum),
             "**Why ours differ.** " + _why(stats_r, stats_o, stats_f, csum),
-            f"{len(rows) + len(frows)} runs in {wall:.0f} s wall time on {jobs} process(es); "
-            f"{cpu_total:.0f} CPU s in all (shared machine: the CPU sum divided by the cores "
-            "is the idle-machine estimate).",
+            f"{len(rows) + len(frows)} runs ({taken} of them "
+            f"taken from `--runs`, run earlier) and {wall:.0f} s wall time in this command on "
+            f"{jobs} process(es); {cpu_total:.0f} CPU s of tracking in all runs (shared "
+            "machine: the CPU sum divided by the cores is the idle-machine estimate).",
         ]
     )
     return {
