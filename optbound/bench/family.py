@@ -17,7 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 SUITES = ("tiny", "quick", "full")
-KINDS = ("tightness", "recursive", "speed", "papers")
+KINDS = ("tightness", "recursive", "speed", "papers", "estimation")
 
 
 @dataclass(frozen=True)
@@ -30,9 +30,10 @@ class Family:
         Short identifier used in results.json, CSV and file names.
     title : str
         Human-readable heading for the report.
-    kind : {"tightness", "recursive", "speed", "papers"}
+    kind : {"tightness", "recursive", "speed", "papers", "estimation"}
         Decides how the report presents the records (``papers``: each record's Markdown
-        and its attached figures).
+        and its attached figures; ``estimation``: observers of linear systems per step,
+        :mod:`optbound.bench.linear_estimation`).
     requires : tuple of str
         ``"module:attribute"`` names the family needs; a family whose requirement is missing
         is reported as skipped (with the reason) instead of failing the run.

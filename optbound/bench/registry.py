@@ -20,6 +20,7 @@ FAMILIES: dict[str, str] = {
     "minkowski": "optbound.bench.minkowski_tightness:FAMILY",
     "recursive": "optbound.bench.recursive_tightness:FAMILY",
     "localization": "optbound.bench.localization_tightness:FAMILY",
+    "linear_estimation": "optbound.bench.linear_estimation:FAMILY",
     "speed_analytic": "optbound.bench.speed_analytic:FAMILY",
     "speed_sdp": "optbound.bench.speed_sdp:FAMILY",
     "speed_sivia": "optbound.bench.speed_sivia:FAMILY",

@@ -7,16 +7,16 @@ the polygon is clipped by the two lines of each output row (``y_i - hi_i <= c_i^
 lo_i``, ``[lo_i, hi_i]`` the interval hull of V's i-th coordinate, exact for a box V). The
 vertices, the area and any membership test on them are therefore exact; this is the
 reference against which containment is *proven* (:func:`optbound.estimation.references.
-proven_contains`). Limited to n = 2 and box V (or p = 1 zonotope V, whose interval is exact).
+proven_contains`). Limited to n = 2 and box V (or p = 1 zonotope V, whose interval is exact);
+:mod:`optbound.estimation.exact_polytope` computes the same sets (tested equal) for n <= 4.
 """
 
 from __future__ import annotations
 
 from fractions import Fraction
 
-import numpy as np
-
 from optbound._core import Box
+from optbound.estimation.exact_polytope import output_bounds
 from optbound.estimation.system import LinearSystem
 from optbound.sets.zonotope import Zonotope
 
@@ -90,20 +90,12 @@ def exact_polygons(system: LinearSystem, X0, ys) -> list[list[Point]]:
     Raises
     ------
     ValueError
-        If the system is not 2-D, the noise is not polytopic, or V is a zonotope with several
-        outputs (its per-row intervals would not be exact).
+        If the system is not 2-D, the noise is not polytopic, or V is not a product of
+        intervals (:func:`optbound.estimation.exact_polytope.output_bounds`).
     """
     if system.dim != 2 or not system.polytopic:
         raise ValueError("exact_polygons needs a 2-D system with Box or Zonotope noise")
-    V = system.V
-    if isinstance(V, Box):
-        lo, hi = [_q(x) for x in V.lo], [_q(x) for x in V.hi]
-    elif system.n_outputs > 1 and np.any(np.count_nonzero(V.generators, axis=0) > 1):
-        raise ValueError("exact_polygons needs a box V when there are several outputs")
-    else:
-        rV = [sum(abs(_q(x)) for x in row) for row in V.generators]
-        lo = [_q(c) - r for c, r in zip(V.center, rV, strict=True)]
-        hi = [_q(c) + r for c, r in zip(V.center, rV, strict=True)]
+    lo, hi = output_bounds(system)
     if not isinstance(X0, Box | Zonotope) or X0.dim != 2:
         raise TypeError("X0 must be a 2-D Box or Zonotope")
     A = [[_q(x) for x in row] for row in system.A]

@@ -100,7 +100,8 @@ def alamo_strip(
     lam_iv = point(lam)
     residual = point(mid) - matmul(a[None, :], c[:, None])[0, 0]
     c_iv = lam_iv * residual + c
-    G_iv = matmul(point(np.eye(Z.dim)) - matmul(lam[:, None], a[None, :]), G)
+    # (I - lam a^T) G = G - lam (a^T G): a rank-one update, O(n m) instead of O(n^2 m).
+    G_iv = point(G) - matmul(lam[:, None], matmul(a[None, :], G))
     slack = lam_iv * -s
     c_new, G_new, r = enclose(
         c_iv,

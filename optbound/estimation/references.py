@@ -18,29 +18,36 @@ What is certified:
   certified upper bound: the polygon cut out by the certified support values
   (``ConstrainedZonotope.support``, LP duals checked in outward-rounded arithmetic) along the
   vertex polygon's edge normals, intersected and measured in exact rational arithmetic;
-- :func:`proven_contains`: ``X_k ⊆ estimate`` decided in exact rational arithmetic on the
-  exact polygon of ``optbound.estimation.exact_polygon`` (2-D; boxes, zonotopes, ellipsoids);
+- the exact set itself for n <= 4: :func:`optbound.estimation.exact_polytope.exact_polytopes`,
+  its vertices and volume exact in rational arithmetic (no rounding at all);
+- :func:`proven_contains`: ``X_k ⊆ estimate`` decided in exact rational arithmetic at the
+  exact vertices (any n; boxes, ellipsoids, zonotopes, and constrained zonotopes by exact
+  parameter certificates, ``optbound.estimation.exact_membership``);
 - :func:`interval_hull`: the exact set's interval hull by certified LP bounds (any n): the
   best box, rounded outward;
-- :func:`exact_mvee`: ``optbound.optimal.mvee`` of those vertices (2-D; it contains every
+- :func:`exact_mvee`: ``optbound.optimal.mvee`` of the LP vertices (2-D; it contains every
   vertex, checked in float64, so it contains the polygon up to the LP tolerance);
+  :func:`polytope_mvee`: the same of the exact vertices (n <= 4), every exact vertex proven
+  inside in rational arithmetic (inflated if needed);
 - :func:`one_step_optimal`: ``optbound.optimal.outer_ellipsoid`` of the prediction ∩ the strips
   (certified S-procedure SDP).
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
 from fractions import Fraction
 
 import numpy as np
 
 from optbound._core import Box
 from optbound.estimation.ellipsoidal import CRITERIA, WEIGHTS, measurement_strips, predict
+from optbound.estimation.exact_membership import max_level, proven_inside
 from optbound.estimation.noise import ellipsoid_of
+from optbound.estimation.rational_polytope import RationalPolytope
 from optbound.estimation.system import LinearSystem
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
 from optbound.sets.ellipsoid import Ellipsoid
-from optbound.sets.zonotope import Zonotope
 
 
 def _shoelace(P) -> Fraction:
@@ -84,36 +91,17 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     return float(_shoelace(pts)), _up(_shoelace(corners))
 
 
-def proven_contains(outer, vertices: list) -> bool | None:
-    """Whether ``outer`` contains the 2-D polygon with the exact (Fraction) ``vertices``
-    (e.g. of :func:`optbound.estimation.exact_polygon.exact_polygons`), decided in exact
-    rational arithmetic: a Box by its bounds, an Ellipsoid by ``(p - c)^T Q^{-1} (p - c) <= 1``
-    at each vertex, a spanning Zonotope by its facet slabs ``|n^T (p - c)| <= sum_j |n^T
-    g_j|`` (n a generator turned by 90 degrees). None: not decided for this type
-    (constrained zonotopes, flat zonotopes)."""
-    q = [(Fraction(p[0]), Fraction(p[1])) for p in vertices]
-    if isinstance(outer, Box):
-        lo, hi = [Fraction(float(x)) for x in outer.lo], [Fraction(float(x)) for x in outer.hi]
-        return all(lo[i] <= p[i] <= hi[i] for p in q for i in (0, 1))
-    if isinstance(outer, Ellipsoid):
-        (a, b), (_, d) = [[Fraction(float(x)) for x in row] for row in outer.shape]
-        c = [Fraction(float(x)) for x in outer.center]
-        det = a * d - b * b
-        return all(
-            d * (p[0] - c[0]) ** 2 - 2 * b * (p[0] - c[0]) * (p[1] - c[1]) + a * (p[1] - c[1]) ** 2
-            <= det
-            for p in q
-        )
-    if isinstance(outer, Zonotope) and np.linalg.matrix_rank(outer.generators) == 2:
-        c = [Fraction(float(x)) for x in outer.center]
-        G = [(Fraction(float(g[0])), Fraction(float(g[1]))) for g in outer.generators.T]
-        for g in G:
-            n = (-g[1], g[0])
-            h = sum(abs(n[0] * e[0] + n[1] * e[1]) for e in G)
-            if any(abs(n[0] * (p[0] - c[0]) + n[1] * (p[1] - c[1])) > h for p in q):
-                return False
-        return True
-    return None
+def proven_contains(outer, vertices) -> bool | None:
+    """Whether ``outer`` contains the polytope with the exact (Fraction) ``vertices`` (e.g. of
+    :func:`optbound.estimation.exact_polygon.exact_polygons` in 2-D or
+    :func:`optbound.estimation.exact_polytope.exact_polytopes` for n <= 4), decided in exact
+    rational arithmetic at each vertex by
+    :func:`optbound.estimation.exact_membership.proven_inside`: a Box by its bounds, an
+    Ellipsoid by ``(p - c)^T Q^{-1} (p - c) <= 1``, a spanning Zonotope by its facet slabs, a
+    ConstrainedZonotope by an exact parameter certificate per vertex (Scott et al. 2016's
+    representation). None: not decided (a flat zonotope, a failed certificate, another
+    type); a constrained zonotope is never refuted (False)."""
+    return proven_inside(outer, vertices)
 
 
 def interval_hull(X: ConstrainedZonotope) -> Box:
@@ -126,6 +114,41 @@ def exact_mvee(X: ConstrainedZonotope):
     from optbound import optimal
 
     return optimal.mvee(X.vertices())
+
+
+def polytope_mvee(P: RationalPolytope):
+    """The minimum-volume ellipsoid of an exact polytope (n <= 4), certified exactly.
+
+    ``optbound.optimal.mvee`` (the SDP of Boyd & Vandenberghe 2004, Sect. 8.4.1) of the
+    vertices rounded to floats, then every exact vertex is checked in rational arithmetic
+    (:func:`optbound.estimation.exact_membership.max_level`) and the ellipsoid inflated about
+    its centre by ``sqrt`` of the worst level (rounded up) until all are inside: the result
+    contains the exact polytope with no rounding assumption. Cost: one SDP with V points plus
+    an exact ``n x n`` inversion and V exact quadratic forms per check.
+
+    Returns
+    -------
+    OuterResult
+        As :func:`optbound.optimal.mvee`; ``inflation`` includes the exact check's factor.
+
+    Raises
+    ------
+    ValueError
+        If the polytope is flat (no ellipsoid of positive volume is its MVEE).
+    """
+    from optbound import optimal
+
+    if P.volume == 0:
+        raise ValueError("P must be full-dimensional (it is flat or empty): it has no MVEE")
+    res = optimal.mvee(P.as_array())
+    E, alpha = res.ellipsoid, 1.0
+    for _ in range(8):
+        worst = max_level(E, P.vertices)
+        if worst <= 1:
+            return replace(res, ellipsoid=E, objective=E.volume(), inflation=res.inflation * alpha)
+        step = _up(Fraction(np.sqrt(float(worst)))) * (1.0 + 4.0 * np.finfo(float).eps)
+        E, alpha = E.scaled(step), alpha * step
+    raise optimal.CertificationError("the MVEE still misses an exact vertex after inflation")
 
 
 def one_step_optimal(system: LinearSystem, E_prev: Ellipsoid, y, method: str):

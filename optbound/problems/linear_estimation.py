@@ -10,14 +10,16 @@ is the simulated ``x_k`` (None for Alamo's example).
 The true set is described once, by the exact rational polygon of ``X_k``
 (:func:`optbound.estimation.exact_polygon.exact_polygons`: every float of the data read as the
 rational it is, no rounding): a box is TRUE when every corner satisfies every edge's
-half-plane, FALSE when the whole box violates one, decided in ``Fraction`` arithmetic. Only
+half-plane, FALSE when the whole box violates one, decided exactly (a float filter with a
+proven margin, ``Fraction`` arithmetic near an edge). Only
 2-D systems for now: the exact polygon is 2-D (higher dimensions would need a certified
 H-representation of the constrained zonotope ``X_k``).
 
-References: ``"optimal_ellipsoid"`` is the MVEE of ``X_k``'s vertices
-(:func:`optbound.estimation.references.exact_mvee`); ``"best_box"`` the hull of the exact
-paving, which here is the exact polygon's interval hull rounded outward to floats
-(:func:`outward_hull`, the paving's domain): tighter than, and as certain as, the LP hull
+References: ``"optimal_ellipsoid"`` is the MVEE (:func:`optbound.optimal.mvee`) of the exact
+polygon's vertices rounded to floats (the polygon is at hand, so no LP vertex search of the
+constrained zonotope ``X_k`` is needed: that search is one LP per vertex); ``"best_box"``
+the hull of the exact paving, which here is the exact polygon's interval hull rounded outward
+to floats (:func:`outward_hull`, the paving's domain): tighter than, and as certain as, the LP hull
 ``references.interval_hull``.
 """
 
@@ -28,14 +30,12 @@ from fractions import Fraction
 import numpy as np
 
 from optbound._core import Box
-from optbound.estimation import exact_sets
 from optbound.estimation.exact_polygon import Point, exact_polygons
-from optbound.estimation.references import exact_mvee
-from optbound.interval import Tri
 from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import alamo2005
 from optbound.scenarios.linear_systems import random_system
+from optbound.sets.constrained_zonotope_polygon import polygon_box_test
 
 NAME = "linear_estimation"
 # (steps k of Alamo's example, steps k of the random systems, random systems per k).
@@ -77,41 +77,27 @@ def instance(system: str, seed: int, k: int) -> tuple[dict, np.ndarray | None]:
     raise ValueError(f"system must be 'alamo' or 'random', got {system!r}")
 
 
-def half_planes(P: list[Point]) -> list[tuple[Fraction, Fraction, Fraction]]:
-    """``(a, b, h)`` per edge of the ccw convex polygon ``P``: ``P = {a x + b y <= h}``."""
-    out = []
-    for k in range(len(P)):
-        (px, py), (qx, qy) = P[k], P[(k + 1) % len(P)]
-        a, b = qy - py, px - qx
-        out.append((a, b, a * px + b * py))
-    return out
-
-
 def polygon_test(P: list[Point]):
-    """The exact three-valued box test of the convex polygon ``P`` (module docstring)."""
+    """The exact three-valued box test of the convex polygon ``P`` (module docstring) as the
+    ``test(x, y)`` of a Problem (``constrained_zonotope_polygon.polygon_box_test``)."""
     if len(P) < 3:
         raise ValueError("the exact set is flat or empty: it has no polygon test")
-    planes = half_planes(P)
+    boxes = polygon_box_test(P)
 
     def test(x, y) -> np.ndarray:
-        lo_x, hi_x, lo_y, hi_y = (
-            np.broadcast_to(arr, np.broadcast(x.lo, y.lo).shape).ravel()
-            for arr in (x.lo, x.hi, y.lo, y.hi)
+        shape = np.broadcast(x.lo, y.lo).shape
+        B = np.stack(
+            [
+                np.stack(
+                    [np.broadcast_to(x.lo, shape).ravel(), np.broadcast_to(x.hi, shape).ravel()], 1
+                ),
+                np.stack(
+                    [np.broadcast_to(y.lo, shape).ravel(), np.broadcast_to(y.hi, shape).ravel()], 1
+                ),
+            ],
+            axis=1,
         )
-        out = np.empty(len(lo_x), dtype=np.int8)
-        for i in range(len(lo_x)):
-            X = (Fraction(float(lo_x[i])), Fraction(float(hi_x[i])))
-            Y = (Fraction(float(lo_y[i])), Fraction(float(hi_y[i])))
-            verdict = Tri.TRUE
-            for a, b, h in planes:
-                ax, by = sorted((a * X[0], a * X[1])), sorted((b * Y[0], b * Y[1]))
-                if ax[0] + by[0] > h:
-                    verdict = Tri.FALSE
-                    break
-                if ax[1] + by[1] > h:
-                    verdict = Tri.UNKNOWN
-            out[i] = verdict
-        return out.reshape(np.broadcast(x.lo, y.lo).shape)
+        return boxes(B).reshape(shape)
 
     return test
 
@@ -136,12 +122,11 @@ def problem(task: dict) -> Problem:
     data, truth = instance(task["system"], task["seed"], task["k"])
     P = exact_polygons(data["system"], data["X0"], data["ys"])[-1]
     domain = outward_hull(P)
-    cache: dict = {}
 
-    def exact_set():
-        if "X" not in cache:
-            cache["X"] = exact_sets(data["system"], data["X0"], data["ys"])[-1]
-        return cache["X"]
+    def optimal_ellipsoid(_):
+        from optbound import optimal  # cvxpy: loaded when a reference is asked for
+
+        return optimal.mvee(np.array(P, dtype=float)).ellipsoid
 
     suffix = "" if task["system"] == "alamo" else f"-r{task['rep']}"
     return Problem(
@@ -154,7 +139,7 @@ def problem(task: dict) -> Problem:
         test=polygon_test(P),
         domain=domain,
         eps=float(np.max(domain.widths)) * RELATIVE_EPS,
-        optimal=lambda _: exact_mvee(exact_set()).ellipsoid,
+        optimal=optimal_ellipsoid,
     )
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from optbound.report import figures
+from optbound.report.estimation import estimation_section
 from optbound.report.estimators import estimators_section
 from optbound.report.headline import HEADERS, headline_rows
 from optbound.report.results import write_csv
@@ -134,6 +135,8 @@ def _family_section(name: str, fam: dict, out: Path) -> list[str]:
             parts += _recursive_section(fam["records"], out)
         elif fam["kind"] == "papers":
             parts += papers_section(fam["records"])
+        elif fam["kind"] == "estimation":
+            parts += estimation_section(fam["records"])
         else:
             parts.append(_speed_table(fam["records"]))
     elif not fam["notes"] and not fam["errors"]:

@@ -6,6 +6,7 @@ the benchmark page of the documentation, so every number a reader sees first is 
 
 from __future__ import annotations
 
+from optbound.report.estimation import estimation_rows
 from optbound.report.summary import group, ratio_stats, without_degenerate_lower
 from optbound.report.tables import fmt_factor, fmt_ratio, fmt_seconds
 
@@ -24,6 +25,8 @@ def headline_rows(results: dict) -> list[tuple[str, str]]:
             rows.extend(_recursive_rows(fam["records"]))
         elif fam["kind"] == "papers":
             rows.extend(_paper_rows(fam["records"]))
+        elif fam["kind"] == "estimation":
+            rows.extend(estimation_rows(fam["records"]))
         else:
             rows.extend(_speed_rows(fam))
     return rows

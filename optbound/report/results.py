@@ -75,9 +75,15 @@ def records_of(results: dict, kinds: tuple[str, ...]) -> list[dict]:
 
 
 def write_csv(results: dict, out_dir: str | Path) -> list[Path]:
-    """Write ``tightness.csv`` (tightness and recursive records) and ``speed.csv``."""
+    """Write ``tightness.csv`` (tightness and recursive records), ``speed.csv`` and
+    ``estimation.csv`` (observers of linear systems, per step)."""
     written = []
-    for name, kinds in (("tightness", ("tightness", "recursive")), ("speed", ("speed",))):
+    sheets = (
+        ("tightness", ("tightness", "recursive")),
+        ("speed", ("speed",)),
+        ("estimation", ("estimation",)),
+    )
+    for name, kinds in sheets:
         rows = records_of(results, kinds)
         if not rows:
             continue

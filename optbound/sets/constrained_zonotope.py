@@ -85,6 +85,7 @@ class ConstrainedZonotope(ConvexSet):
         self._A, self._b = _constraints(A, b, self._G.shape[1])
         for arr in (self._c, self._G, self._A, self._b):
             arr.setflags(write=False)
+        self._polygons = None  # 2-D certified polygons, built on first use
 
     @classmethod
     def _compacted(cls, c, G, A, b) -> ConstrainedZonotope:
@@ -138,11 +139,21 @@ class ConstrainedZonotope(ConvexSet):
     # ----------------------------------------------------------------- membership
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
         """Float test per row of ``X``: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is at
-        most ``1 + tol`` (one LP per point)."""
+        most ``1 + tol`` (one LP per point). In 2-D a point inside the certified inner polygon
+        (:meth:`tri_contains`) is answered True without an LP, and with ``tol == 0`` a point
+        beyond the certified outer polygon False."""
+        from optbound.interval.tribool import Tri
         from optbound.sets.zonotope_membership import lp_contains
 
         pts, single = v.points("X", X, self.dim)
-        inside = lp_contains(self._c, self._G, self._A, self._b, pts, tol)
+        inside = np.zeros(pts.shape[0], dtype=bool)
+        todo = np.ones(pts.shape[0], dtype=bool)
+        if self.dim == 2 and (polygons := self._certified_polygons()) is not None:
+            tri = polygons.tri(np.stack([pts, pts], axis=2))
+            inside = tri == Tri.TRUE
+            todo = (tri == Tri.UNKNOWN) if tol == 0 else ~inside
+        if todo.any():
+            inside[todo] = lp_contains(self._c, self._G, self._A, self._b, pts[todo], tol)
         return bool(inside[0]) if single else inside
 
     def is_empty(self) -> bool:
@@ -179,12 +190,20 @@ class ConstrainedZonotope(ConvexSet):
         return Box(np.minimum(lo, hi), np.maximum(lo, hi))
 
     def tri_contains(self, boxes) -> np.ndarray:
-        """Tri values per box (m, n, 2): FALSE when ``box ∩ CZ`` is proven empty (the box's
-        bounding-box test, else a Farkas certificate of the generalized intersection);
-        TRUE is not proven for constrained zonotopes, so the others are UNKNOWN."""
+        """Tri values per box (m, n, 2).
+
+        In 2-D, from the certified inner and outer polygons
+        (:mod:`optbound.sets.constrained_zonotope_polygon`, built once per set): TRUE when
+        the box is inside the inner one, FALSE when it is beyond an edge of the outer one.
+        Otherwise FALSE when ``box ∩ CZ`` is proven empty (the box's bounding-box test, else
+        a Farkas certificate of the generalized intersection, one LP per box); TRUE is not
+        proven there, so the others are UNKNOWN.
+        """
         from optbound.interval.tribool import Tri
 
         B = box_array("boxes", boxes, self.dim)
+        if self.dim == 2 and (polygons := self._certified_polygons()) is not None:
+            return polygons.tri(B)
         out = np.full(B.shape[0], Tri.UNKNOWN, dtype=np.int8)
         try:
             hull = self.bounding_box()
@@ -196,6 +215,43 @@ class ConstrainedZonotope(ConvexSet):
             if self.generalized_intersection(Box(B[k, :, 0], B[k, :, 1])).is_empty():
                 out[k] = Tri.FALSE
         return out
+
+    def volume_bounds(self, eps: float | None = None) -> tuple[float, float]:
+        """Certified bracket ``lo <= volume <= hi``.
+
+        In 2-D the areas of the certified inner and outer polygons
+        (:mod:`optbound.sets.constrained_zonotope_polygon`); a flat or empty 2-D set gives
+        ``(0, outer area)`` or ``(0, 0)``. In other dimensions ``(0, volume of the certified
+        interval hull)``: a valid but loose bracket. ``eps`` (the ``VolumeBracket``
+        protocol's resolution) is unused.
+        """
+        from fractions import Fraction
+
+        from optbound.sets.constrained_zonotope_polygon import round_up
+
+        if self.dim == 2:
+            polygons = self._certified_polygons()
+            if polygons is not None:
+                return polygons.area_bracket()
+        try:
+            hull = self.bounding_box()
+        except EmptySetError:
+            return 0.0, 0.0
+        volume = Fraction(1)
+        for lo, hi in zip(hull.lo, hull.hi, strict=True):
+            volume *= Fraction(float(hi)) - Fraction(float(lo))
+        return 0.0, round_up(volume)
+
+    def _certified_polygons(self):
+        """The 2-D certified polygons (cached), or None for a flat or empty set."""
+        from optbound.sets.constrained_zonotope_polygon import certified_polygons
+
+        if self._polygons is None:
+            try:
+                self._polygons = certified_polygons(self)
+            except ValueError:  # flat or empty: the LP tests remain
+                self._polygons = False
+        return self._polygons or None
 
     # ----------------------------------------------------------------- operations
     def affine_map(self, A, t=None) -> ConstrainedZonotope:
@@ -309,15 +365,18 @@ class ConstrainedZonotope(ConvexSet):
         return Z
 
     def _pivot(self) -> tuple[int, int] | None:
+        """The pair (i, j) of :meth:`eliminate_constraints` (vectorised; ties: larger
+        ``|a_ij|``, then the first in row-major order), None if ``A`` is all zero."""
         A, b = np.abs(self._A), np.abs(self._b)
+        rows, cols = np.nonzero(A)
+        if rows.size == 0:
+            return None
         G = np.linalg.norm(np.vstack([self._G, self._A]), axis=0)
-        best, key = None, None
-        for i, j in zip(*np.nonzero(A), strict=True):
-            rho = (b[i] + A[i].sum() - A[i, j]) / A[i, j]
-            k = (G[j] * max(0.0, rho - 1.0), -A[i, j])
-            if key is None or k < key:
-                best, key = (int(i), int(j)), k
-        return best
+        a = A[rows, cols]
+        rho = (b[rows] + A.sum(axis=1)[rows] - a) / a
+        cost = G[cols] * np.maximum(0.0, rho - 1.0)
+        best = np.lexsort((np.arange(rows.size), -a, cost))[0]
+        return int(rows[best]), int(cols[best])
 
     def _eliminate_one(self) -> ConstrainedZonotope:
         pivot = self._pivot()
@@ -355,33 +414,54 @@ class ConstrainedZonotope(ConvexSet):
 
         Support points in eight directions, then for each edge the support point along its
         outward normal is inserted until no edge moves (the polygon is then the set, up to
-        the LP tolerance).
+        the LP tolerance). An edge that did not move is never asked again, so the cost is
+        about two LPs per vertex.
         """
+        return self._vertex_search()[0]
+
+    def _vertex_search(self) -> tuple[np.ndarray, list[np.ndarray]]:
+        """:meth:`vertices` and, per vertex, the LP solution ``xi`` it came from (a point
+        of the set up to the LP tolerance; the certified inner polygon starts from them)."""
         if self.dim != 2:
             raise ValueError(f"vertices() is for 2-D sets, this one has dim {self.dim}")
+        xis: dict[tuple, np.ndarray] = {}  # the rounded point (as _ccw_unique rounds) -> xi
+
+        def support_point(d: np.ndarray) -> np.ndarray | None:
+            xi = self._support_xi(d)
+            if xi is None:
+                return None
+            point = self._c + self._G @ xi
+            xis[tuple(np.round(point, 12))] = xi
+            return point
+
         angles = np.linspace(0.0, 2.0 * np.pi, 8, endpoint=False)
-        pts = [self._support_point(np.array([np.cos(t), np.sin(t)])) for t in angles]
+        pts = [support_point(np.array([np.cos(t), np.sin(t)])) for t in angles]
         if any(p is None for p in pts):
-            return np.zeros((0, 2))
+            return np.zeros((0, 2)), []
         poly = _ccw_unique(np.array(pts))
         scale = 1e-9 * max(1.0, float(np.abs(self._G).sum() + np.abs(self._c).sum()))
+        final: set[tuple] = set()  # edges (p, q) whose outward support point is on them
         for _ in range(200):
             grown = False
             out = [poly[0]]
             for p, q in zip(poly, np.roll(poly, -1, axis=0), strict=True):
+                edge = (*p, *q)
                 normal = np.array([q[1] - p[1], p[0] - q[0]])
-                if np.any(normal != 0):
-                    s = self._support_point(normal)
-                    if normal @ (s - p) > scale * np.linalg.norm(normal):
+                if edge not in final and np.any(normal != 0):
+                    s = support_point(normal)
+                    if s is not None and normal @ (s - p) > scale * np.linalg.norm(normal):
                         out.append(s)
                         grown = True
+                    else:
+                        final.add(edge)
                 out.append(q)
             poly = _ccw_unique(np.array(out[:-1]))
             if not grown:
                 break
-        return poly
+        return poly, [xis[key] for p in poly if (key := tuple(p)) in xis]
 
-    def _support_point(self, d: np.ndarray) -> np.ndarray | None:
+    def _support_xi(self, d: np.ndarray) -> np.ndarray | None:
+        """The LP's ``xi`` maximising ``d^T G xi`` (float, not certified); None if it fails."""
         from scipy.optimize import linprog
 
         res = linprog(
@@ -391,7 +471,7 @@ class ConstrainedZonotope(ConvexSet):
             bounds=(-1.0, 1.0),
             method="highs",
         )
-        return None if res.status != 0 else self._c + self._G @ res.x
+        return None if res.status != 0 else res.x
 
     def boundary(self, resolution: int = 0) -> np.ndarray:
         """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'

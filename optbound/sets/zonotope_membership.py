@@ -26,30 +26,37 @@ from optbound.interval.tribool import from_masks
 from optbound.sets.certified import matmul, point
 
 
+def min_norm_parameters(
+    c: np.ndarray, G: np.ndarray, A: np.ndarray, b: np.ndarray, x: np.ndarray
+) -> np.ndarray | None:
+    """A float minimiser ``(xi, t)`` of ``t s.t. |xi| <= t, G xi = x - c, A xi = b`` (HiGHS),
+    shape (m + 1,), or None if the LP reports no solution; ``G`` has at least one column."""
+    m = G.shape[1]
+    eye = np.eye(m)
+    cost = np.zeros(m + 1)
+    cost[-1] = 1.0
+    res = linprog(
+        cost,
+        A_ub=np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]]),
+        b_ub=np.zeros(2 * m),
+        A_eq=np.column_stack([np.vstack([G, A]), np.zeros(G.shape[0] + A.shape[0])]),
+        b_eq=np.concatenate([x - c, b]),
+        bounds=[(None, None)] * m + [(0.0, None)],
+        method="highs",
+    )
+    return res.x if res.status == 0 else None
+
+
 def lp_contains(
     c: np.ndarray, G: np.ndarray, A: np.ndarray, b: np.ndarray, pts: np.ndarray, tol: float
 ) -> np.ndarray:
     """Float test per point: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is ``<= 1 + tol``."""
-    m = G.shape[1]
-    if m == 0:
+    if G.shape[1] == 0:
         return np.all(np.abs(pts - c) <= tol * np.maximum(1.0, np.abs(c)), axis=1)
-    eye = np.eye(m)
-    A_ub = np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]])
-    A_eq = np.column_stack([np.vstack([G, A]), np.zeros(G.shape[0] + A.shape[0])])
-    cost = np.zeros(m + 1)
-    cost[-1] = 1.0
     inside = np.zeros(pts.shape[0], dtype=bool)
     for k, x in enumerate(pts):
-        res = linprog(
-            cost,
-            A_ub=A_ub,
-            b_ub=np.zeros(2 * m),
-            A_eq=A_eq,
-            b_eq=np.concatenate([x - c, b]),
-            bounds=[(None, None)] * m + [(0.0, None)],
-            method="highs",
-        )
-        inside[k] = res.status == 0 and res.x[-1] <= 1.0 + tol
+        sol = min_norm_parameters(c, G, A, b, x)
+        inside[k] = sol is not None and sol[-1] <= 1.0 + tol
     return inside
 
 

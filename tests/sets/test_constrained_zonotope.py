@@ -282,13 +282,82 @@ def test_tri_contains_false_is_proven(seed):
     lo = rng.uniform(hull_box.lo - 0.3, hull_box.hi, size=(12, 2))
     boxes = np.stack([lo, lo + rng.uniform(0.0, 0.3, size=(12, 2))], axis=2)
     tri = C.tri_contains(boxes)
-    assert Tri.TRUE not in tri.tolist()
     H = X.hull(X.set_points(C))
     for box, t in zip(boxes, tri, strict=True):
         if t == Tri.FALSE:
             assert X.disjoint(H, X.hull(X.box_corners(box)))
+        if t == Tri.TRUE:
+            assert all(X.in_hull(H, p) for p in X.box_corners(box))
     far = np.array([np.column_stack([hull_box.hi + 1.0, hull_box.hi + 2.0])])
     assert C.tri_contains(far).tolist() == [Tri.FALSE]
+
+
+@settings(max_examples=12)
+@given(seeds)
+def test_tri_contains_true_is_proven_and_found_in_2d(seed):
+    # Small boxes around points of the set: inside ones are TRUE (the certified inner
+    # polygon), each checked exactly against the exact vertex hull.
+    rng = np.random.default_rng(seed)
+    C = random_cz(rng)
+    H = X.hull(X.set_points(C))
+    V = np.array([[float(p[0]), float(p[1])] for p in H])
+    centre = V.mean(axis=0)
+    pts = centre + rng.uniform(0.0, 1.0, (40, 1)) * (V[rng.integers(0, len(V), 40)] - centre)
+    half = 1e-3 * np.abs(V - centre).max()
+    boxes = np.stack([pts - half, pts + half], axis=2)
+    tri = C.tri_contains(boxes)
+    assert np.sum(tri == Tri.TRUE) >= 10
+    for box, t in zip(boxes, tri, strict=True):
+        if t == Tri.TRUE:
+            assert all(X.in_hull(H, p) for p in X.box_corners(box))
+        if t == Tri.FALSE:
+            assert X.disjoint(H, X.hull(X.box_corners(box)))
+
+
+@settings(max_examples=15)
+@given(seeds, st.integers(0, 2))
+def test_volume_bounds_bracket_the_exact_area(seed, nc):
+    rng = np.random.default_rng(seed)
+    C = random_cz(rng, nc=nc)
+    lo, hi = C.volume_bounds()
+    exact = X.area(X.hull(X.set_points(C)))
+    assert F(lo) <= exact <= F(hi)
+    assert hi - lo <= 1e-6 * float(exact)  # the two polygons meet at the LP tolerance
+
+
+def test_volume_bounds_beyond_2d_are_the_hull_volume():
+    C = ConstrainedZonotope(np.zeros(3), np.eye(3), [[1.0, 1.0, 0.0]], [0.0])
+    lo, hi = C.volume_bounds()  # the certified hull [-1, 1]^3, its LP bounds rounded outward
+    assert lo == 0.0 and 8.0 <= hi <= 8.0 * (1 + 1e-12)
+
+
+def test_polygon_box_test_is_exact_at_the_edges():
+    from optbound.sets.constrained_zonotope_polygon import polygon_box_test
+
+    # The triangle (0, 0), (1, 0), (0, 1); boxes touching the hypotenuse x + y = 1 from
+    # either side by one ulp, and one corner exactly on it.
+    P = [(F(0), F(0)), (F(1), F(0)), (F(0), F(1))]
+    one_up, one_down = np.nextafter(1.0, 2.0), np.nextafter(1.0, 0.0)
+    boxes = np.array(
+        [
+            [[0.25, 0.5], [0.25, 0.5]],  # corner (0.5, 0.5) on the edge: inside
+            [[0.25, 0.5], [0.25, np.nextafter(0.5, 1.0)]],  # one ulp over it
+            [[0.5, 0.6], [np.nextafter(0.5, 1.0), 0.6]],  # whole box one ulp beyond it
+            [[0.5, 0.6], [0.5, 0.6]],  # touching it at (0.5, 0.5)
+            [[0.1, 0.2], [0.1, 0.2]],
+            [[one_down, one_down], [0.0, 0.0]],
+            [[one_up, one_up], [0.0, 0.0]],
+        ]
+    )
+    assert polygon_box_test(P)(boxes).tolist() == [
+        Tri.TRUE,
+        Tri.UNKNOWN,
+        Tri.FALSE,
+        Tri.UNKNOWN,
+        Tri.TRUE,
+        Tri.TRUE,
+        Tri.FALSE,
+    ]
 
 
 def test_tri_contains_uses_the_constraints():
