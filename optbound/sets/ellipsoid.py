@@ -36,6 +36,17 @@ class Ellipsoid(ConvexSet):
         number, magnitudes, centre against size: see ``optbound._core.domain``).
     TypeError
         If an argument is complex or not numeric.
+
+    Examples
+    --------
+    >>> from optbound.sets import Ellipsoid
+    >>> E = Ellipsoid([0.0, 0.0], [[4.0, 0.0], [0.0, 1.0]])
+    >>> E.semi_axes().tolist()
+    [1.0, 2.0]
+    >>> E.contains([[1.9, 0.0], [0.0, 1.1]]).tolist()
+    [True, False]
+    >>> E.extent([1.0, 0.0])
+    (-2.0, 2.0)
     """
 
     def __init__(self, center, shape):
@@ -116,22 +127,56 @@ class Ellipsoid(ConvexSet):
 
     # ----------------------------------------------------------------------- size
     def log_volume(self) -> float:
-        """Natural log of the n-dimensional volume (stable for tiny or huge ellipsoids)."""
+        """Natural log of the n-dimensional volume (stable for tiny or huge ellipsoids).
+
+        Returns
+        -------
+        float
+            ``log vol(unit ball) + sum(log diag L)``, i.e. ``log(vol(unit ball) sqrt(det C))``.
+        """
         n = self.dim
         log_unit_ball = 0.5 * n * log(pi) - lgamma(0.5 * n + 1.0)
         return log_unit_ball + float(np.sum(np.log(np.diag(self._chol))))
 
     def volume(self) -> float:
-        """n-dimensional volume ``vol(unit ball) * sqrt(det C)``."""
+        """n-dimensional volume ``vol(unit ball) * sqrt(det C)``.
+
+        Returns
+        -------
+        float
+            The volume, ``exp(log_volume())`` (may underflow to 0 or overflow to inf).
+        """
         return float(np.exp(self.log_volume()))
 
     def semi_axes(self) -> np.ndarray:
-        """Semi-axis lengths in ascending order (square roots of the eigenvalues of C)."""
+        """Semi-axis lengths in ascending order (square roots of the eigenvalues of C).
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            The semi-axis lengths, ascending.
+        """
         return np.sqrt(np.linalg.eigvalsh(self._shape))
 
     # ----------------------------------------------------------------- membership
     def level(self, X) -> np.ndarray | float:
-        """Quadratic form ``(x - c)^T C^{-1} (x - c)`` per row of X (<= 1 means inside)."""
+        """Quadratic form ``(x - c)^T C^{-1} (x - c)`` per row of X (<= 1 means inside).
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            The level of each point.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         # One cached triangular inverse, then a plain product: a LAPACK call per query costs
         # more than the arithmetic for the small dimensions used here.
@@ -140,17 +185,69 @@ class Ellipsoid(ConvexSet):
         return float(q[0]) if single else q
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        """Membership test ``level(x) <= 1 + tol`` per row of X (a float64 test, not a proof).
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a bool.
+        tol : float, default 1e-9
+            Slack on the level so that boundary points pass.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         q = self.level(X)
         inside = np.asarray(q) <= 1.0 + tol
         return bool(inside) if np.ndim(q) == 0 else inside
 
     def support(self, d) -> np.ndarray | float:
+        """Support function ``h(d) = c^T d + sqrt(d^T C d)`` per row of d.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            ``max {d^T x : x in the ellipsoid}`` per direction.
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is non-finite or its dimension is not ``dim``.
+        """
         dirs, single = v.points("d", d, self.dim)
         h = dirs @ self._center + np.sqrt(np.einsum("ij,jk,ik->i", dirs, self._shape, dirs))
         return float(h[0]) if single else h
 
     def extent(self, a) -> tuple[float, float]:
-        """Range ``[c^T a - sqrt(a^T C a), c^T a + sqrt(a^T C a)]`` of ``a^T x``."""
+        """Range ``[c^T a - sqrt(a^T C a), c^T a + sqrt(a^T C a)]`` of ``a^T x``.
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            Direction of the linear functional.
+
+        Returns
+        -------
+        tuple of float
+            ``(min a^T x, max a^T x)`` over the ellipsoid.
+
+        Raises
+        ------
+        ValueError
+            If ``a`` is non-finite or its length is not ``dim``.
+        """
         return self._extent(v.finite_vector("a", a, self.dim))
 
     def _extent(self, a: np.ndarray) -> tuple[float, float]:
@@ -160,23 +257,72 @@ class Ellipsoid(ConvexSet):
 
     # ------------------------------------------------------------- the SDP protocol
     def quadratic_description(self) -> QuadraticDescription:
-        """One form, ``(x - c)^T C^{-1} (x - c) - 1 <= 0`` (``QuadraticSet.from_ellipsoid``)."""
+        """One form, ``(x - c)^T C^{-1} (x - c) - 1 <= 0`` (``QuadraticSet.from_ellipsoid``).
+
+        Returns
+        -------
+        QuadraticDescription
+            The ellipsoid exactly, as one quadratic form and no linear range.
+        """
         from optbound.sets.quadratic import QuadraticSet  # quadratic.py imports this module
 
         return QuadraticDescription(forms=(QuadraticSet.from_ellipsoid(self),))
 
     def enclosing_ellipsoid(self) -> Ellipsoid:
-        """The ellipsoid itself."""
+        """The ellipsoid itself.
+
+        Returns
+        -------
+        Ellipsoid
+            ``self``.
+        """
         return self
 
     # ---------------------------------------------------------------- operations
     def project(self, dims) -> Ellipsoid:
-        """Orthogonal projection onto the coordinates ``dims`` (a sub-block of C)."""
+        """Orthogonal projection onto the coordinates ``dims`` (a sub-block of C).
+
+        Parameters
+        ----------
+        dims : sequence of int
+            Distinct coordinate indices to keep, in the order wanted.
+
+        Returns
+        -------
+        Ellipsoid
+            The projection, of dimension ``len(dims)``.
+
+        Raises
+        ------
+        ValueError
+            If ``dims`` is empty, repeats an index or indexes outside ``range(dim)``.
+        """
         idx = v.dims_index("dims", dims, self.dim)
         return Ellipsoid(self._center[idx], self._shape[np.ix_(idx, idx)])
 
     def affine_map(self, A, t=None) -> Ellipsoid:
-        """Image ``{A x + t}``; A must have full row rank so that the image is an ellipsoid."""
+        """Image ``{A x + t}``; A must have full row rank so that the image is an ellipsoid.
+
+        The image has centre ``A c + t`` and shape ``A C A^T``.
+
+        Parameters
+        ----------
+        A : array_like, shape (k, n)
+            Linear map, full row rank.
+        t : array_like, shape (k,), optional
+            Translation (zero if omitted).
+
+        Returns
+        -------
+        Ellipsoid
+            The image, of dimension k.
+
+        Raises
+        ------
+        ValueError
+            If ``A`` or ``t`` is non-finite or mis-shaped, or ``A`` has not full row rank
+            (the image would be degenerate).
+        """
         A = v.finite_matrix("A", A, (None, self.dim))
         t = np.zeros(A.shape[0]) if t is None else v.finite_vector("t", t, A.shape[0])
         shape = A @ self._shape @ A.T
@@ -188,7 +334,24 @@ class Ellipsoid(ConvexSet):
             ) from None
 
     def scaled(self, factor: float) -> Ellipsoid:
-        """Same centre, every semi-axis multiplied by ``factor`` > 0."""
+        """Same centre, every semi-axis multiplied by ``factor`` > 0.
+
+        Parameters
+        ----------
+        factor : float
+            Positive scale of the semi-axes (the shape matrix is scaled by ``factor**2``).
+
+        Returns
+        -------
+        Ellipsoid
+            The scaled ellipsoid.
+
+        Raises
+        ------
+        ValueError
+            If ``factor`` is not a positive finite number, or the scaled ellipsoid leaves the
+            supported domain.
+        """
         factor = v.finite_scalar("factor", factor)
         if factor <= 0:
             raise ValueError(f"factor must be positive, got {factor}")
@@ -203,7 +366,13 @@ class Ellipsoid(ConvexSet):
             ) from None
 
     def bounding_box(self) -> Box:
-        """Tightest axis-aligned box: half-widths ``sqrt(diag C)``."""
+        """Tightest axis-aligned box: half-widths ``sqrt(diag C)``.
+
+        Returns
+        -------
+        Box
+            ``[c - sqrt(diag C), c + sqrt(diag C)]``.
+        """
         half = np.sqrt(np.diag(self._shape))
         return Box(self._center - half, self._center + half)
 
@@ -212,6 +381,18 @@ class Ellipsoid(ConvexSet):
         """``m`` points uniformly distributed in the ellipsoid, shape (m, n).
 
         Uniform in the unit ball (Gaussian direction, radius ``U^{1/n}``), mapped by L.
+
+        Parameters
+        ----------
+        m : int
+            Number of points.
+        rng : numpy.random.Generator or int
+            Random generator or integer seed (None is refused: results must be seeded).
+
+        Returns
+        -------
+        ndarray, shape (m, n)
+            The sampled points.
         """
         gen = v.rng_of(rng)
         n = self.dim
@@ -221,14 +402,43 @@ class Ellipsoid(ConvexSet):
         return self._center + (g * r[:, None]) @ self._chol.T
 
     def sample_boundary(self, m: int, rng) -> np.ndarray:
-        """``m`` points on the boundary surface (uniform on the unit sphere, then mapped)."""
+        """``m`` points on the boundary surface (uniform on the unit sphere, then mapped).
+
+        Parameters
+        ----------
+        m : int
+            Number of points.
+        rng : numpy.random.Generator or int
+            Random generator or integer seed (None is refused: results must be seeded).
+
+        Returns
+        -------
+        ndarray, shape (m, n)
+            Points with ``level == 1`` up to rounding.
+        """
         gen = v.rng_of(rng)
         g = gen.standard_normal((m, self.dim))
         g /= np.linalg.norm(g, axis=1, keepdims=True)
         return self._center + g @ self._chol.T
 
     def boundary(self, m: int = 200) -> np.ndarray:
-        """``m`` points tracing the boundary of a 2-D ellipse in order (for plotting)."""
+        """``m`` points tracing the boundary of a 2-D ellipse in order (for plotting).
+
+        Parameters
+        ----------
+        m : int, default 200
+            Number of points; the first and last coincide (a closed curve).
+
+        Returns
+        -------
+        ndarray, shape (m, 2)
+            The boundary points, counter-clockwise.
+
+        Raises
+        ------
+        ValueError
+            If the ellipsoid is not 2-D.
+        """
         if self.dim != 2:
             raise ValueError(f"boundary() is for 2-D ellipsoids, this one has dim {self.dim}")
         t = np.linspace(0.0, 2.0 * np.pi, m)
