@@ -28,7 +28,31 @@ from optbound.sets.zonotope_reduction import generator_budget, reduce_generators
 
 
 def center_generators(c, G, c_name: str = "c", G_name: str = "G") -> tuple[np.ndarray, np.ndarray]:
-    """Validate a centre (n,) and generators (n, m), both finite; return float64 copies."""
+    """Validate a centre (n,) and generators (n, m), both finite; return float64 copies.
+
+    Parameters
+    ----------
+    c : array_like, shape (n,)
+        Centre.
+    G : array_like, shape (n, m)
+        Generators, one per column.
+    c_name, G_name : str
+        The argument names used in error messages.
+
+    Returns
+    -------
+    c : np.ndarray, shape (n,)
+        Float64 copy of the centre.
+    G : np.ndarray, shape (n, m)
+        Float64 copy of the generators.
+
+    Raises
+    ------
+    ValueError
+        If an argument is non-finite, empty or the shapes disagree.
+    TypeError
+        If an argument is complex or not numeric.
+    """
     c = real_array(c_name, c)
     if c.ndim != 1 or c.size == 0:
         raise ValueError(f"{c_name} must be a non-empty 1-D vector, got shape {c.shape}")
@@ -59,6 +83,19 @@ class Zonotope(ConvexSet):
         If an argument is non-finite or the shapes disagree.
     TypeError
         If an argument is complex or not numeric.
+
+    Examples
+    --------
+    >>> from optbound.interval.tribool import Tri
+    >>> from optbound.sets import Zonotope
+    >>> Z = Zonotope([0.0, 0.0], [[1.0, 1.0], [0.0, 1.0]])
+    >>> Z.contains([[1.5, 0.5], [0.0, 1.5]]).tolist()
+    [True, False]
+    >>> boxes = [[[0.0, 0.1], [0.0, 0.1]], [[3.0, 4.0], [0.0, 1.0]], [[1.5, 2.5], [0.0, 1.0]]]
+    >>> [Tri(t).name for t in Z.tri_contains(boxes)]  # proven inside, disjoint, undecided
+    ['TRUE', 'FALSE', 'UNKNOWN']
+    >>> Z.volume_bounds()
+    (4.0, 4.0)
     """
 
     def __init__(self, c, G):
@@ -121,7 +158,23 @@ class Zonotope(ConvexSet):
     def outer_ellipsoid(self, weights: str = "norms"):
         """An ellipsoid containing the zonotope (certified; ``weights`` ``"norms"``: the
         trace-minimal member, ``"unit"``: ``m G G^T``, the minimum-volume one for a
-        parallelotope; see :func:`~optbound.sets.zonotope_conversions.zonotope_ellipsoid_shape`)."""
+        parallelotope; see :func:`~optbound.sets.zonotope_conversions.zonotope_ellipsoid_shape`).
+
+        Parameters
+        ----------
+        weights : {"norms", "unit"}, default "norms"
+            The Cauchy-Schwarz weights ``w_i`` of the shape ``(sum w_i) sum g_i g_i^T / w_i``.
+
+        Returns
+        -------
+        Ellipsoid
+            An ellipsoid with the zonotope's centre containing it.
+
+        Raises
+        ------
+        ValueError
+            If the zonotope is flat (generators of rank < n) or ``weights`` is unknown.
+        """
         from optbound.sets.ellipsoid import Ellipsoid
         from optbound.sets.zonotope_conversions import zonotope_ellipsoid_shape
 
@@ -134,6 +187,23 @@ class Zonotope(ConvexSet):
         In 2-D with spanning generators: ``|n_k^T (x - c)| <= (1 + tol) sum_j |n_k^T g_j|``
         for every generator normal ``n_k`` (the zonotope's facets), vectorized. Otherwise
         ``min ||xi||_inf s.t. G xi = x - c`` is at most ``1 + tol`` (one LP per point).
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a bool.
+        tol : float, default 1e-9
+            Relative slack on the defining inequality.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside (up to ``tol``).
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
         """
         from optbound.sets.zonotope_membership import lp_contains, slab_contains
 
@@ -148,20 +218,58 @@ class Zonotope(ConvexSet):
     def tri_contains(self, boxes) -> np.ndarray:
         """Three-valued membership of boxes (m, n, 2): TRUE (box inside), FALSE (disjoint),
         UNKNOWN; proven with outward rounding, see
-        :func:`~optbound.sets.zonotope_membership.tri_contains`."""
+        :func:`~optbound.sets.zonotope_membership.tri_contains`.
+
+        Parameters
+        ----------
+        boxes : array_like, shape (m, n, 2)
+            Boxes as ``[lo, hi]`` rows per coordinate.
+
+        Returns
+        -------
+        ndarray of int8, shape (m,)
+            ``Tri`` value per box.
+
+        Raises
+        ------
+        ValueError
+            If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
+        """
         from optbound.sets.zonotope_membership import tri_contains
 
         return tri_contains(self, boxes)
 
     def support(self, d) -> np.ndarray | float:
-        """Upper bound of ``max d^T x`` per row of ``d``: ``d^T c + ||G^T d||_1`` rounded up."""
+        """Upper bound of ``max d^T x`` per row of ``d``: ``d^T c + ||G^T d||_1`` rounded up.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            An upper bound of the support function per direction.
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is non-finite or its dimension is not ``dim``.
+        """
         dirs, single = v.points("d", d, self.dim)
         h = matmul(dirs, self._c[:, None]).hi[:, 0]
         h = (point(h) + row_sum_up(magnitude(matmul(dirs, self._G)))).hi
         return float(h[0]) if single else h
 
     def bounding_box(self) -> Box:
-        """The interval hull ``c -+ |G| 1``, rounded outward."""
+        """The interval hull ``c -+ |G| 1``, rounded outward.
+
+        Returns
+        -------
+        Box
+            A box containing the zonotope.
+        """
         from optbound.interval import Interval
 
         rad = row_sum_up(np.abs(self._G))
@@ -171,20 +279,72 @@ class Zonotope(ConvexSet):
     # ----------------------------------------------------------------- operations
     def affine_map(self, A, t=None) -> Zonotope:
         """``{A x + t : x in Z}``, any A of shape (p, n); rounding errors become extra
-        axis-aligned generators."""
+        axis-aligned generators.
+
+        Parameters
+        ----------
+        A : array_like, shape (p, n)
+            Linear map.
+        t : array_like, shape (p,), optional
+            Translation (zero if omitted).
+
+        Returns
+        -------
+        Zonotope
+            A zonotope containing the exact image.
+
+        Raises
+        ------
+        ValueError
+            If ``A`` or ``t`` is non-finite or mis-shaped.
+        """
         A = v.finite_matrix("A", A, (None, self.dim))
         t = None if t is None else v.finite_vector("t", t, A.shape[0])
         c, G, _ = affine_image(self._c, self._G, A, t)
         return Zonotope._compacted(c, G)
 
     def project(self, dims) -> Zonotope:
-        """Coordinates ``dims`` of the zonotope (exact: rows are selected, nothing rounds)."""
+        """Coordinates ``dims`` of the zonotope (exact: rows are selected, nothing rounds).
+
+        Parameters
+        ----------
+        dims : sequence of int
+            Distinct coordinate indices to keep.
+
+        Returns
+        -------
+        Zonotope
+            The projection, of dimension ``len(dims)``.
+
+        Raises
+        ------
+        ValueError
+            If ``dims`` is empty, repeats an index or indexes outside ``range(dim)``.
+        """
         idx = v.dims_index("dims", dims, self.dim)
         return Zonotope(self._c[idx], self._G[idx])
 
     def minkowski_sum(self, other):
         """``Z + Y`` for a Zonotope, Box or ConstrainedZonotope ``Y``: generators concatenated
-        (a constrained zonotope if ``Y`` is one)."""
+        (a constrained zonotope if ``Y`` is one).
+
+        Parameters
+        ----------
+        other : Zonotope, Box or ConstrainedZonotope
+            The set added, of dimension ``dim`` (a Box must be bounded).
+
+        Returns
+        -------
+        Zonotope or ConstrainedZonotope
+            A set containing the exact sum (the centres' rounding error is an extra generator).
+
+        Raises
+        ------
+        TypeError
+            If ``other`` is of another type.
+        ValueError
+            If ``other`` has another dimension or is an unbounded Box.
+        """
         from optbound.sets.constrained_zonotope import ConstrainedZonotope
 
         if isinstance(other, ConstrainedZonotope):
@@ -195,14 +355,50 @@ class Zonotope(ConvexSet):
 
     def intersect_strip(self, a, lo, hi):
         """``Z ∩ {x : lo <= a^T x <= hi}`` as a ConstrainedZonotope (see
-        :meth:`ConstrainedZonotope.intersect_strip`)."""
+        :meth:`ConstrainedZonotope.intersect_strip`).
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            Normal of the strip.
+        lo, hi : float
+            Bounds of ``a^T x``.
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A constrained zonotope containing the exact intersection.
+
+        Raises
+        ------
+        ValueError
+            As :meth:`ConstrainedZonotope.intersect_strip`.
+        """
         from optbound.sets.constrained_zonotope import ConstrainedZonotope
 
         return ConstrainedZonotope.from_zonotope(self).intersect_strip(a, lo, hi)
 
     def reduce_order(self, order: float, method: str = "girard") -> Zonotope:
         """A zonotope containing Z with at most ``floor(order * n)`` generators (see
-        ``optbound.sets.zonotope_reduction``)."""
+        ``optbound.sets.zonotope_reduction``).
+
+        Parameters
+        ----------
+        order : float
+            Generators per dimension allowed, at least 1.
+        method : {"girard", "combastel"}, default "girard"
+            Which generators are boxed.
+
+        Returns
+        -------
+        Zonotope
+            A zonotope containing Z (Z itself if it already fits).
+
+        Raises
+        ------
+        ValueError
+            If ``order`` is not a finite number >= 1 or ``method`` is unknown.
+        """
         budget = generator_budget(order, self.dim)
         return Zonotope(self._c, reduce_generators(self._G, budget, method))
 
@@ -216,6 +412,23 @@ class Zonotope(ConvexSet):
         ``eps`` (the ``VolumeBracket`` protocol's resolution) is unused: the bracket is exact
         to one float each side when at most ``max_subsets`` n-subsets of generators exist,
         else the stated sub-zonotope / parallelotope bracket.
+
+        Parameters
+        ----------
+        eps : float, optional
+            Unused (protocol compatibility).
+        max_subsets : int, default 5000
+            Largest number of n-subsets of generators summed exactly.
+
+        Returns
+        -------
+        tuple of float
+            ``(lo, hi)`` with ``lo <= volume <= hi``.
+
+        Raises
+        ------
+        ValueError
+            If ``max_subsets`` is not a positive integer.
         """
         from optbound.sets.zonotope_volume import volume_bounds
 
@@ -228,6 +441,16 @@ class Zonotope(ConvexSet):
         """Vertices of a 2-D zonotope in counter-clockwise order (float, for plotting).
 
         The polygon's edges are the generators sorted by angle, each used twice.
+
+        Returns
+        -------
+        ndarray, shape (k, 2)
+            The vertices (the centre alone if there is no non-zero generator).
+
+        Raises
+        ------
+        ValueError
+            If the zonotope is not 2-D.
         """
         if self.dim != 2:
             raise ValueError(f"vertices() is for 2-D zonotopes, this one has dim {self.dim}")
@@ -242,20 +465,73 @@ class Zonotope(ConvexSet):
 
     def boundary(self, resolution: int = 0) -> np.ndarray:
         """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
-        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon)."""
+        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon).
+
+        Parameters
+        ----------
+        resolution : int, default 0
+            Unused (protocol compatibility).
+
+        Returns
+        -------
+        ndarray, shape (k + 1, 2)
+            The closed polygon.
+
+        Raises
+        ------
+        ValueError
+            If the zonotope is not 2-D.
+        """
         V = self.vertices()
         return np.vstack([V, V[:1]])
 
     def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
         """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``
-        keywords; ``fill=False`` unless given)."""
+        keywords; ``fill=False`` unless given).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Target axes (the current axes if None).
+        dims : tuple of int, default (0, 1)
+            The two coordinates shown.
+        **kwargs
+            Passed to ``ax.fill``.
+
+        Returns
+        -------
+        list of matplotlib.patches.Polygon
+            What ``ax.fill`` returns.
+        """
         from optbound.sets.zonotope_membership import plot_polygon
 
         return plot_polygon(self.project(dims).vertices(), ax, kwargs)
 
 
 def as_zonotope(name: str, Y, dim: int) -> Zonotope:
-    """``Y`` (a Zonotope or a bounded Box) as a Zonotope of dimension ``dim``."""
+    """``Y`` (a Zonotope or a bounded Box) as a Zonotope of dimension ``dim``.
+
+    Parameters
+    ----------
+    name : str
+        The argument name used in error messages.
+    Y : Zonotope or Box
+        The set converted.
+    dim : int
+        The dimension required.
+
+    Returns
+    -------
+    Zonotope
+        ``Y`` itself, or the zonotope of the box.
+
+    Raises
+    ------
+    TypeError
+        If ``Y`` is neither a Zonotope nor a Box.
+    ValueError
+        If ``Y`` has another dimension or is an unbounded Box.
+    """
     if isinstance(Y, Box):
         Y = Zonotope.from_box(Y)
     if not isinstance(Y, Zonotope):

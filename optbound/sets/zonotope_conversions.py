@@ -42,6 +42,21 @@ def ellipsoid_generators(E) -> np.ndarray:
     is proven, ``delta_G >= ||W G G^T W^T - mu I||_2``. Then ``G G^T >= Q`` (W is
     invertible), so ``h_Z >= h_E`` (module docstring). ``s`` is 1 up to a few rounding
     units: the parallelotope circumscribing E along its Cholesky axes.
+
+    Parameters
+    ----------
+    E : Ellipsoid
+        The ellipsoid enclosed.
+
+    Returns
+    -------
+    np.ndarray, shape (n, n)
+        Generators of a parallelotope centred at E's centre containing E.
+
+    Raises
+    ------
+    ValueError
+        If E is too ill-conditioned for the containment to be proven.
     """
     L, W = E.chol, E.chol_inv
     K = matmul(W, E.shape)
@@ -68,11 +83,23 @@ def zonotope_ellipsoid_shape(G: np.ndarray, weights: str = "norms") -> np.ndarra
     trace). Q is enclosed in interval arithmetic and its diagonal raised by an upper bound of
     the Frobenius norm of the enclosure's radius, which dominates the spectral error.
 
+    Parameters
+    ----------
+    G : np.ndarray, shape (n, m)
+        Generators.
+    weights : {"norms", "unit"}, default "norms"
+        The weights ``w_i``.
+
+    Returns
+    -------
+    np.ndarray, shape (n, n)
+        The symmetric shape matrix Q.
+
     Raises
     ------
     ValueError
         If the generators do not span R^n (a flat zonotope has no full-dimensional
-        enclosing ellipsoid of this form).
+        enclosing ellipsoid of this form), or ``weights`` is unknown.
     """
     G = G[:, np.any(G != 0, axis=0)]
     n = G.shape[0]

@@ -64,7 +64,25 @@ def reduce_generators(G: np.ndarray, max_generators: int, method: str = "girard"
 
 
 def generator_budget(order, n: int) -> int:
-    """``floor(order * n)`` for a finite ``order >= 1`` (the usual order parameter)."""
+    """``floor(order * n)`` for a finite ``order >= 1`` (the usual order parameter).
+
+    Parameters
+    ----------
+    order : float
+        Generators per dimension, at least 1.
+    n : int
+        Dimension.
+
+    Returns
+    -------
+    int
+        The generator budget.
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not finite or below 1.
+    """
     order = v.finite_scalar("order", order)
     if order < 1.0:
         raise ValueError(f"order must be >= 1, got {order}")

@@ -40,7 +40,18 @@ def _det(rows: list[list[Fraction]]) -> Fraction:
 
 
 def exact_volume(G: np.ndarray) -> Fraction:
-    """``2^n sum_S |det G_S|`` in exact arithmetic (the floats of G read exactly)."""
+    """``2^n sum_S |det G_S|`` in exact arithmetic (the floats of G read exactly).
+
+    Parameters
+    ----------
+    G : np.ndarray, shape (n, m)
+        Generators.
+
+    Returns
+    -------
+    Fraction
+        The exact volume of ``<c, G>`` (Shephard 1974; McMullen 1984).
+    """
     n, m = G.shape
     cols = [[Fraction(float(x)) for x in G[:, k]] for k in range(m)]
     total = sum(
@@ -64,7 +75,20 @@ def _up(x: Fraction) -> float:
 
 
 def volume_bounds(G: np.ndarray, max_subsets: int = 5000) -> tuple[float, float]:
-    """Certified ``(lo, hi)`` with ``lo <= vol(<c, G>) <= hi`` (module docstring)."""
+    """Certified ``(lo, hi)`` with ``lo <= vol(<c, G>) <= hi`` (module docstring).
+
+    Parameters
+    ----------
+    G : np.ndarray, shape (n, m)
+        Generators (finite).
+    max_subsets : int, default 5000
+        Largest number of n-subsets summed exactly; above it, the sub-zonotope / hull bracket.
+
+    Returns
+    -------
+    tuple of float
+        ``(lo, hi)``; ``(0.0, 0.0)`` for a flat zonotope.
+    """
     G = G[:, np.any(G != 0, axis=0)]
     n, m = G.shape
     if m < n:
