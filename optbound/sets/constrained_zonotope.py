@@ -78,6 +78,22 @@ class ConstrainedZonotope(ConvexSet):
         If an argument is non-finite or the shapes disagree (the message names it).
     TypeError
         If an argument is complex or not numeric.
+
+    Examples
+    --------
+    The diagonal segment of the square ``[-1, 1]^2`` (constraint ``xi_1 + xi_2 = 0``), then
+    the square cut by the strip ``|x_1 + x_2| <= 1``:
+
+    >>> from optbound.sets import ConstrainedZonotope, Zonotope
+    >>> S = ConstrainedZonotope([0.0, 0.0], [[1.0, 0.0], [0.0, 1.0]], [[1.0, 1.0]], [0.0])
+    >>> S.contains([[0.5, -0.5], [0.5, 0.5]]).tolist()
+    [True, False]
+    >>> square = ConstrainedZonotope.from_zonotope(Zonotope([0.0, 0.0], [[1.0, 0.0], [0.0, 1.0]]))
+    >>> cut = square.intersect_strip([1.0, 1.0], -1.0, 1.0)
+    >>> cut.n_constraints
+    1
+    >>> cut.contains([[0.5, 0.4], [0.9, 0.9]]).tolist()
+    [True, False]
     """
 
     def __init__(self, c, G, A, b):
@@ -141,7 +157,25 @@ class ConstrainedZonotope(ConvexSet):
         """Float test per row of ``X``: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is at
         most ``1 + tol`` (one LP per point). In 2-D a point inside the certified inner polygon
         (:meth:`tri_contains`) is answered True without an LP, and with ``tol == 0`` a point
-        beyond the certified outer polygon False."""
+        beyond the certified outer polygon False.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a bool.
+        tol : float, default 1e-9
+            Relative slack on the LP's optimum.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside (up to ``tol``).
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         from optbound.interval.tribool import Tri
         from optbound.sets.zonotope_membership import lp_contains
 
@@ -159,12 +193,34 @@ class ConstrainedZonotope(ConvexSet):
     def is_empty(self) -> bool:
         """True only if the set is *proven* empty (a Farkas certificate checked with outward
         rounding, see :func:`~optbound.sets.certified.proven_empty`); False means "not
-        proven empty", the safe answer for an outer bound."""
+        proven empty", the safe answer for an outer bound.
+
+        Returns
+        -------
+        bool
+            True if emptiness is proven.
+        """
         return proven_empty(self._A, self._b)
 
     def support(self, d) -> np.ndarray | float:
         """Certified upper bound of ``max d^T x`` per row of ``d`` (``-inf`` if proven
-        empty): ``d^T c`` plus the LP bound of :func:`~optbound.sets.certified.max_bound`."""
+        empty): ``d^T c`` plus the LP bound of :func:`~optbound.sets.certified.max_bound`.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            An upper bound of the support function per direction (``-inf`` if proven empty).
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is non-finite or its dimension is not ``dim``.
+        """
         dirs, single = v.points("d", d, self.dim)
         h = np.empty(dirs.shape[0])
         for k, dk in enumerate(dirs):
@@ -176,6 +232,11 @@ class ConstrainedZonotope(ConvexSet):
 
     def bounding_box(self) -> Box:
         """Guaranteed interval hull from 2n certified LP bounds.
+
+        Returns
+        -------
+        Box
+            A box containing the set.
 
         Raises
         ------
@@ -198,6 +259,21 @@ class ConstrainedZonotope(ConvexSet):
         Otherwise FALSE when ``box ∩ CZ`` is proven empty (the box's bounding-box test, else
         a Farkas certificate of the generalized intersection, one LP per box); TRUE is not
         proven there, so the others are UNKNOWN.
+
+        Parameters
+        ----------
+        boxes : array_like, shape (m, n, 2)
+            Boxes as ``[lo, hi]`` rows per coordinate.
+
+        Returns
+        -------
+        ndarray of int8, shape (m,)
+            ``Tri`` value per box.
+
+        Raises
+        ------
+        ValueError
+            If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
         """
         from optbound.interval.tribool import Tri
 
@@ -224,6 +300,16 @@ class ConstrainedZonotope(ConvexSet):
         ``(0, outer area)`` or ``(0, 0)``. In other dimensions ``(0, volume of the certified
         interval hull)``: a valid but loose bracket. ``eps`` (the ``VolumeBracket``
         protocol's resolution) is unused.
+
+        Parameters
+        ----------
+        eps : float, optional
+            Unused (protocol compatibility).
+
+        Returns
+        -------
+        tuple of float
+            ``(lo, hi)`` with ``lo <= volume <= hi``.
         """
         from fractions import Fraction
 
@@ -255,7 +341,25 @@ class ConstrainedZonotope(ConvexSet):
 
     # ----------------------------------------------------------------- operations
     def affine_map(self, A, t=None) -> ConstrainedZonotope:
-        """``{A x + t : x in CZ}`` [SRMB, Prop. 1, eq. (5)] for any A of shape (p, n)."""
+        """``{A x + t : x in CZ}`` [SRMB, Prop. 1, eq. (5)] for any A of shape (p, n).
+
+        Parameters
+        ----------
+        A : array_like, shape (p, n)
+            Linear map.
+        t : array_like, shape (p,), optional
+            Translation (zero if omitted).
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing the exact image.
+
+        Raises
+        ------
+        ValueError
+            If ``A`` or ``t`` is non-finite or mis-shaped.
+        """
         A = v.finite_matrix("A", A, (None, self.dim))
         t = None if t is None else v.finite_vector("t", t, A.shape[0])
         c, G, extra = affine_image(self._c, self._G, A, t)
@@ -264,12 +368,46 @@ class ConstrainedZonotope(ConvexSet):
         )
 
     def project(self, dims) -> ConstrainedZonotope:
-        """Coordinates ``dims`` (exact: rows of c and G are selected)."""
+        """Coordinates ``dims`` (exact: rows of c and G are selected).
+
+        Parameters
+        ----------
+        dims : sequence of int
+            Distinct coordinate indices to keep.
+
+        Returns
+        -------
+        ConstrainedZonotope
+            The projection, of dimension ``len(dims)``.
+
+        Raises
+        ------
+        ValueError
+            If ``dims`` is empty, repeats an index or indexes outside ``range(dim)``.
+        """
         idx = v.dims_index("dims", dims, self.dim)
         return ConstrainedZonotope(self._c[idx], self._G[idx], self._A, self._b)
 
     def minkowski_sum(self, other) -> ConstrainedZonotope:
-        """``CZ + Y`` for a ConstrainedZonotope, Zonotope or Box Y [SRMB, Prop. 1, eq. (6)]."""
+        """``CZ + Y`` for a ConstrainedZonotope, Zonotope or Box Y [SRMB, Prop. 1, eq. (6)].
+
+        Parameters
+        ----------
+        other : ConstrainedZonotope, Zonotope or Box
+            The set added, of dimension ``dim`` (a Box must be bounded).
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing the exact sum.
+
+        Raises
+        ------
+        TypeError
+            If ``other`` is of another type.
+        ValueError
+            If ``other`` has another dimension or is an unbounded Box.
+        """
         from scipy.linalg import block_diag
 
         Y = _as_cz("other", other, self.dim)
@@ -288,6 +426,25 @@ class ConstrainedZonotope(ConvexSet):
         New constraint rows ``R G xi - G_Y xi_Y = c_Y - R c`` are computed in interval
         arithmetic; a row that rounds gets a slack generator of the rounding's size, so the
         result contains the exact intersection.
+
+        Parameters
+        ----------
+        Y : ConstrainedZonotope, Zonotope or Box
+            The set ``R x`` must lie in (a Box must be bounded).
+        R : array_like, shape (p, n), optional
+            Linear map (the identity if omitted).
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing the exact generalized intersection.
+
+        Raises
+        ------
+        TypeError
+            If ``Y`` is of another type.
+        ValueError
+            If ``R`` is non-finite or mis-shaped, or ``Y`` has not ``R.shape[0]`` dimensions.
         """
         from optbound.interval import Interval
 
@@ -311,7 +468,25 @@ class ConstrainedZonotope(ConvexSet):
 
     def intersect_strip(self, a, lo, hi) -> ConstrainedZonotope:
         """``CZ ∩ {x : lo <= a^T x <= hi}``: the generalized intersection with ``R = a^T``
-        and the 1-D zonotope ``<mid, rad>`` of ``[lo, hi]`` (radius rounded up)."""
+        and the 1-D zonotope ``<mid, rad>`` of ``[lo, hi]`` (radius rounded up).
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            Normal of the strip.
+        lo, hi : float
+            Bounds of ``a^T x``, ``lo <= hi``.
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing the exact intersection (one more constraint).
+
+        Raises
+        ------
+        ValueError
+            If an argument is non-finite or mis-shaped, or ``lo > hi``.
+        """
         from optbound.interval import Interval
 
         a = v.finite_vector("a", a, self.dim)
@@ -328,6 +503,24 @@ class ConstrainedZonotope(ConvexSet):
 
         ``{x : (x, 0) in lifted}`` is the set, and any lifted superset gives a superset.
         The budget must be at least ``n + nc`` (the lifted box alone).
+
+        Parameters
+        ----------
+        order : float
+            Generators per dimension allowed, at least 1.
+        method : {"girard", "combastel"}, default "girard"
+            Which generators are boxed.
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing CZ.
+
+        Raises
+        ------
+        ValueError
+            If ``order`` is not finite, is below 1 or gives fewer than ``n + nc`` generators,
+            or ``method`` is unknown.
         """
         budget = generator_budget(order, self.dim)
         if budget < self.dim + self.n_constraints:
@@ -352,6 +545,21 @@ class ConstrainedZonotope(ConvexSet):
         of :meth:`reduce_order` whose bound is dropped; ties go to the larger ``|a_ij|``.
         Substituted data are enclosed as in the
         other operations (error and slack generators), so the result contains the input.
+
+        Parameters
+        ----------
+        count : int, default 1
+            Number of constraints removed, at most ``n_constraints``.
+
+        Returns
+        -------
+        ConstrainedZonotope
+            A set containing CZ with ``count`` fewer constraints.
+
+        Raises
+        ------
+        ValueError
+            If ``count`` is not an integer in ``[0, n_constraints]``.
         """
         if isinstance(count, bool) or not isinstance(count, int | np.integer) or count < 0:
             raise ValueError(f"count must be a non-negative integer, got {count!r}")
@@ -416,6 +624,16 @@ class ConstrainedZonotope(ConvexSet):
         outward normal is inserted until no edge moves (the polygon is then the set, up to
         the LP tolerance). An edge that did not move is never asked again, so the cost is
         about two LPs per vertex.
+
+        Returns
+        -------
+        ndarray, shape (k, 2)
+            The vertices.
+
+        Raises
+        ------
+        ValueError
+            If the set is not 2-D.
         """
         return self._vertex_search()[0]
 
@@ -475,13 +693,44 @@ class ConstrainedZonotope(ConvexSet):
 
     def boundary(self, resolution: int = 0) -> np.ndarray:
         """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
-        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon)."""
+        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon).
+
+        Parameters
+        ----------
+        resolution : int, default 0
+            Unused (protocol compatibility).
+
+        Returns
+        -------
+        ndarray, shape (k + 1, 2)
+            The closed polygon.
+
+        Raises
+        ------
+        ValueError
+            If the set is not 2-D.
+        """
         V = self.vertices()
         return np.vstack([V, V[:1]])
 
     def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
         """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``
-        keywords; ``fill=False`` unless given)."""
+        keywords; ``fill=False`` unless given).
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Target axes (the current axes if None).
+        dims : tuple of int, default (0, 1)
+            The two coordinates shown.
+        **kwargs
+            Passed to ``ax.fill``.
+
+        Returns
+        -------
+        list of matplotlib.patches.Polygon
+            What ``ax.fill`` returns.
+        """
         from optbound.sets.zonotope_membership import plot_polygon
 
         return plot_polygon(self.project(dims).vertices(), ax, kwargs)
