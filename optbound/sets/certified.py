@@ -31,7 +31,18 @@ if TYPE_CHECKING:
 
 
 def point(x) -> Interval:
-    """A float array as a point interval."""
+    """A float array as a point interval.
+
+    Parameters
+    ----------
+    x : array_like
+        Float values.
+
+    Returns
+    -------
+    Interval
+        The degenerate intervals ``[x, x]``.
+    """
     from optbound.interval import Interval
 
     return Interval(np.asarray(x, dtype=float))
@@ -71,6 +82,23 @@ def matmul(M, X) -> Interval:
     terms computed in floats are enlarged by the same factor, underflow by ``(q + 2)`` times
     the smallest normal float, and the ends ``C ∓ rad`` rounded outward by one ulp. Two BLAS
     products instead of q interval operations.
+
+    Parameters
+    ----------
+    M : np.ndarray or Interval, shape (p, q)
+        Left factor.
+    X : np.ndarray or Interval, shape (q, r)
+        Right factor.
+
+    Returns
+    -------
+    Interval, shape (p, r)
+        An enclosure of every exact product of members of M and X.
+
+    Raises
+    ------
+    ValueError
+        If the product overflows.
     """
     from optbound.interval import Interval
 
@@ -96,21 +124,56 @@ def matmul(M, X) -> Interval:
 
 
 def magnitude(iv: Interval) -> np.ndarray:
-    """``max |x|`` over each interval (exact: a bound is a float)."""
+    """``max |x|`` over each interval (exact: a bound is a float).
+
+    Parameters
+    ----------
+    iv : Interval
+        The intervals.
+
+    Returns
+    -------
+    np.ndarray
+        The magnitudes, of the shape of ``iv``.
+    """
     return np.maximum(-iv.lo, iv.hi)
 
 
 def row_sum_up(mat: np.ndarray) -> np.ndarray:
     """Upper bound of the exact row sums of a non-negative (p, q) float array: the float sum
     is at least ``(1 - gamma_q)`` times the exact one (any order), so ``fl(sum) (1 + 3 (q +
-    2) u)`` rounded up, plus the underflow term, bounds it (:func:`matmul`)."""
+    2) u)`` rounded up, plus the underflow term, bounds it (:func:`matmul`).
+
+    Parameters
+    ----------
+    mat : np.ndarray, shape (p, q)
+        Non-negative floats.
+
+    Returns
+    -------
+    np.ndarray, shape (p,)
+        Upper bounds of the exact row sums.
+    """
     q = mat.shape[1]
     total = mat.sum(axis=1)
     return np.nextafter(total * (1.0 + _gamma(q)), np.inf) + (q + 2) * _TINY * (q > 0)
 
 
 def split(iv: Interval) -> tuple[np.ndarray, np.ndarray]:
-    """Midpoints and radii ``r >= |x - mid|`` for every x in each interval."""
+    """Midpoints and radii ``r >= |x - mid|`` for every x in each interval.
+
+    Parameters
+    ----------
+    iv : Interval
+        The intervals.
+
+    Returns
+    -------
+    mid : np.ndarray
+        The midpoints.
+    rad : np.ndarray
+        Radii rounded up.
+    """
     mid = iv.midpoint()
     return mid, magnitude(iv - mid)
 
@@ -120,6 +183,22 @@ def enclose(c_iv: Interval, G_iv: Interval) -> tuple[np.ndarray, np.ndarray, np.
 
     For every exact ``c' in c_iv``, ``G' in G_iv`` and ``|xi|, |eta| <= 1``: the row-``i``
     error ``(c' - c)_i + (G' - G)_i xi`` is at most ``r_i`` in magnitude.
+
+    Parameters
+    ----------
+    c_iv : Interval, shape (n,)
+        Enclosure of the centre.
+    G_iv : Interval, shape (n, m)
+        Enclosure of the generators.
+
+    Returns
+    -------
+    c : np.ndarray, shape (n,)
+        Float centre.
+    G : np.ndarray, shape (n, m)
+        Float generators.
+    r : np.ndarray, shape (n,)
+        Error radius per row.
     """
     c, rc = split(c_iv)
     G, rG = split(G_iv)
@@ -127,7 +206,18 @@ def enclose(c_iv: Interval, G_iv: Interval) -> tuple[np.ndarray, np.ndarray, np.
 
 
 def error_generators(r: np.ndarray) -> np.ndarray:
-    """The generators ``r_i e_i`` of the non-zero radii (shape (n, k))."""
+    """The generators ``r_i e_i`` of the non-zero radii (shape (n, k)).
+
+    Parameters
+    ----------
+    r : np.ndarray, shape (n,)
+        Non-negative radii.
+
+    Returns
+    -------
+    np.ndarray, shape (n, k)
+        One axis-aligned column per non-zero radius.
+    """
     return np.diag(r)[:, r > 0]
 
 
@@ -137,18 +227,62 @@ def relax_rows(A_iv: Interval, b_iv: Interval) -> tuple[np.ndarray, np.ndarray, 
     Every ``xi`` with ``|xi| <= 1`` and ``A' xi = b'`` for some exact ``A' in A_iv``,
     ``b' in b_iv`` satisfies ``|(A xi - b)_k| <= E_k``; the caller adds a slack generator
     ``-E_k`` to row k (only where ``E_k > 0``).
+
+    Parameters
+    ----------
+    A_iv : Interval, shape (nc, m)
+        Enclosure of the constraint rows.
+    b_iv : Interval, shape (nc,)
+        Enclosure of the right-hand side.
+
+    Returns
+    -------
+    A : np.ndarray, shape (nc, m)
+        Float rows.
+    b : np.ndarray, shape (nc,)
+        Float right-hand side.
+    E : np.ndarray, shape (nc,)
+        Slack radius per row.
     """
     b, A, E = enclose(b_iv, A_iv)
     return A, b, E
 
 
 def lower_dot(lam: np.ndarray, b: np.ndarray) -> float:
-    """A lower bound of the exact ``lam^T b``."""
+    """A lower bound of the exact ``lam^T b``.
+
+    Parameters
+    ----------
+    lam : np.ndarray, shape (k,)
+        Multipliers.
+    b : np.ndarray, shape (k,)
+        Right-hand side.
+
+    Returns
+    -------
+    float
+        A lower bound.
+    """
     return float(matmul(lam[None, :], b[:, None]).lo[0, 0])
 
 
 def l1_upper(f_iv: Interval, A: np.ndarray, lam: np.ndarray) -> float:
-    """An upper bound of ``||f - A^T lam||_1`` over the exact ``f in f_iv``."""
+    """An upper bound of ``||f - A^T lam||_1`` over the exact ``f in f_iv``.
+
+    Parameters
+    ----------
+    f_iv : Interval, shape (m,)
+        Enclosure of the objective.
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix.
+    lam : np.ndarray, shape (nc,)
+        Multipliers.
+
+    Returns
+    -------
+    float
+        An upper bound.
+    """
     r = f_iv - matmul(A.T, lam[:, None])[:, 0]
     return float(row_sum_up(magnitude(r)[None, :])[0])
 
@@ -160,6 +294,20 @@ def max_bound(f_iv: Interval, A: np.ndarray, b: np.ndarray) -> float:
     lam^T b + ||f - A^T lam||_1`` on the feasible set. ``lam`` is HiGHS's equality dual; the
     bound is evaluated in outward-rounded arithmetic, so it holds even if the LP answer is
     inaccurate (a poor ``lam`` only loosens the bound). ``-inf`` only if :func:`proven_empty`.
+
+    Parameters
+    ----------
+    f_iv : Interval, shape (m,)
+        Enclosure of the objective.
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix.
+    b : np.ndarray, shape (nc,)
+        Constraint right-hand side.
+
+    Returns
+    -------
+    float
+        The certified upper bound (``-inf`` if proven empty).
     """
     from scipy.optimize import linprog
 
@@ -187,6 +335,18 @@ def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
     ||A^T lam||_1``). ``lam`` is the dual of ``min t s.t. A xi = b, |xi_j| <= t`` (whose
     dual is ``max lam^T b s.t. ||A^T lam||_1 <= 1``) or, if that LP fails, the least-squares
     residual ``b - A A^+ b``. Both sides are evaluated with outward rounding.
+
+    Parameters
+    ----------
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix.
+    b : np.ndarray, shape (nc,)
+        Right-hand side.
+
+    Returns
+    -------
+    bool
+        True if a Farkas certificate proves emptiness; False means not proven.
     """
     from scipy.optimize import linprog
 
@@ -223,6 +383,26 @@ def affine_image(
     """Float ``c', G'`` with ``{M (c + G xi) + t} subset {c' + G' (xi, eta)}``.
 
     ``G'`` is ``M G`` (rounded) followed by the error generators; returns also their number.
+
+    Parameters
+    ----------
+    c : np.ndarray, shape (n,)
+        Centre.
+    G : np.ndarray, shape (n, m)
+        Generators.
+    M : np.ndarray, shape (p, n)
+        Linear map.
+    t : np.ndarray, shape (p,) or None
+        Translation.
+
+    Returns
+    -------
+    c : np.ndarray, shape (p,)
+        Float centre of the image.
+    G : np.ndarray, shape (p, m + k)
+        ``fl(M G)`` followed by the k error generators.
+    k : int
+        Number of error generators.
     """
     c_iv = matmul(M, c[:, None])[:, 0]
     if t is not None:
@@ -233,7 +413,22 @@ def affine_image(
 
 
 def sum_centers(c1: np.ndarray, c2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Float centre of ``c1 + c2`` and the error generators of its rounding."""
+    """Float centre of ``c1 + c2`` and the error generators of its rounding.
+
+    Parameters
+    ----------
+    c1 : np.ndarray, shape (n,)
+        First centre.
+    c2 : np.ndarray, shape (n,)
+        Second centre.
+
+    Returns
+    -------
+    c : np.ndarray, shape (n,)
+        Float centre.
+    extra : np.ndarray, shape (n, k)
+        Error generators.
+    """
     c, r = split(point(c1) + c2)
     return c, error_generators(r)
 
@@ -248,6 +443,20 @@ def compact(G: np.ndarray, A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     constraint row. All-zero columns contribute nothing and are dropped. This keeps the
     rounding generators of a recursion from accumulating (a map's errors merge into the next
     noise box's generators, a strip's rounding slack into its own slack).
+
+    Parameters
+    ----------
+    G : np.ndarray, shape (n, m)
+        Generators.
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix.
+
+    Returns
+    -------
+    G : np.ndarray, shape (n, k)
+        Generators after merging (``G`` itself if nothing merges).
+    A : np.ndarray, shape (nc, k)
+        Constraint matrix after merging.
     """
     L = np.vstack([G, A])
     nonzero = L != 0
