@@ -38,7 +38,19 @@ MARGIN = 1e-12
 class CertifiedPolygons:
     """``inner`` (ccw exact points proven in the set, possibly fewer than 3), ``outer`` (ccw
     exact corners of a polygon proven to contain it) and the outer half-planes ``normals``
-    (m, 2), ``h`` (m,) with ``CZ ⊆ {x : normals @ x <= h}``."""
+    (m, 2), ``h`` (m,) with ``CZ ⊆ {x : normals @ x <= h}``.
+
+    Parameters
+    ----------
+    inner : list of tuple of Fraction
+        Counter-clockwise exact points proven in the set (possibly fewer than 3).
+    outer : list of tuple of Fraction
+        Counter-clockwise exact corners of a polygon proven to contain the set.
+    normals : np.ndarray, shape (m, 2)
+        Outer half-plane normals.
+    h : np.ndarray, shape (m,)
+        Outer half-plane offsets.
+    """
 
     inner: list[Point]
     outer: list[Point]
@@ -46,12 +58,29 @@ class CertifiedPolygons:
     h: np.ndarray
 
     def area_bracket(self) -> tuple[float, float]:
-        """``(lo, hi)`` with ``lo <= area(CZ) <= hi`` (floats rounded outward)."""
+        """``(lo, hi)`` with ``lo <= area(CZ) <= hi`` (floats rounded outward).
+
+        Returns
+        -------
+        tuple of float
+            The inner polygon's area rounded down (0 if it has fewer than 3 points) and the outer one's rounded up.
+        """
         lo = polygon_area(self.inner) if len(self.inner) >= 3 else Fraction(0)
         return round_down(lo), round_up(polygon_area(self.outer))
 
     def tri(self, B: np.ndarray) -> np.ndarray:
-        """Tri values (int8) of the boxes ``B`` (m, 2, 2) (module docstring)."""
+        """Tri values (int8) of the boxes ``B`` (m, 2, 2) (module docstring).
+
+        Parameters
+        ----------
+        B : np.ndarray, shape (m, 2, 2)
+            Boxes as ``[lo, hi]`` rows per coordinate.
+
+        Returns
+        -------
+        np.ndarray of int8, shape (m,)
+            ``Tri`` value per box.
+        """
         from optbound.interval.tribool import Tri
 
         out = np.full(B.shape[0], Tri.UNKNOWN, dtype=np.int8)
@@ -65,7 +94,18 @@ class CertifiedPolygons:
 
 
 def half_planes(P: list[Point]) -> list[tuple[Fraction, Fraction, Fraction]]:
-    """``(a, b, h)`` per edge of the ccw convex polygon ``P``: ``P = {a x + b y <= h}``."""
+    """``(a, b, h)`` per edge of the ccw convex polygon ``P``: ``P = {a x + b y <= h}``.
+
+    Parameters
+    ----------
+    P : list of tuple of Fraction
+        Counter-clockwise convex polygon.
+
+    Returns
+    -------
+    list of tuple of Fraction
+        One exact ``(a, b, h)`` per edge, edge k from ``P[k]`` to ``P[k + 1]``.
+    """
     out = []
     for k in range(len(P)):
         (px, py), (qx, qy) = P[k], P[(k + 1) % len(P)]
@@ -81,6 +121,16 @@ def polygon_box_test(P: list[Point]):
 
     Decided in float64 with the margin of the module docstring where that suffices, else in
     ``Fraction`` arithmetic (boxes within the margin of an edge).
+
+    Parameters
+    ----------
+    P : list of tuple of Fraction
+        Counter-clockwise convex polygon (exact points).
+
+    Returns
+    -------
+    callable
+        ``test(B)`` mapping boxes (m, 2, 2) to an int8 array of ``Tri`` values.
     """
     from optbound.interval.tribool import Tri
 
@@ -129,6 +179,16 @@ def _box_range(B: np.ndarray, N: np.ndarray, h: np.ndarray):
 def certified_polygons(cz) -> CertifiedPolygons:
     """The certified polygons of the 2-D constrained zonotope ``cz`` (module docstring).
 
+    Parameters
+    ----------
+    cz : ConstrainedZonotope
+        A 2-D constrained zonotope.
+
+    Returns
+    -------
+    CertifiedPolygons
+        Its inner and outer polygons.
+
     Raises
     ------
     ValueError
@@ -157,7 +217,20 @@ def certified_polygons(cz) -> CertifiedPolygons:
 
 
 def clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
-    """The convex polygon ``P ∩ {a x + b y <= h}`` (exact; Sutherland-Hodgman, one plane)."""
+    """The convex polygon ``P ∩ {a x + b y <= h}`` (exact; Sutherland-Hodgman, one plane).
+
+    Parameters
+    ----------
+    P : list of tuple of Fraction
+        Convex polygon, vertices in order.
+    a, b, h : Fraction
+        The half-plane ``a x + b y <= h``.
+
+    Returns
+    -------
+    list of tuple of Fraction
+        The clipped polygon (empty if nothing remains).
+    """
     out: list[Point] = []
     for k in range(len(P)):
         p, q = P[k], P[(k + 1) % len(P)]
@@ -247,7 +320,18 @@ def _solve(M: list, r: list) -> list[Fraction] | None:
 
 
 def convex_hull(points: list[Point]) -> list[Point]:
-    """Convex hull, counter-clockwise (Andrew's monotone chain, exact)."""
+    """Convex hull, counter-clockwise (Andrew's monotone chain, exact).
+
+    Parameters
+    ----------
+    points : list of tuple of Fraction
+        Exact points.
+
+    Returns
+    -------
+    list of tuple of Fraction
+        Hull vertices, counter-clockwise, no collinear points.
+    """
     pts = sorted(set(points))
     if len(pts) < 3:
         return pts
@@ -269,16 +353,51 @@ def convex_hull(points: list[Point]) -> list[Point]:
 
 
 def polygon_area(P: list[Point]) -> Fraction:
-    """Exact area of the polygon ``P`` (shoelace; vertices in order)."""
+    """Exact area of the polygon ``P`` (shoelace; vertices in order).
+
+    Parameters
+    ----------
+    P : list of tuple of Fraction
+        Polygon, vertices in order.
+
+    Returns
+    -------
+    Fraction
+        The exact area.
+    """
     n = len(P)
     return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
 
 
 def round_down(x: Fraction) -> float:
+    """The largest float ``<= x``.
+
+    Parameters
+    ----------
+    x : Fraction
+        Exact value.
+
+    Returns
+    -------
+    float
+        ``x`` rounded toward -inf.
+    """
     f = float(x)
     return f if Fraction(f) <= x else float(np.nextafter(f, -np.inf))
 
 
 def round_up(x: Fraction) -> float:
+    """The smallest float ``>= x``.
+
+    Parameters
+    ----------
+    x : Fraction
+        Exact value.
+
+    Returns
+    -------
+    float
+        ``x`` rounded toward +inf.
+    """
     f = float(x)
     return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
