@@ -97,13 +97,45 @@ class PseudoEllipsoid:
 
     # ------------------------------------------------------------------------ membership
     def level(self, X) -> np.ndarray | float:
-        """``(T(x) - c)^T C^{-1} (T(x) - c)`` per row of X (<= 1 means inside), in float64."""
+        """``(T(x) - c)^T C^{-1} (T(x) - c)`` per row of X (<= 1 means inside), in float64.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a scalar.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            The level of each point.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         q = self._lifted.level(self._lift(pts))
         return float(q[0]) if single else q
 
     def contains(self, X) -> np.ndarray | bool:
-        """``level(X) <= 1`` in float64 (use :meth:`tri_contains` for a proof)."""
+        """``level(X) <= 1`` in float64 (use :meth:`tri_contains` for a proof).
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a scalar.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         q = np.asarray(self.level(X))
         return bool(q <= 1.0) if q.ndim == 0 else q <= 1.0
 
@@ -140,6 +172,11 @@ class PseudoEllipsoid:
         np.ndarray of int8
             :class:`~optbound.interval.Tri` values, proven in outward-rounded interval
             arithmetic (module docstring).
+
+        Raises
+        ------
+        ValueError
+            If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
         """
         from optbound.interval import Interval
 
@@ -147,7 +184,18 @@ class PseudoEllipsoid:
         return self.tri_test(*(Interval(B[:, j, 0], B[:, j, 1]) for j in range(self.dim)))
 
     def tri_test(self, *coords) -> np.ndarray:
-        """The test ``x ∈ P`` on ``Interval`` coordinates (for ``interval.pave``)."""
+        """The test ``x ∈ P`` on ``Interval`` coordinates (for ``interval.pave``).
+
+        Parameters
+        ----------
+        *coords : Interval
+            One interval array per coordinate, all of one shape.
+
+        Returns
+        -------
+        np.ndarray of int8
+            ``Tri`` value per box (UNKNOWN everywhere if C is too ill-conditioned for the whitening bound).
+        """
         from optbound.interval import Interval, intersection
         from optbound.interval.tribool import from_masks
 
@@ -188,10 +236,24 @@ class PseudoEllipsoid:
         test of X on ``Interval`` coordinates, e.g. SIVIA's) proves it disjoint from X. With
         ``set_test=None`` nothing is dropped: every box must be proven inside P.
 
+        Parameters
+        ----------
+        boxes : array_like, shape (m, n, 2)
+            Boxes whose union contains X.
+        set_test : callable, optional
+            Three-valued test of X on ``Interval`` coordinates.
+        rounds : int, default COVER_ROUNDS
+            Bisection rounds for boxes not proven at once.
+
         Returns
         -------
         CoverProof
             ``proven`` True only if every remaining part was proven inside P.
+
+        Raises
+        ------
+        ValueError
+            If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
         """
         from optbound.interval import Interval
         from optbound.interval.tribool import Tri
@@ -224,6 +286,11 @@ class PseudoEllipsoid:
         Every point of P has ``|T_k(x) - c_k| <= sqrt(C_kk)``; for the components ``T_k = u_j``
         (the lifting must have them) this bounds ``x_j = offset_j + scale * u_j``.
 
+        Returns
+        -------
+        Box
+            A box containing P.
+
         Raises
         ------
         ValueError
@@ -243,7 +310,25 @@ class PseudoEllipsoid:
         return Box(lo - pad, hi + pad)
 
     def paving(self, eps: float, X0=None):
-        """SIVIA paving of P with boxes at most ``eps`` wide (``X0``: default bounding_box)."""
+        """SIVIA paving of P with boxes at most ``eps`` wide (``X0``: default bounding_box).
+
+        Parameters
+        ----------
+        eps : float
+            Largest width of an undecided box, positive.
+        X0 : Box or array_like, optional
+            Box searched (default :meth:`bounding_box`).
+
+        Returns
+        -------
+        Paving
+            The paving (boxes inside, boundary boxes, and the volume bracket they give).
+
+        Raises
+        ------
+        ValueError
+            If ``eps`` is not a positive finite number, or ``X0`` is omitted and the lifting has no identity components.
+        """
         from optbound.interval import pave
 
         eps = v.finite_scalar("eps", eps)
@@ -252,17 +337,71 @@ class PseudoEllipsoid:
         return pave(self.tri_test, self.bounding_box() if X0 is None else X0, eps)
 
     def volume_bounds(self, eps: float, X0=None) -> tuple[float, float]:
-        """Guaranteed ``(lower, upper)`` bracket of P's n-dimensional measure (paving at eps)."""
+        """Guaranteed ``(lower, upper)`` bracket of P's n-dimensional measure (paving at eps).
+
+        Parameters
+        ----------
+        eps : float
+            Largest width of an undecided box, positive.
+        X0 : Box or array_like, optional
+            Box searched (default :meth:`bounding_box`).
+
+        Returns
+        -------
+        tuple of float
+            ``(lower, upper)``, the inside boxes' and all boxes' measure.
+
+        Raises
+        ------
+        ValueError
+            As :meth:`paving`.
+        """
         return self.paving(eps, X0).volume_bounds()
 
     def area_bounds(self, eps: float, X0=None) -> tuple[float, float]:
-        """``volume_bounds`` for n = 2: a guaranteed bracket of the area."""
+        """``volume_bounds`` for n = 2: a guaranteed bracket of the area.
+
+        Parameters
+        ----------
+        eps : float
+            Largest width of an undecided box, positive.
+        X0 : Box or array_like, optional
+            Box searched (default :meth:`bounding_box`).
+
+        Returns
+        -------
+        tuple of float
+            ``(lower, upper)`` bracket of the area.
+
+        Raises
+        ------
+        ValueError
+            If the set is not 2-D, or ``X0`` is omitted and the lifting has no identity components.
+        """
         if self.dim != 2:
             raise ValueError(f"area_bounds is for n = 2, this set has n = {self.dim}")
         return self.volume_bounds(eps, X0)
 
     def grid_area(self, resolution: int = 200, X0=None) -> float:
-        """Fast (not guaranteed) area estimate: the fraction of grid cell centres inside P."""
+        """Fast (not guaranteed) area estimate: the fraction of grid cell centres inside P.
+
+        Parameters
+        ----------
+        resolution : int, default 200
+            Grid cells per side.
+        X0 : Box or array_like, optional
+            Box searched (default :meth:`bounding_box`).
+
+        Returns
+        -------
+        float
+            The estimated area.
+
+        Raises
+        ------
+        ValueError
+            If the set is not 2-D, or ``X0`` is omitted and the lifting has no identity components.
+        """
         if self.dim != 2:
             raise ValueError(f"grid_area is for n = 2, this set has n = {self.dim}")
         box = self.bounding_box() if X0 is None else as_box("X0", X0)
@@ -275,7 +414,25 @@ class PseudoEllipsoid:
         return float(np.mean(inside) * np.prod(box.hi - box.lo))
 
     def boundary(self, resolution: int = 400, X0=None) -> list[np.ndarray]:
-        """Polylines tracing ``level = 1`` in 2-D (for plotting), each an (k, 2) array."""
+        """Polylines tracing ``level = 1`` in 2-D (for plotting), each an (k, 2) array.
+
+        Parameters
+        ----------
+        resolution : int, default 400
+            Grid points per side of the contoured level field.
+        X0 : Box or array_like, optional
+            Box searched (default :meth:`bounding_box`).
+
+        Returns
+        -------
+        list of ndarray
+            One (k, 2) polyline per piece of the boundary.
+
+        Raises
+        ------
+        ValueError
+            If the set is not 2-D, or ``X0`` is omitted and the lifting has no identity components.
+        """
         import contourpy
 
         if self.dim != 2:
@@ -293,9 +450,16 @@ class PseudoEllipsoid:
 class CoverProof:
     """Outcome of :meth:`PseudoEllipsoid.prove_covers`.
 
-    ``proven``: every box is covered by P, up to parts proven outside the set; ``boxes``:
-    boxes given; ``direct``: boxes proven inside at once, without bisection; ``refuted``: a
-    sub-box proven in the set and outside P (a containment failure).
+    Parameters
+    ----------
+    proven : bool
+        Every box is covered by P, up to parts proven outside the set.
+    boxes : int
+        Boxes given.
+    direct : int
+        Boxes proven inside at once, without bisection.
+    refuted : bool
+        A sub-box was proven in the set and outside P (a containment failure).
     """
 
     proven: bool
