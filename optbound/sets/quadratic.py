@@ -174,13 +174,47 @@ class QuadraticSet:
 
     # --------------------------------------------------------------------- membership
     def value(self, X) -> np.ndarray | float:
-        """``q(x) = [x; 1]^T F [x; 1]`` per row of X (<= 0 means inside)."""
+        """``q(x) = [x; 1]^T F [x; 1]`` per row of X (<= 0 means inside).
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a scalar.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            The value of the form per point.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         q = np.einsum("ij,jk,ik->i", pts, self.A, pts) + 2.0 * pts @ self.b + self.c
         return float(q[0]) if single else q
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
-        """Membership per row; ``tol`` is relative to ``|[x;1]|^T |F| |[x;1]|``."""
+        """Membership per row; ``tol`` is relative to ``|[x;1]|^T |F| |[x;1]|``.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a scalar.
+        tol : float, default 1e-9
+            Relative slack: inside when ``q(x) <= tol |[x;1]|^T |F| |[x;1]|``.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside (a float test).
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         lifted = np.abs(np.column_stack([pts, np.ones(pts.shape[0])]))
         scale = np.einsum("ij,jk,ik->i", lifted, np.abs(self._F), lifted)
@@ -193,6 +227,11 @@ class QuadraticSet:
 
         ``q(x) = (x - x0)^T A (x - x0) - r`` with ``x0 = -A^{-1} b`` and
         ``r = b^T A^{-1} b - c``, so the shape matrix is ``r A^{-1}``.
+
+        Returns
+        -------
+        Ellipsoid or None
+            The ellipsoid with centre ``x0`` and shape ``r A^{-1}``; None if r < 0 (empty).
 
         Raises
         ------
@@ -215,11 +254,22 @@ class QuadraticSet:
 
     # -------------------------------------------------------------- the SDP protocol
     def quadratic_description(self) -> QuadraticDescription:
-        """The set's own form, used as it is."""
+        """The set's own form, used as it is.
+
+        Returns
+        -------
+        QuadraticDescription
+            One form, ``self``, and no linear range.
+        """
         return QuadraticDescription(forms=(self,))
 
     def enclosing_ellipsoid(self) -> Ellipsoid | None:
         """The set as an ellipsoid when A is positive definite (``as_ellipsoid``), else None.
+
+        Returns
+        -------
+        Ellipsoid or None
+            The set itself as an ellipsoid, or None if it is unbounded.
 
         Raises
         ------
@@ -250,6 +300,21 @@ class QuadraticSet:
         - otherwise (paraboloid, half-space) ``mu`` is pinned to ``e_j / (2 f_j)``.
 
         An empty set gives ``-inf``.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            ``h(d)`` per direction (``+inf`` where unbounded, ``-inf`` if empty).
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is non-finite or its dimension is not ``dim``.
         """
         dirs, single = v.points("d", d, self.dim)
         w, V = np.linalg.eigh(self.A)
