@@ -80,11 +80,37 @@ class Strip(_LinearSet):
         Non-zero normal; its length sets the width ``2 / ||a||``.
     b : float
         Offset: the strip is ``b - 1 <= a^T x <= b + 1``.
+
+    Raises
+    ------
+    ValueError
+        If ``a`` is zero, non-finite or has a norm outside ``[1e-60, 1e60]``, or ``b`` is
+        non-finite or ``|b| > 1e120`` (the supported domain, ``optbound._core.domain``).
+    TypeError
+        If an argument is complex or not numeric.
     """
 
     @classmethod
     def from_bounds(cls, a, lo: float, hi: float) -> Strip:
-        """The strip ``{x : lo <= a^T x <= hi}``; requires ``lo < hi``."""
+        """The strip ``{x : lo <= a^T x <= hi}``; requires ``lo < hi``.
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            Non-zero normal.
+        lo, hi : float
+            Bounds of ``a^T x``, ``lo < hi``.
+
+        Returns
+        -------
+        Strip
+            The strip with normal ``a / h`` and offset ``m / h`` (``m``, ``h`` the midpoint and half-width of ``[lo, hi]``).
+
+        Raises
+        ------
+        ValueError
+            If an argument is non-finite, ``lo >= hi``, or the result leaves the supported domain.
+        """
         lo, hi = v.finite_scalar("lo", lo), v.finite_scalar("hi", hi)
         if not lo < hi:
             raise ValueError(f"lo must be smaller than hi, got lo={lo}, hi={hi}")
@@ -99,16 +125,59 @@ class Strip(_LinearSet):
         return 2.0 / float(np.linalg.norm(self._a))
 
     def quadratic_description(self) -> QuadraticDescription:
-        """One range, ``b - 1 <= a^T x <= b + 1``."""
+        """One range, ``b - 1 <= a^T x <= b + 1``.
+
+        Returns
+        -------
+        QuadraticDescription
+            The strip exactly, as one linear range.
+        """
         return QuadraticDescription(ranges=((self._a, self._b - 1.0, self._b + 1.0),))
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        """Float test ``|a^T x - b| <= 1 + tol`` per row of X.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a bool.
+        tol : float, default 1e-9
+            Slack so that boundary points pass.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside.
+
+        Raises
+        ------
+        ValueError
+            If the argument is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         inside = np.abs(pts @ self._a - self._b) <= 1.0 + tol
         return bool(inside[0]) if single else inside
 
     def support(self, d) -> np.ndarray | float:
-        # d = s a gives s (b + 1) for s >= 0 and s (b - 1) for s < 0.
+        """Support function: finite only along multiples ``d = s a`` of the normal.
+
+        ``d = s a`` gives ``s (b + 1)`` for ``s >= 0`` and ``s (b - 1)`` for ``s < 0``.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            ``h(d)`` per direction, ``+inf`` where ``d`` is not parallel to ``a``.
+
+        Raises
+        ------
+        ValueError
+            If the argument is non-finite or its dimension is not ``dim``.
+        """
         s, parallel, single = self._along_normal(d)
         sp = s[parallel]
         values = np.where(sp >= 0, sp * (self._b + 1), sp * (self._b - 1))
@@ -116,20 +185,77 @@ class Strip(_LinearSet):
 
 
 class Halfspace(_LinearSet):
-    """The half-space ``{x : a^T x <= b}``."""
+    """The half-space ``{x : a^T x <= b}``.
+
+    Parameters
+    ----------
+    a : array_like, shape (n,)
+        Non-zero outward normal.
+    b : float
+        Offset.
+
+    Raises
+    ------
+    ValueError
+        If ``a`` is zero, non-finite or has a norm outside ``[1e-60, 1e60]``, or ``b`` is
+        non-finite or ``|b| > 1e120`` (the supported domain, ``optbound._core.domain``).
+    TypeError
+        If an argument is complex or not numeric.
+    """
 
     def quadratic_description(self) -> QuadraticDescription:
-        """One range, ``-inf <= a^T x <= b``."""
+        """One range, ``-inf <= a^T x <= b``.
+
+        Returns
+        -------
+        QuadraticDescription
+            The half-space exactly, as one linear range.
+        """
         return QuadraticDescription(ranges=((self._a, -np.inf, self._b),))
 
     def contains(self, X, tol: float = 1e-9) -> np.ndarray | bool:
+        """Float test ``a^T x <= b + tol max(1, |b|)`` per row of X.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Points, one per row; a single point gives a bool.
+        tol : float, default 1e-9
+            Relative slack so that boundary points pass.
+
+        Returns
+        -------
+        ndarray of bool, shape (m,), or bool
+            True where the point is inside.
+
+        Raises
+        ------
+        ValueError
+            If the argument is non-finite or its dimension is not ``dim``.
+        """
         pts, single = v.points("X", X, self.dim)
         scale = max(1.0, abs(self._b))
         inside = pts @ self._a <= self._b + tol * scale
         return bool(inside[0]) if single else inside
 
     def support(self, d) -> np.ndarray | float:
-        # Bounded only along nonnegative multiples of a.
+        """Support function: ``s b`` along non-negative multiples ``d = s a``, else ``+inf``.
+
+        Parameters
+        ----------
+        d : array_like, shape (m, n) or (n,)
+            Directions, one per row; a single direction gives a float.
+
+        Returns
+        -------
+        ndarray, shape (m,), or float
+            ``h(d)`` per direction.
+
+        Raises
+        ------
+        ValueError
+            If the argument is non-finite or its dimension is not ``dim``.
+        """
         s, parallel, single = self._along_normal(d)
         bounded = parallel & (s >= 0)
         return self._finite_where(bounded, s[bounded] * self._b, single)
