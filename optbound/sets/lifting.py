@@ -140,7 +140,13 @@ class PolynomialLifting:
         )
 
     def identity_components(self) -> np.ndarray:
-        """Index of the component equal to ``u_j`` for each j, or -1 where there is none."""
+        """Index of the component equal to ``u_j`` for each j, or -1 where there is none.
+
+        Returns
+        -------
+        np.ndarray of int, shape (n,)
+            Component index per coordinate, -1 where none.
+        """
         out = np.full(self.dim, -1)
         for j in range(self.dim):
             unit = np.zeros(self.dim, dtype=np.int64)
@@ -157,7 +163,23 @@ class PolynomialLifting:
 
     # ------------------------------------------------------------------------ evaluation
     def normalize(self, *coords) -> list:
-        """``u_j = (x_j - offset_j) / scale`` for float arrays or ``Interval`` arrays."""
+        """``u_j = (x_j - offset_j) / scale`` for float arrays or ``Interval`` arrays.
+
+        Parameters
+        ----------
+        *coords : ndarray or Interval
+            One array per coordinate x_1, ..., x_n, all of one shape.
+
+        Returns
+        -------
+        list
+            The n normalized coordinates, of the type of the input.
+
+        Raises
+        ------
+        ValueError
+            If the number of coordinates is not ``dim``.
+        """
         if len(coords) != self.dim:
             raise ValueError(f"expected {self.dim} coordinates, got {len(coords)}")
         return [(x - o) / self._scale for x, o in zip(coords, self._offset, strict=True)]
@@ -166,11 +188,42 @@ class PolynomialLifting:
         """The L components of T at the coordinates (float arrays or ``Interval`` arrays).
 
         With intervals each returned value encloses the component's range over the boxes.
+
+        Parameters
+        ----------
+        *coords : ndarray or Interval
+            One array per coordinate x_1, ..., x_n, all of one shape.
+
+        Returns
+        -------
+        list
+            The L components, floats or Intervals of the shape of the coordinates.
+
+        Raises
+        ------
+        ValueError
+            If the number of coordinates is not ``dim``.
         """
         return _polynomials(self._exps, self._coef, self.normalize(*coords))
 
     def jacobian(self, *coords) -> list[list]:
-        """``dT_l / dx_j`` as a nested list ``[l][j]`` (float arrays or ``Interval`` arrays)."""
+        """``dT_l / dx_j`` as a nested list ``[l][j]`` (float arrays or ``Interval`` arrays).
+
+        Parameters
+        ----------
+        *coords : ndarray or Interval
+            One array per coordinate x_1, ..., x_n, all of one shape.
+
+        Returns
+        -------
+        list of list
+            ``L`` rows of ``n`` partial derivatives (enclosures for Intervals).
+
+        Raises
+        ------
+        ValueError
+            If the number of coordinates is not ``dim``.
+        """
         u = self.normalize(*coords)
         cols = []
         for j in range(self.dim):
@@ -192,7 +245,23 @@ class PolynomialLifting:
         return out[0] if single else out
 
     def box_image(self, boxes) -> np.ndarray:
-        """Guaranteed enclosure of ``T(box)`` per box: (m, n, 2) boxes -> (m, L, 2)."""
+        """Guaranteed enclosure of ``T(box)`` per box: (m, n, 2) boxes -> (m, L, 2).
+
+        Parameters
+        ----------
+        boxes : array_like, shape (m, n, 2)
+            Boxes as ``[lo, hi]`` rows per coordinate.
+
+        Returns
+        -------
+        np.ndarray, shape (m, L, 2)
+            ``[lo, hi]`` of each component over each box, rounded outward.
+
+        Raises
+        ------
+        ValueError
+            If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
+        """
         from optbound.interval import Interval  # on first use: keeps `import optbound` light
 
         B = box_array("boxes", boxes, self.dim)
