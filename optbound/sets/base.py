@@ -106,7 +106,18 @@ class BoxProver(Protocol):
     """A set that proves membership of whole boxes with interval arithmetic."""
 
     def tri_contains(self, boxes) -> np.ndarray:
-        """``Tri`` per box of ``boxes`` (m, n, 2): TRUE inside, FALSE disjoint, else UNKNOWN."""
+        """``Tri`` per box of ``boxes`` (m, n, 2): TRUE inside, FALSE disjoint, else UNKNOWN.
+
+        Parameters
+        ----------
+        boxes : array_like, shape (m, n, 2)
+            Boxes as ``[lo, hi]`` rows per coordinate.
+
+        Returns
+        -------
+        np.ndarray of int8, shape (m,)
+            ``Tri`` value per box.
+        """
         ...
 
 
@@ -115,7 +126,18 @@ class VolumeBracket(Protocol):
     """A set with a certified bracket of its volume."""
 
     def volume_bounds(self, eps: float) -> tuple[float, float]:
-        """``(lower, upper)`` with ``lower <= volume <= upper``, resolution ``eps``."""
+        """``(lower, upper)`` with ``lower <= volume <= upper``, resolution ``eps``.
+
+        Parameters
+        ----------
+        eps : float
+            Resolution of the bracket (e.g. the width of a paving's boxes).
+
+        Returns
+        -------
+        tuple of float
+            ``(lower, upper)``.
+        """
         ...
 
 
@@ -124,5 +146,16 @@ class Outlined(Protocol):
     """A 2-D set that can trace its boundary for plots."""
 
     def boundary(self, resolution: int) -> np.ndarray | list[np.ndarray]:
-        """Ordered boundary points, one (m, 2) array per closed curve."""
+        """Ordered boundary points, one (m, 2) array per closed curve.
+
+        Parameters
+        ----------
+        resolution : int
+            Resolution of the trace (types with an exact polygon ignore it).
+
+        Returns
+        -------
+        np.ndarray or list of np.ndarray
+            The closed curve(s), shape (m, 2) each.
+        """
         ...

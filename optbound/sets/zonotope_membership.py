@@ -30,7 +30,26 @@ def min_norm_parameters(
     c: np.ndarray, G: np.ndarray, A: np.ndarray, b: np.ndarray, x: np.ndarray
 ) -> np.ndarray | None:
     """A float minimiser ``(xi, t)`` of ``t s.t. |xi| <= t, G xi = x - c, A xi = b`` (HiGHS),
-    shape (m + 1,), or None if the LP reports no solution; ``G`` has at least one column."""
+    shape (m + 1,), or None if the LP reports no solution; ``G`` has at least one column.
+
+    Parameters
+    ----------
+    c : np.ndarray, shape (n,)
+        Centre.
+    G : np.ndarray, shape (n, m)
+        Generators.
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix (nc = 0 for a zonotope).
+    b : np.ndarray, shape (nc,)
+        Constraint right-hand side.
+    x : np.ndarray, shape (n,)
+        The point.
+
+    Returns
+    -------
+    np.ndarray, shape (m + 1,), or None
+        ``(xi, t)``, or None if the LP fails (e.g. infeasible).
+    """
     m = G.shape[1]
     eye = np.eye(m)
     cost = np.zeros(m + 1)
@@ -50,7 +69,28 @@ def min_norm_parameters(
 def lp_contains(
     c: np.ndarray, G: np.ndarray, A: np.ndarray, b: np.ndarray, pts: np.ndarray, tol: float
 ) -> np.ndarray:
-    """Float test per point: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is ``<= 1 + tol``."""
+    """Float test per point: ``min ||xi||_inf s.t. G xi = x - c, A xi = b`` is ``<= 1 + tol``.
+
+    Parameters
+    ----------
+    c : np.ndarray, shape (n,)
+        Centre.
+    G : np.ndarray, shape (n, m)
+        Generators.
+    A : np.ndarray, shape (nc, m)
+        Constraint matrix (nc = 0 for a zonotope).
+    b : np.ndarray, shape (nc,)
+        Constraint right-hand side.
+    pts : np.ndarray, shape (k, n)
+        Finite points, one per row.
+    tol : float
+        Relative slack on the defining inequality.
+
+    Returns
+    -------
+    np.ndarray of bool, shape (k,)
+        True where the point is inside (up to ``tol``).
+    """
     if G.shape[1] == 0:
         return np.all(np.abs(pts - c) <= tol * np.maximum(1.0, np.abs(c)), axis=1)
     inside = np.zeros(pts.shape[0], dtype=bool)
@@ -62,7 +102,24 @@ def lp_contains(
 
 def slab_contains(c: np.ndarray, G: np.ndarray, pts: np.ndarray, tol: float) -> np.ndarray | None:
     """Float 2-D test on the facet slabs of the generator normals; None unless the zonotope
-    is a full-dimensional 2-D one (where the slabs intersect to exactly the zonotope)."""
+    is a full-dimensional 2-D one (where the slabs intersect to exactly the zonotope).
+
+    Parameters
+    ----------
+    c : np.ndarray, shape (n,)
+        Centre.
+    G : np.ndarray, shape (n, m)
+        Generators.
+    pts : np.ndarray, shape (k, n)
+        Finite points, one per row.
+    tol : float
+        Relative slack on the defining inequality.
+
+    Returns
+    -------
+    np.ndarray of bool, shape (k,), or None
+        True where the point is inside; None if the test does not apply.
+    """
     if G.shape[0] != 2:
         return None
     N, spans = _normals_2d(G)
@@ -102,7 +159,25 @@ def _directions(G: np.ndarray) -> tuple[list[np.ndarray], bool]:
 
 
 def tri_contains(Z, boxes) -> np.ndarray:
-    """Tri values of ``box subset Z`` (TRUE), ``box ∩ Z = ∅`` (FALSE) per box (module doc)."""
+    """Tri values of ``box subset Z`` (TRUE), ``box ∩ Z = ∅`` (FALSE) per box (module doc).
+
+    Parameters
+    ----------
+    Z : Zonotope
+        The zonotope.
+    boxes : array_like, shape (m, n, 2)
+        Boxes as ``[lo, hi]`` rows per coordinate.
+
+    Returns
+    -------
+    np.ndarray of int8, shape (m,)
+        ``Tri`` value per box.
+
+    Raises
+    ------
+    ValueError
+        If ``boxes`` is mis-shaped, non-finite or has ``lo > hi``.
+    """
     n = Z.dim
     B = box_array("boxes", boxes, n)
     X = [Interval(B[:, j, 0], B[:, j, 1]) - Z.center[j] for j in range(n)]
@@ -122,7 +197,22 @@ def tri_contains(Z, boxes) -> np.ndarray:
 
 def plot_polygon(vertices: np.ndarray, ax, kwargs: dict):
     """``ax.fill`` of a polygon (``fill=False`` unless given); the current axes if ``ax`` is
-    None. Returns matplotlib's list of patches."""
+    None.
+
+    Parameters
+    ----------
+    vertices : np.ndarray, shape (k, 2)
+        Polygon vertices in order.
+    ax : matplotlib.axes.Axes or None
+        Target axes.
+    kwargs : dict
+        Keywords of ``ax.fill``.
+
+    Returns
+    -------
+    list of matplotlib.patches.Polygon
+        What ``ax.fill`` returns.
+    """
     if ax is None:
         import matplotlib.pyplot as plt
 
