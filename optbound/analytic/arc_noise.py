@@ -26,7 +26,15 @@ MARGIN = 1e-9
 
 @dataclass(frozen=True)
 class ArcNoise:
-    """Centre ``v_hat`` and shape ``V`` of ``{v : (v - v_hat)^T V^-1 (v - v_hat) <= 1}``."""
+    """Centre ``v_hat`` and shape ``V`` of ``{v : (v - v_hat)^T V^-1 (v - v_hat) <= 1}``.
+
+    Parameters
+    ----------
+    center : np.ndarray, shape (2,)
+        The centre ``v_hat``.
+    shape : np.ndarray, shape (2, 2)
+        The shape matrix ``V``.
+    """
 
     center: np.ndarray
     shape: np.ndarray

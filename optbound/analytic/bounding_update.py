@@ -45,10 +45,17 @@ S_TOL = 1e-12
 class BoundingUpdate(BoundResult):
     """Result of :func:`bounding_update`.
 
-    ``ellipsoid`` is the outer bound (None if the feasible set is empty); ``lam`` the lambda
-    used, or for an empty result the lambda whose s(lambda) < 0 certifies emptiness;
-    ``margin`` the certified relative inflation of the float member (0 for E itself). As a
-    ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
+    As a ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid or None
+        The outer bound (None if the feasible set is empty).
+    lam : float
+        The lambda used, or for an empty result the lambda whose s(lambda) < 0 certifies
+        emptiness.
+    margin : float, default 0.0
+        The certified relative inflation of the float member (0 for E itself).
     """
 
     set_attribute = "ellipsoid"

@@ -55,9 +55,19 @@ AREA_RTOL = 0.02  # grid areas within 2 % of the grid minimum count as equally s
 
 @dataclass(frozen=True)
 class LiftedUpdate(BoundResult):
-    """Result of :func:`lifted_update`: the bound (None if certified empty), the lambda used
-    and the certified relative inflation of the lifted member (``BoundingUpdate.margin``).
-    As a ``BoundResult``, ``set`` is ``bound``."""
+    """Result of :func:`lifted_update`.
+
+    As a ``BoundResult``, ``set`` is ``bound``.
+
+    Parameters
+    ----------
+    bound : PseudoEllipsoid or None
+        The bound (None if certified empty).
+    lam : float
+        The lambda used.
+    margin : float, default 0.0
+        The certified relative inflation of the lifted member (``BoundingUpdate.margin``).
+    """
 
     set_attribute = "bound"
     certified = True

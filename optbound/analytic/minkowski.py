@@ -47,8 +47,16 @@ class MinkowskiResult(BoundResult):
 
     The shape is computed from p = (1 - kappa) / kappa, so it stays accurate even when the
     reported kappa rounds to 0 or 1 (summands differing in size by ~1e16 or more).
-    ``margin`` is the certified relative inflation of the float member. As a
-    ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
+    As a ``BoundResult``: ``set`` is ``ellipsoid``, always certified.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        The outer bound.
+    kappa : float
+        The Schweppe parameter [HS96, eq. (14)].
+    margin : float, default 0.0
+        The certified relative inflation of the float member.
     """
 
     set_attribute = "ellipsoid"
@@ -61,7 +69,19 @@ class MinkowskiResult(BoundResult):
 
 @dataclass(frozen=True)
 class MinkowskiBatch:
-    """Batched result: ``centers`` (B, n), ``shapes`` (B, n, n), ``kappa`` (B,), ``margin`` (B,)."""
+    """Batched result of :func:`minkowski_sum_batch`.
+
+    Parameters
+    ----------
+    centers : np.ndarray, shape (B, n)
+        Centres of the outer bounds.
+    shapes : np.ndarray, shape (B, n, n)
+        Shapes of the outer bounds.
+    kappa : np.ndarray, shape (B,)
+        Schweppe parameters.
+    margin : np.ndarray, shape (B,), optional
+        Certified relative inflation of each float member.
+    """
 
     centers: np.ndarray
     shapes: np.ndarray
@@ -230,6 +250,16 @@ def minkowski_sum_batch(
         As in :func:`minkowski_sum`.
     kappa : float or array_like of shape (B,), optional
         Explicit Schweppe parameters in (0, 1).
+
+    Returns
+    -------
+    MinkowskiBatch
+        The B outer bounds, their kappa and margins.
+
+    Raises
+    ------
+    ValueError
+        As :func:`minkowski_sum`, naming the first failing instance; or on mismatched shapes.
     """
     c1 = _batch.float_array("centers1", centers1, 2)
     C1 = _batch.float_array("shapes1", shapes1, 3)

@@ -33,16 +33,43 @@ __all__ = [
 
 
 def strip_member(c, C, a, eps, half, lam, out_c, out_C, w) -> None:
-    """The member lambda of E ∩ S for the strip ``|a^T (x - c) - eps| <= half``
-    [HS96, eq. (24)], the strip normalized to ``|a'^T (x - c) - e| <= 1`` (``a' = a / half``,
-    ``e = eps / half``). With ``w = C a'``, ``G = a'^T C a'`` and ``u = 1 + lambda G``::
+    """Write the member lambda of E ∩ S [HS96, eq. (24)] into ``out_c`` and ``out_C``.
+
+    The strip ``|a^T (x - c) - eps| <= half`` is normalized to ``|a'^T (x - c) - e| <= 1``
+    (``a' = a / half``, ``e = eps / half``). With ``w = C a'``, ``G = a'^T C a'`` and
+    ``u = 1 + lambda G``::
 
         centre = c + (lambda e / u) w,
         shape  = K (C - (lambda / u) w w^T),   K = 1 + lambda - lambda e^2 / u,
 
     the ellipsoid ``{x : (x - c)^T C^{-1} (x - c) + lambda ((a'^T (x - c) - e)^2 - 1) <= 1}``,
-    which contains E ∩ S for every lambda >= 0 [HS96, eq. (25)]. Writes the centre into
-    ``out_c`` (n,) and the shape into ``out_C`` (n, n); ``w`` (n,) is scratch.
+    which contains E ∩ S for every lambda >= 0 [HS96, eq. (25)].
+
+    Parameters
+    ----------
+    c : array, shape (n,)
+        Centre of E (floats or Fractions).
+    C : array, shape (n, n)
+        Shape of E.
+    a : array, shape (n,)
+        Normal of the strip.
+    eps : float or Fraction
+        Offset of the strip from ``a^T c``.
+    half : float or Fraction
+        Half-width of the strip, positive.
+    lam : float or Fraction
+        The member's lambda >= 0.
+    out_c : np.ndarray, shape (n,)
+        Output: the member's centre.
+    out_C : np.ndarray, shape (n, n)
+        Output: the member's shape.
+    w : np.ndarray, shape (n,)
+        Scratch.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     n = len(c)
     e = eps / half
@@ -62,12 +89,28 @@ def strip_member(c, C, a, eps, half, lam, out_c, out_C, w) -> None:
 
 
 def strip_lam_volume(G: float, eps: float, n: int) -> float:
-    """The volume-optimal lambda for the strip ``|a^T (x - c) - eps| <= 1``, G = a^T C a:
-    the positive root of [HS96, eq. (26)] with N = n,
+    """The volume-optimal lambda for the strip ``|a^T (x - c) - eps| <= 1``.
+
+    With ``G = a^T C a``, the positive root of [HS96, eq. (26)] with N = n::
 
         (n - 1) G^2 lambda^2 + (2n - 1 + eps^2 - G) G lambda + n (1 - eps^2) - G = 0,
 
-    or 0 when it has none (then no member is smaller than E itself: G <= n (1 - eps^2))."""
+    or 0 when it has none (then no member is smaller than E itself: G <= n (1 - eps^2)).
+
+    Parameters
+    ----------
+    G : float
+        ``a^T C a`` for the normalized strip.
+    eps : float
+        Offset of the normalized strip.
+    n : int
+        Dimension.
+
+    Returns
+    -------
+    float
+        The lambda (0 when E itself is the smallest member).
+    """
     qa = (n - 1) * G * G
     qb = (2 * n - 1 + eps * eps - G) * G
     qc = n * (1 - eps * eps) - G
@@ -86,7 +129,30 @@ def intersect_strip_volume(c, C, a, b, out_c, out_C, w) -> float:
     The clipped strip is ``|a^T (x - c) - mid| <= half``, normalized to a half-width of 1 for
     :func:`strip_lam_volume` (``G / half^2``, ``mid / half``) and :func:`strip_member`.
     Outputs and scratch as in :func:`strip_member`. Inconsistent instances (S misses E) are
-    not detected here (lo > hi then)."""
+    not detected here (lo > hi then).
+
+    Parameters
+    ----------
+    c : np.ndarray, shape (n,)
+        Centre of E.
+    C : np.ndarray, shape (n, n)
+        Shape of E.
+    a : np.ndarray, shape (n,)
+        Normal of the strip.
+    b : float
+        Offset of the strip.
+    out_c : np.ndarray, shape (n,)
+        Output: the member's centre.
+    out_C : np.ndarray, shape (n, n)
+        Output: the member's shape.
+    w : np.ndarray, shape (n,)
+        Scratch.
+
+    Returns
+    -------
+    float
+        The lambda used (0: the member is E itself).
+    """
     n = len(c)
     G = 0.0
     ac = 0.0
@@ -107,7 +173,25 @@ def intersect_strip_volume(c, C, a, b, out_c, out_C, w) -> float:
 def minkowski_member(c1, C1, c2, C2, p, out_c, out_C) -> None:
     """The Schweppe member of E1 + E2 for p = (1 - kappa) / kappa [HS96, eq. (14)]: centre
     ``c1 + c2``, shape ``C1 / (1 - kappa) + C2 / kappa = (1 + p) (C1 / p + C2)``; it
-    contains E1 + E2 for every p > 0."""
+    contains E1 + E2 for every p > 0.
+
+    Parameters
+    ----------
+    c1 : array, shape (n,)
+        Centre of E1 (floats or Fractions).
+    C1 : array, shape (n, n)
+        Shape of E1.
+    c2 : array, shape (n,)
+        Centre of E2.
+    C2 : array, shape (n, n)
+        Shape of E2.
+    p : float or Fraction
+        The parameter ``(1 - kappa) / kappa > 0``.
+    out_c : np.ndarray, shape (n,)
+        Output: the member's centre.
+    out_C : np.ndarray, shape (n, n)
+        Output: the member's shape.
+    """
     n = len(c1)
     for i in range(n):
         out_c[i] = c1[i] + c2[i]
@@ -120,7 +204,20 @@ def minkowski_p_volume(C1, C2) -> float:
     ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
     ``C1 v = l C2 v``), which is increasing in p and changes sign on
     ``[sqrt(min l), sqrt(max l)]`` (Durieu, Walter & Polyak 2001); found by bisection to the
-    resolution of floats."""
+    resolution of floats.
+
+    Parameters
+    ----------
+    C1 : np.ndarray, shape (n, n)
+        Shape of E1 (SPD).
+    C2 : np.ndarray, shape (n, n)
+        Shape of E2 (SPD).
+
+    Returns
+    -------
+    float
+        The minimizing p.
+    """
     n = C1.shape[0]
     L = np.linalg.cholesky(C2)  # the l_i: eigenvalues of L^{-1} C1 L^{-T}, symmetric
     lam = np.linalg.eigvalsh(np.linalg.solve(L, np.linalg.solve(L, C1).T))
