@@ -118,6 +118,25 @@ def certify_points(ellipsoid: Ellipsoid, X: np.ndarray) -> tuple[Ellipsoid, floa
 
     The level of each point carries a relative rounding error of a few ``n eps``; points must
     clear 1 by that margin.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        The candidate outer ellipsoid.
+    X : np.ndarray, shape (m, n)
+        The points to contain.
+
+    Returns
+    -------
+    ellipsoid : Ellipsoid
+        ``ellipsoid`` itself or its smallest certified inflation.
+    alpha : float
+        The inflation factor of the semi-axes (1.0 if none was needed).
+
+    Raises
+    ------
+    CertificationError
+        If repeated inflation still leaves a point outside.
     """
     slack = 1.0 - 16.0 * ellipsoid.dim * EPS
     worst = float(np.max(ellipsoid.level(X)))

@@ -40,6 +40,20 @@ def refuse_empty(
     """Raise ``EmptyIntersectionError`` if ``sum tau_i F_i`` is positive definite with margin.
 
     ``errors[i]`` bounds the spectral-norm error of ``forms[i]``.
+
+    Parameters
+    ----------
+    forms : sequence of np.ndarray, shape (n + 1, n + 1) each
+        The (normalised, frame-transformed) forms ``F_i``.
+    errors : np.ndarray, shape (k,)
+        Bounds of the spectral-norm error of each form.
+    tau : np.ndarray, shape (k,)
+        Candidate multipliers (negative entries are read as 0).
+
+    Raises
+    ------
+    EmptyIntersectionError
+        If the certificate holds: the intersection is empty.
     """
     # Frobenius norms bound the spectral norms from above: a larger margin, never a smaller.
     lowest, margin = weighted_sum_eig(
@@ -54,8 +68,28 @@ def refuse_empty(
 def explain_failure(
     forms: Sequence[np.ndarray], errors: np.ndarray, solver: str, err: SolverError
 ) -> None:
-    """After a failed solve: raise ``EmptyIntersectionError`` if emptiness can be certified,
-    else re-raise ``err``."""
+    """After a failed solve, raise ``EmptyIntersectionError`` or re-raise ``err``.
+
+    A small SDP looks for multipliers certifying emptiness (:func:`refuse_empty`).
+
+    Parameters
+    ----------
+    forms : sequence of np.ndarray, shape (n + 1, n + 1) each
+        The (normalised, frame-transformed) forms ``F_i``.
+    errors : np.ndarray, shape (k,)
+        Bounds of the spectral-norm error of each form.
+    solver : str
+        The cvxpy solver name.
+    err : SolverError
+        The error of the failed solve.
+
+    Raises
+    ------
+    EmptyIntersectionError
+        If emptiness can be certified.
+    SolverError
+        ``err``, otherwise (always raises).
+    """
     template = emptiness_template(forms[0].shape[0] - 1, len(forms))
     for param, F in zip(template.forms, forms, strict=True):
         param.value = F

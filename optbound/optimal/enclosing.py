@@ -37,7 +37,24 @@ def mvee_template(m: int, n: int) -> Template:
 
 
 def validated_points(points) -> np.ndarray:
-    """An (m, n) finite array whose affine hull is all of R^n (else no ellipsoid encloses it)."""
+    """An (m, n) finite array whose affine hull is all of R^n (else no ellipsoid encloses it).
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n)
+        The points to enclose.
+
+    Returns
+    -------
+    np.ndarray, shape (m, n)
+        The points as a float64 array.
+
+    Raises
+    ------
+    ValueError
+        If the points are non-finite, fewer than n + 1, outside the supported domain, or
+        (nearly) flat.
+    """
     X = v.finite_matrix("points", points)
     m, n = X.shape
     if m < n + 1:

@@ -9,6 +9,13 @@ class SolverError(RuntimeError):
     """The conic solver did not return an accurate optimum (``status`` says what it returned).
 
     "optimal_inaccurate" is refused too: an inaccurate optimum is not a reference.
+
+    Parameters
+    ----------
+    status : str
+        The status the solver returned (kept as ``self.status``).
+    detail : str, optional
+        More context for the message.
     """
 
     def __init__(self, status: str, detail: str = ""):

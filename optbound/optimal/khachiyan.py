@@ -38,7 +38,22 @@ _REFRESH = 500
 
 
 def covariance(points: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Weighted mean ``P u`` and covariance ``sum_i u_i (p_i - mean)(p_i - mean)^T``."""
+    """Weighted mean ``P u`` and covariance ``sum_i u_i (p_i - mean)(p_i - mean)^T``.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        The points.
+    u : np.ndarray, shape (m,)
+        Weights in the simplex.
+
+    Returns
+    -------
+    mean : np.ndarray, shape (n,)
+        The weighted mean.
+    cov : np.ndarray, shape (n, n)
+        The weighted covariance.
+    """
     mean = points.T @ u
     return mean, (points.T * u) @ points - np.outer(mean, mean)
 
@@ -63,14 +78,34 @@ def khachiyan_weights(
     thousands of steps more on clustered points.
     ``exchange``: take exchange steps instead (module docstring).
 
-    Returns the weights and whether the tolerance was reached within ``max_iter`` steps (any
-    weights still give the lower bound of ``optbound.optimal.lower``).
-
     A step ``X <- (1 - s) X + s q_j q_j^T`` updates ``X^{-1}`` and all ``w_i`` in O(m d) by the
     Sherman-Morrison formula (an exchange step: two such updates); they are recomputed from
     scratch every ``_REFRESH`` steps to keep rounding from accumulating. The loop is compiled
     (numba): one step costs about a microsecond per hundred points instead of tens of
     microseconds of numpy call overhead.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        The points.
+    tol : float, default 1e-7
+        Stop when ``max w <= (1 + tol) d`` (and the away condition holds).
+    max_iter : int, default 100000
+        Largest number of steps.
+    start : np.ndarray, shape (m,), optional
+        Initial weights (default: the core set's).
+    away_tol : float, optional
+        Tolerance of the away condition (default ``tol``; ``inf`` ignores it).
+    exchange : bool, default False
+        Take exchange steps instead of forward/away steps.
+
+    Returns
+    -------
+    u : np.ndarray, shape (m,)
+        The weights.
+    converged : bool
+        Whether the tolerance was reached within ``max_iter`` steps (any weights still give
+        the lower bound of ``optbound.optimal.lower``).
     """
     P = np.asarray(points, dtype=float)
     m = P.shape[0]
@@ -92,6 +127,16 @@ def core_set(points: np.ndarray) -> np.ndarray:
 
     For each of n directions, orthogonal to the differences of the pairs found so far, the
     points with the largest and the smallest coordinate along it.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        The points.
+
+    Returns
+    -------
+    np.ndarray of int
+        Indices of at most 2n distinct points.
     """
     P = np.asarray(points, dtype=float)
     n = P.shape[1]
@@ -212,10 +257,43 @@ def _todd_yildirim_step(Q, u, X_inv, w, up: int, down: int) -> np.ndarray:
 def khachiyan_mvee(points: np.ndarray, tol: float = 1e-7, max_iter: int = 100_000) -> Ellipsoid:
     """Near-minimum-volume ellipsoid enclosing ``points`` (m, n), scaled to contain them all.
 
+    The ellipsoid of Khachiyan's weights u (centre ``P u``, shape ``n Sigma_u``), then
+    inflated by :func:`~optbound.optimal.certify.certify_points` until every point is inside.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        The points.
+    tol : float, default 1e-7
+        Tolerance of :func:`khachiyan_weights`.
+    max_iter : int, default 100000
+        Largest number of steps.
+
+    Returns
+    -------
+    Ellipsoid
+        An ellipsoid containing every point, its volume within a factor of about
+        ``(1 + tol)^{n/2}`` of the minimum.
+
     Raises
     ------
     RuntimeError
         If ``max_iter`` iterations do not reach the tolerance.
+    CertificationError
+        If the inflated ellipsoid cannot be certified.
+
+    Examples
+    --------
+    The corners of the square ``[-1, 1]^2`` lie on the circle of radius sqrt(2):
+
+    >>> import numpy as np
+    >>> from optbound.optimal.khachiyan import khachiyan_mvee
+    >>> corners = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])
+    >>> E = khachiyan_mvee(corners)
+    >>> np.round(E.shape, 6).tolist()
+    [[2.0, 0.0], [0.0, 2.0]]
+    >>> bool(np.all(E.contains(corners, tol=0.0)))
+    True
     """
     P = np.asarray(points, dtype=float)
     u, converged = khachiyan_weights(P, tol, max_iter)

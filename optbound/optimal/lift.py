@@ -131,7 +131,23 @@ def _pair_products(rows: Sequence[LinearRange]) -> list[QuadraticSet]:
 
 
 def check_clip(clip) -> str | bool:
-    """The clipping mode; ``True`` means the default, ``"intersection"``."""
+    """The clipping mode; ``True`` means the default, ``"intersection"``.
+
+    Parameters
+    ----------
+    clip : str or bool or None
+        ``"intersection"``, ``"ellipsoids"``, True (the default mode), or False/None (no clipping).
+
+    Returns
+    -------
+    str or bool
+        The mode, or False.
+
+    Raises
+    ------
+    ValueError
+        If ``clip`` is not a mode.
+    """
     if clip is True:
         return "intersection"
     if clip is None or clip is False:
@@ -152,6 +168,20 @@ def lift(
     ``Box`` gives one per coordinate with a finite bound); then, with ``products``, the pair
     products of the finite ranges. ``clip`` is ``"intersection"`` (or ``True``),
     ``"ellipsoids"`` or ``False`` (module docstring).
+
+    Parameters
+    ----------
+    members : sequence of QuadraticallyDescribed
+        The sets intersected, of one dimension.
+    clip : str or bool, default "intersection"
+        Clipping of the linear ranges (see :func:`check_clip`).
+    products : bool, default False
+        Add the pair products of the finite ranges.
+
+    Returns
+    -------
+    list of QuadraticSet
+        The quadratic inequalities.
 
     Raises
     ------

@@ -63,7 +63,8 @@ class CertifiedPolygons:
         Returns
         -------
         tuple of float
-            The inner polygon's area rounded down (0 if it has fewer than 3 points) and the outer one's rounded up.
+            The inner polygon's area rounded down (0 if it has fewer than 3 points) and the outer
+            one's rounded up.
         """
         lo = polygon_area(self.inner) if len(self.inner) >= 3 else Fraction(0)
         return round_down(lo), round_up(polygon_area(self.outer))

@@ -194,7 +194,8 @@ class PseudoEllipsoid:
         Returns
         -------
         np.ndarray of int8
-            ``Tri`` value per box (UNKNOWN everywhere if C is too ill-conditioned for the whitening bound).
+            ``Tri`` value per box (UNKNOWN everywhere if C is too ill-conditioned for the whitening
+            bound).
         """
         from optbound.interval import Interval, intersection
         from optbound.interval.tribool import from_masks
@@ -327,7 +328,8 @@ class PseudoEllipsoid:
         Raises
         ------
         ValueError
-            If ``eps`` is not a positive finite number, or ``X0`` is omitted and the lifting has no identity components.
+            If ``eps`` is not a positive finite number, or ``X0`` is omitted and the lifting has no
+            identity components.
         """
         from optbound.interval import pave
 

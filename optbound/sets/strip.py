@@ -104,7 +104,8 @@ class Strip(_LinearSet):
         Returns
         -------
         Strip
-            The strip with normal ``a / h`` and offset ``m / h`` (``m``, ``h`` the midpoint and half-width of ``[lo, hi]``).
+            The strip with normal ``a / h`` and offset ``m / h`` (``m``, ``h`` the midpoint and
+            half-width of ``[lo, hi]``).
 
         Raises
         ------
