@@ -310,7 +310,23 @@ def sample_set(
     """Points of the intersection: first exits and the points of the climb (module docstring).
 
     ``outer`` is any ellipsoid containing the set; ``dims`` judges "farther out" by the
-    projection onto these coordinates (projection objective). Returns shape (m, n), distinct.
+    projection onto these coordinates (projection objective).
+
+    Parameters
+    ----------
+    quadratics : sequence of QuadraticSet
+        The inequalities whose intersection is the set.
+    outer : Ellipsoid
+        Any ellipsoid containing the set (the rays are shaped by it).
+    rng : numpy.random.Generator or int
+        Random generator or integer seed.
+    dims : tuple of int, optional
+        Coordinates of the projection objective (judges "farther out").
+
+    Returns
+    -------
+    np.ndarray, shape (m, n)
+        Distinct points of the set.
     """
     return _sample(quadratics, outer, rng, dims)[0]
 
@@ -606,7 +622,21 @@ def volume_lower_bound(
 ) -> float:
     """``V_n det(n Sigma_u)^{1/2}`` (Khachiyan's weights): <= any enclosing ellipsoid's volume.
 
-    ``start``: a first working set and its weights, as in ``_enclosing_weights``.
+    Any weights u on the points give this bound (Khachiyan's duality); the better the
+    weights, the tighter it is.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        Points of the set (affinely spanning R^n).
+    start : tuple of np.ndarray, optional
+        A first working set (indices) and its weights, as in ``_enclosing_weights``.
+
+    Returns
+    -------
+    float
+        A lower bound of the volume of every ellipsoid containing the points (0.0 if the weights'
+        covariance is singular).
     """
     n = points.shape[1]
     # Only the bound matters here, not which points support it (``khachiyan_weights``).
@@ -621,6 +651,16 @@ def trace_lower_bound(points: np.ndarray) -> float:
     """``(tr Sigma_u^{1/2})^2`` with Frank-Wolfe weights: <= trace of any enclosing ellipsoid.
 
     The gradient of ``tr Sigma_u^{1/2}`` in ``u_i`` is ``(p_i - mu)^T Sigma^{-1/2} (p_i - mu) / 2``.
+
+    Parameters
+    ----------
+    points : np.ndarray, shape (m, n)
+        Points of the set (affinely spanning R^n).
+
+    Returns
+    -------
+    float
+        A lower bound of the trace of the shape of every ellipsoid containing the points.
     """
     P = np.ascontiguousarray(points, dtype=float)
     return _frank_wolfe_trace(P, _TRACE_STEPS, _WEIGHT_TOL) ** 2
@@ -675,7 +715,33 @@ def sampled_lower_bound(
     dims: tuple[int, ...] | None,
     rng,
 ) -> float:
-    """Lower bound on the minimum ``objective`` over all ellipsoids containing the set."""
+    """Lower bound on the minimum ``objective`` over all ellipsoids containing the set.
+
+    Parameters
+    ----------
+    quadratics : sequence of QuadraticSet
+        The inequalities whose intersection is the set.
+    outer : Ellipsoid
+        Any ellipsoid containing the set (the rays are shaped by it).
+    objective : {"volume", "trace", "projection"}
+        The objective bounded.
+    dims : tuple of int or None
+        Coordinates of the projection objective.
+    rng : numpy.random.Generator or int
+        Random generator or integer seed.
+
+    Returns
+    -------
+    float
+        The lower bound, from points sampled in the set (every ellipsoid containing the set contains
+        them).
+
+    Raises
+    ------
+    ValueError
+        If the sampled points do not span R^n (see
+        :func:`~optbound.optimal.enclosing.validated_points`).
+    """
     points, start = _sample(quadratics, outer, rng, dims)
     if objective == "projection":
         points = _distinct(points[:, list(dims)])  # corners above one another coincide

@@ -47,11 +47,21 @@ BISECTIONS = 8
 class PseudoReference(BoundResult):
     """Bracket of the optimal pseudo-ellipsoid (lifted volumes) and the certified upper set.
 
-    ``bound`` is proven to contain every inner and boundary box; ``lower <= optimum <= upper``
-    with ``upper = bound.lifted.volume()``; ``sample_volume`` is the volume of the MVEE of the
-    lifted inner-box corners (certified to enclose them); ``inflation`` the factor applied
-    to its semi-axes to make ``bound``. As a ``BoundResult``: ``set`` is ``bound`` and
-    ``margin`` is ``inflation - 1``.
+    ``lower <= optimum <= upper``. As a ``BoundResult``: ``set`` is ``bound`` and ``margin``
+    is ``inflation - 1``.
+
+    Parameters
+    ----------
+    bound : PseudoEllipsoid
+        Proven to contain every inner and boundary box.
+    lower : float
+        Lower bound of the optimal lifted volume.
+    upper : float
+        ``bound.lifted.volume()``.
+    sample_volume : float
+        Volume of the MVEE of the lifted inner-box corners (certified to enclose them).
+    inflation : float
+        The factor applied to its semi-axes to make ``bound``.
     """
 
     set_attribute = "bound"

@@ -16,7 +16,7 @@ class OuterResult(BoundResult):
     """A certified outer ellipsoid and how it was obtained (a ``BoundResult``: ``set`` is
     ``ellipsoid``, ``margin`` is ``inflation - 1``).
 
-    Attributes
+    Parameters
     ----------
     ellipsoid : Ellipsoid
         The outer bound, certified in float64 (already inflated by ``inflation``).
@@ -36,6 +36,9 @@ class OuterResult(BoundResult):
     lower_bound : float or None
         When requested, a lower bound on the true minimum of the objective over *all*
         ellipsoids containing the set (so the reference's own gap is known).
+
+    Attributes
+    ----------
     accuracy : float
         Class constant 1e-5: how far (as a relative level, ``compare.max_level - 1``) the
         ellipsoid may lie from the true optimum in either direction. The conic solvers stop at
@@ -63,7 +66,22 @@ class OuterResult(BoundResult):
 
 
 def objective_value(ellipsoid: Ellipsoid, objective: str, dims: tuple[int, ...] | None) -> float:
-    """Volume, trace of the shape, or volume of the projection on ``dims``."""
+    """Volume, trace of the shape, or volume of the projection on ``dims``.
+
+    Parameters
+    ----------
+    ellipsoid : Ellipsoid
+        The ellipsoid.
+    objective : {"volume", "trace", "projection"}
+        The objective.
+    dims : tuple of int or None
+        Coordinates of the projection objective.
+
+    Returns
+    -------
+    float
+        The objective's value on ``ellipsoid``.
+    """
     if objective == "volume":
         return ellipsoid.volume()
     if objective == "trace":

@@ -56,7 +56,18 @@ FAST_PATH_CVXPY = ((1, 9),)
 
 
 def fast_path_supported(version: str) -> bool:
-    """Whether cvxpy ``version`` (e.g. ``"1.9.3"``) is one of :data:`FAST_PATH_CVXPY`."""
+    """Whether cvxpy ``version`` (e.g. ``"1.9.3"``) is one of :data:`FAST_PATH_CVXPY`.
+
+    Parameters
+    ----------
+    version : str
+        A cvxpy version string.
+
+    Returns
+    -------
+    bool
+        True if its major.minor release is verified for the fast path.
+    """
     match = re.match(r"(\d+)\.(\d+)", version)
     return match is not None and (int(match[1]), int(match[2])) in FAST_PATH_CVXPY
 
@@ -303,6 +314,20 @@ def solve(problem: cp.Problem, solver: str, primal_only: bool = False) -> float:
 
     With ``primal_only`` (the caller reads no dual values), re-solves with Clarabel take the
     fast path described in the module docstring (under a verified cvxpy, :data:`FAST_PATH`).
+
+    Parameters
+    ----------
+    problem : cvxpy.Problem
+        The problem, solved in place (its variables get their values).
+    solver : {"CLARABEL", "SCS"}
+        The conic solver.
+    primal_only : bool, default False
+        The caller reads no dual values (allows the fast path).
+
+    Returns
+    -------
+    float
+        Wall time of all attempts, in seconds.
 
     Raises
     ------

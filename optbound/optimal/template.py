@@ -48,15 +48,50 @@ class Template:
             raise AttributeError(f"the template has no handle {name!r}") from None
 
     def set(self, **values: np.ndarray) -> None:
-        """Set the named parameters (``_cvx.set_value``: cvxpy's checks only where needed)."""
+        """Set the named parameters (``_cvx.set_value``: cvxpy's checks only where needed).
+
+        Parameters
+        ----------
+        **values
+            Parameter name to value (array_like of the parameter's shape).
+        """
         for name, value in values.items():
             _cvx.set_value(self._handles[name], np.asarray(value, dtype=float))
 
     def solve(self, solver: str, primal_only: bool = False) -> float:
-        """Solve in place (``optbound.optimal.solver.solve``); the wall time in seconds."""
+        """Solve in place (``optbound.optimal.solver.solve``); the wall time in seconds.
+
+        Parameters
+        ----------
+        solver : {"CLARABEL", "SCS"}
+            The conic solver.
+        primal_only : bool, default False
+            The caller reads no dual values (allows the fast path).
+
+        Returns
+        -------
+        float
+            Wall time of the solve, in seconds.
+
+        Raises
+        ------
+        SolverError
+            Unless the solve ends with status "optimal".
+        """
         return solve(self.problem, solver, primal_only=primal_only)
 
 
 def cached_template(maxsize: int) -> Callable[[Callable[..., Template]], Callable[..., Template]]:
-    """Cache a template builder per shape key (its hashable arguments), ``maxsize`` shapes."""
+    """Cache a template builder per shape key (its hashable arguments), ``maxsize`` shapes.
+
+    Parameters
+    ----------
+    maxsize : int
+        Number of shapes kept (least recently used dropped first).
+
+    Returns
+    -------
+    callable
+        A decorator: the builder wrapped by ``functools.lru_cache``.
+    """
     return lru_cache(maxsize=maxsize)
