@@ -6,10 +6,22 @@ import importlib
 import pytest
 
 ENTRY_POINTS = [
+    "optbound.sets.ellipsoid:Ellipsoid",
+    "optbound.sets.zonotope:Zonotope",
+    "optbound.sets.constrained_zonotope:ConstrainedZonotope",
+    "optbound.sets.quadratic:QuadraticSet",
+    "optbound.sets.strip:Strip",
+    "optbound.sets.lifting:PolynomialLifting",
+    "optbound.sets.pseudo_ellipsoid:PseudoEllipsoid",
     "optbound.analytic.strip_fusion:intersect_strip",
     "optbound.analytic.minkowski:minkowski_sum",
     "optbound.analytic.bounding_update:bounding_update",
+    "optbound.analytic.affine:affine_map",
+    "optbound.analytic.arc_noise:parabola_arc_ellipse",
     "optbound.optimal.intersection:outer_ellipsoid",
+    "optbound.optimal.minkowski:minkowski_outer",
+    "optbound.optimal.enclosing:mvee",
+    "optbound.optimal.khachiyan:khachiyan_mvee",
     "optbound.interval.sivia:sivia",
     "optbound.problems.audit:evaluate",
 ]

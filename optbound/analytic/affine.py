@@ -44,6 +44,19 @@ def affine_map(E: Ellipsoid, A, t=None) -> Ellipsoid:
         ``E`` not an Ellipsoid.
     ValueError
         Non-finite or mis-shaped ``A`` / ``t``, or an image outside the supported domain.
+
+    Examples
+    --------
+    Swapping the coordinates and shifting: the image's shape is ``A C A^T``, enlarged by a
+    certified margin of a few rounding units.
+
+    >>> import numpy as np
+    >>> from optbound.analytic.affine import affine_map
+    >>> from optbound.sets import Ellipsoid
+    >>> E = Ellipsoid([1.0, 2.0], np.diag([4.0, 1.0]))
+    >>> F = affine_map(E, [[0.0, 1.0], [1.0, 0.0]], [1.0, 0.0])
+    >>> np.round(F.center, 12).tolist(), np.round(F.shape, 9).tolist()
+    ([3.0, 1.0], [[1.0, 0.0], [0.0, 4.0]])
     """
     if not isinstance(E, Ellipsoid):
         raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")

@@ -61,6 +61,14 @@ def parabola_arc_ellipse(lo: float, hi: float) -> ArcNoise:
     ------
     ValueError
         Non-finite bounds or ``lo >= hi`` (a point has no full-dimensional ellipse).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound.analytic.arc_noise import parabola_arc_ellipse
+    >>> v_hat, V = parabola_arc_ellipse(-1.0, 1.0)
+    >>> np.round(v_hat, 6).tolist(), np.round(V, 6).tolist()
+    ([0.0, 0.666667], [[1.333333, 0.0], [0.0, 0.444444]])
     """
     lo, hi = v.finite_scalar("lo", lo), v.finite_scalar("hi", hi)
     if not lo < hi:

@@ -88,6 +88,7 @@ def mvee(points, solver: str = "CLARABEL") -> OuterResult:
     points : array_like, shape (m, n)
         At least n + 1 finite points not all in one hyperplane.
     solver : {"CLARABEL", "SCS"}
+        The conic solver.
 
     Returns
     -------
@@ -101,6 +102,16 @@ def mvee(points, solver: str = "CLARABEL") -> OuterResult:
         For non-finite, too few or flat point sets.
     SolverError
         If the solve is not accurately optimal.
+
+    Examples
+    --------
+    The corners of the square ``[-1, 1]^2`` lie on the circle of radius sqrt(2):
+
+    >>> import numpy as np
+    >>> from optbound.optimal.enclosing import mvee
+    >>> corners = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])
+    >>> (np.round(mvee(corners).ellipsoid.shape, 5) + 0.0).tolist()
+    [[2.0, 0.0], [0.0, 2.0]]
     """
     X = validated_points(points)
     m, n = X.shape

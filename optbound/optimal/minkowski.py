@@ -72,7 +72,9 @@ def minkowski_outer(
     *ellipsoids : Ellipsoid
         At least one summand, all of one dimension.
     objective : {"volume", "trace"}
+        The size minimized.
     solver : {"CLARABEL", "SCS"}
+        The conic solver.
 
     Returns
     -------
@@ -86,6 +88,19 @@ def minkowski_outer(
         For no summands, non-ellipsoids, mixed dimensions or an unknown objective.
     SolverError
         If the solve is not accurately optimal.
+
+    Examples
+    --------
+    Two unit discs, one shifted: the sum is the disc of radius 2 about ``(1, 0)``.
+
+    >>> import numpy as np
+    >>> from optbound.optimal.minkowski import minkowski_outer
+    >>> from optbound.sets import Ellipsoid
+    >>> r = minkowski_outer(Ellipsoid([0.0, 0.0], np.eye(2)), Ellipsoid([1.0, 0.0], np.eye(2)))
+    >>> r.ellipsoid.center.tolist(), (np.round(r.ellipsoid.shape, 5) + 0.0).tolist()
+    ([1.0, 0.0], [[4.0, 0.0], [0.0, 4.0]])
+    >>> r.certified
+    True
     """
     if not ellipsoids:
         raise ValueError("minkowski_outer needs at least one ellipsoid")

@@ -48,6 +48,17 @@ class PolynomialLifting:
     ValueError
         Negative or non-integer exponents, a zero component, non-finite values, a
         non-positive scale or mismatched dimensions.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound.sets.lifting import PolynomialLifting
+    >>> T = PolynomialLifting.bh4()  # [x, y, x^2, y^2] [BH, eq. (22)]
+    >>> T([2.0, 3.0]).tolist()
+    [2.0, 3.0, 4.0, 9.0]
+    >>> image = T.box_image([[[1.0, 2.0], [-1.0, 1.0]]])[0]  # rounded outward
+    >>> np.round(image, 12).tolist()
+    [[1.0, 2.0], [-1.0, 1.0], [1.0, 4.0], [0.0, 1.0]]
     """
 
     def __init__(self, exponents, coefficients, offset=None, scale: float = 1.0):

@@ -55,6 +55,23 @@ class PseudoEllipsoid:
         If ``lift`` is not a PolynomialLifting.
     ValueError
         Non-finite values, mismatched dimensions, or ``shape`` not SPD.
+
+    Examples
+    --------
+    A set with a hole: the points ``(+-1, +-1)`` lie in it, their midpoint ``(0, 0)`` does not.
+
+    >>> import numpy as np
+    >>> from optbound.interval.tribool import Tri
+    >>> from optbound.sets import PseudoEllipsoid
+    >>> from optbound.sets.lifting import PolynomialLifting
+    >>> P = PseudoEllipsoid(
+    ...     PolynomialLifting.bh4(), [0.0, 0.0, 1.0, 1.0], np.diag([4.0, 4.0, 1.0, 1.0])
+    ... )
+    >>> P.contains([[1.0, 1.0], [-1.0, 1.0], [0.0, 0.0]]).tolist()
+    [True, True, False]
+    >>> boxes = [[[0.9, 1.0], [0.9, 1.0]], [[-0.1, 0.1], [-0.1, 0.1]], [[0.0, 2.0], [0.0, 2.0]]]
+    >>> [Tri(t).name for t in P.tri_contains(boxes)]  # proven inside, proven outside, undecided
+    ['TRUE', 'FALSE', 'UNKNOWN']
     """
 
     def __init__(self, lift: PolynomialLifting, center, shape):

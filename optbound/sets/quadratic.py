@@ -79,6 +79,20 @@ class QuadraticSet:
     ------
     ValueError
         If ``F`` is non-finite, not square, smaller than 2 x 2, not symmetric, or zero.
+
+    Examples
+    --------
+    The unit disc ``x^T x - 1 <= 0``:
+
+    >>> import numpy as np
+    >>> from optbound.sets import QuadraticSet
+    >>> q = QuadraticSet.from_parts(np.eye(2), [0.0, 0.0], -1.0)
+    >>> q.contains([[0.5, 0.5], [1.0, 1.0]]).tolist()
+    [True, False]
+    >>> q.support([1.0, 0.0])
+    1.0
+    >>> q.as_ellipsoid().shape.tolist()
+    [[1.0, 0.0], [0.0, 1.0]]
     """
 
     def __init__(self, F):

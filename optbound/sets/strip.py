@@ -81,6 +81,17 @@ class Strip(_LinearSet):
     b : float
         Offset: the strip is ``b - 1 <= a^T x <= b + 1``.
 
+    Examples
+    --------
+    >>> from optbound.sets import Strip
+    >>> S = Strip([0.0, 2.0], 1.0)  # 0 <= x_2 <= 1
+    >>> S.width
+    1.0
+    >>> S.contains([[5.0, 0.9], [0.0, 1.1]]).tolist()
+    [True, False]
+    >>> S.extent([0.0, 1.0])
+    (0.0, 1.0)
+
     Raises
     ------
     ValueError
