@@ -318,6 +318,12 @@ def intersect_strip_batch(
     Returns
     -------
     StripFusionBatch
+        The B results, as arrays.
+
+    Raises
+    ------
+    ValueError
+        As :func:`intersect_strip`, naming the first failing instance; or on mismatched shapes.
     """
     c = _batch.float_array("centers", centers, 2)
     C = _batch.float_array("shapes", shapes, 3)

@@ -109,7 +109,24 @@ ATTEMPTS = {
 
 @cache
 def check_solver(solver: str) -> str:
-    """Return the canonical solver name, or raise ``ValueError`` if it cannot do the job."""
+    """Return the canonical solver name, or raise ``ValueError`` if it cannot do the job.
+
+    Parameters
+    ----------
+    solver : str
+        A solver name, any case.
+
+    Returns
+    -------
+    str
+        The upper-case name.
+
+    Raises
+    ------
+    ValueError
+        If the solver is unknown, not installed for cvxpy, or (Clarabel) too old for PSD and
+        exponential cones together.
+    """
     name = str(solver).upper()
     if name not in SOLVERS:
         raise ValueError(f"solver must be one of {SOLVERS}, got {solver!r}")

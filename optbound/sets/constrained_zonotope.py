@@ -110,7 +110,25 @@ class ConstrainedZonotope(ConvexSet):
 
     @classmethod
     def from_zonotope(cls, Z: Zonotope) -> ConstrainedZonotope:
-        """The zonotope ``Z`` without constraints (a Box is converted first)."""
+        """The zonotope ``Z`` without constraints (a Box is converted first).
+
+        Parameters
+        ----------
+        Z : Zonotope or Box
+            The set (a Box must be bounded).
+
+        Returns
+        -------
+        ConstrainedZonotope
+            The same set with no constraint rows.
+
+        Raises
+        ------
+        TypeError
+            If ``Z`` is neither a Zonotope nor a Box.
+        ValueError
+            If ``Z`` is an unbounded Box.
+        """
         if isinstance(Z, Box):
             Z = Zonotope.from_box(Z)
         if not isinstance(Z, Zonotope):

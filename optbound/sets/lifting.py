@@ -85,7 +85,27 @@ class PolynomialLifting:
     def from_components(
         cls, components: Sequence[Mapping[tuple[int, ...], float]], offset=None, scale=1.0
     ) -> PolynomialLifting:
-        """Build from one ``{exponent tuple: coefficient}`` mapping per component."""
+        """Build from one ``{exponent tuple: coefficient}`` mapping per component.
+
+        Parameters
+        ----------
+        components : sequence of mapping
+            Per component, its monomials' exponent tuples (length n) and coefficients.
+        offset : array_like, shape (n,), optional
+            Centre of the normalization (default 0).
+        scale : float, default 1.0
+            Positive length of the normalization.
+
+        Returns
+        -------
+        PolynomialLifting
+            The lifting, over the union of the components' monomials.
+
+        Raises
+        ------
+        ValueError
+            If ``components`` is empty, or as for the constructor.
+        """
         if len(components) == 0:
             raise ValueError("components must not be empty")
         monomials = sorted({e for comp in components for e in comp})
@@ -98,13 +118,39 @@ class PolynomialLifting:
 
     @classmethod
     def bh4(cls, offset=None, scale: float = 1.0) -> PolynomialLifting:
-        """``[x, y, x^2, y^2]`` (in normalized coordinates) [BH, eq. (22)]."""
+        """``[x, y, x^2, y^2]`` (in normalized coordinates) [BH, eq. (22)].
+
+        Parameters
+        ----------
+        offset : array_like, shape (2,), optional
+            Centre of the normalization (default 0).
+        scale : float, default 1.0
+            Positive length of the normalization.
+
+        Returns
+        -------
+        PolynomialLifting
+            The L = 4 lifting.
+        """
         comps = [{(1, 0): 1.0}, {(0, 1): 1.0}, {(2, 0): 1.0}, {(0, 2): 1.0}]
         return cls.from_components(comps, offset, scale)
 
     @classmethod
     def bh8(cls, offset=None, scale: float = 1.0) -> PolynomialLifting:
-        """``[x, y, xy, x^2, y^2, x^3 + x y^2, x^2 y + y^3, (x^2 + y^2)^2]`` [BH, eq. (23)]."""
+        """``[x, y, xy, x^2, y^2, x^3 + x y^2, x^2 y + y^3, (x^2 + y^2)^2]`` [BH, eq. (23)].
+
+        Parameters
+        ----------
+        offset : array_like, shape (2,), optional
+            Centre of the normalization (default 0).
+        scale : float, default 1.0
+            Positive length of the normalization.
+
+        Returns
+        -------
+        PolynomialLifting
+            The L = 8 lifting.
+        """
         comps = [
             {(1, 0): 1.0},
             {(0, 1): 1.0},

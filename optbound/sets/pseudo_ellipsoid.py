@@ -82,7 +82,27 @@ class PseudoEllipsoid:
 
     @classmethod
     def from_ellipsoid(cls, lift: PolynomialLifting, E: Ellipsoid) -> PseudoEllipsoid:
-        """The pseudo-ellipsoid whose lifted ellipsoid is ``E``."""
+        """The pseudo-ellipsoid whose lifted ellipsoid is ``E``.
+
+        Parameters
+        ----------
+        lift : PolynomialLifting
+            The lifting T : R^n -> R^L.
+        E : Ellipsoid
+            The lifted ellipsoid, of dimension L.
+
+        Returns
+        -------
+        PseudoEllipsoid
+            The set ``{x : T(x) in E}``.
+
+        Raises
+        ------
+        TypeError
+            If ``lift`` is not a PolynomialLifting or ``E`` not an Ellipsoid.
+        ValueError
+            If ``E`` has not dimension ``lift.size``.
+        """
         if not isinstance(E, Ellipsoid):
             raise TypeError(f"E must be an Ellipsoid, got {type(E).__name__}")
         return cls(lift, E.center, E.shape)

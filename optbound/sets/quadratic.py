@@ -117,14 +117,45 @@ class QuadraticSet:
     # ------------------------------------------------------------------ constructors
     @classmethod
     def from_parts(cls, A, b, c: float) -> QuadraticSet:
-        """Assemble ``F = [[A, b], [b^T, c]]``, i.e. ``x^T A x + 2 b^T x + c <= 0``."""
+        """Assemble ``F = [[A, b], [b^T, c]]``, i.e. ``x^T A x + 2 b^T x + c <= 0``.
+
+        Parameters
+        ----------
+        A : array_like, shape (n, n)
+            Symmetric quadratic part.
+        b : array_like, shape (n,)
+            Linear part (half the gradient at 0).
+        c : float
+            Constant.
+
+        Returns
+        -------
+        QuadraticSet
+            The set.
+
+        Raises
+        ------
+        ValueError
+            As for the constructor (the assembled F is checked).
+        """
         A = np.asarray(A, dtype=float)
         b = np.asarray(b, dtype=float)
         return cls(np.block([[A, b[:, None]], [b[None, :], np.array([[float(c)]])]]))
 
     @classmethod
     def from_ellipsoid(cls, E: Ellipsoid) -> QuadraticSet:
-        """``(x - c)^T C^{-1} (x - c) - 1 <= 0``."""
+        """``(x - c)^T C^{-1} (x - c) - 1 <= 0``.
+
+        Parameters
+        ----------
+        E : Ellipsoid
+            The ellipsoid.
+
+        Returns
+        -------
+        QuadraticSet
+            The ellipsoid as one quadratic form (``as_ellipsoid`` returns ``E``).
+        """
         q = cls._trusted(_ellipsoid_form(E.center, E.chol))
         q._ellipsoid = E  # the validated original, returned by ``as_ellipsoid``
         return q
@@ -135,6 +166,23 @@ class QuadraticSet:
 
         For ``Strip(a, b)`` (lo, hi = b -+ 1) this is the same polynomial as
         ``(a^T x - b)^2 - 1 <= 0`` [HS96, eq. (23)], so the two forms are one quadratic.
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            Non-zero direction.
+        lo, hi : float
+            Bounds of ``a^T x``, ``lo <= hi``.
+
+        Returns
+        -------
+        QuadraticSet
+            The product form.
+
+        Raises
+        ------
+        ValueError
+            If an argument is non-finite, ``a`` is zero, or ``lo > hi``.
         """
         a = v.finite_vector("a", a)
         lo, hi = v.finite_scalar("lo", lo), v.finite_scalar("hi", hi)
@@ -154,12 +202,34 @@ class QuadraticSet:
 
     @classmethod
     def from_strip(cls, S: Strip) -> QuadraticSet:
-        """``(a^T x - b)^2 - 1 <= 0`` [HS96, eq. (23)]."""
+        """``(a^T x - b)^2 - 1 <= 0`` [HS96, eq. (23)].
+
+        Parameters
+        ----------
+        S : Strip
+            The strip.
+
+        Returns
+        -------
+        QuadraticSet
+            The strip as one quadratic form.
+        """
         return cls.from_bounds(S.a, S.b - 1.0, S.b + 1.0)
 
     @classmethod
     def from_halfspace(cls, H: Halfspace) -> QuadraticSet:
-        """The affine form ``a^T x - b <= 0`` (A = 0)."""
+        """The affine form ``a^T x - b <= 0`` (A = 0).
+
+        Parameters
+        ----------
+        H : Halfspace
+            The half-space.
+
+        Returns
+        -------
+        QuadraticSet
+            The half-space as one (affine) form.
+        """
         return cls.from_parts(np.zeros((H.dim, H.dim)), 0.5 * H.a, -H.b)
 
     # --------------------------------------------------------------------- attributes

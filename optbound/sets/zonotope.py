@@ -137,7 +137,25 @@ class Zonotope(ConvexSet):
     @classmethod
     def from_box(cls, box: Box) -> Zonotope:
         """The zonotope ``<mid, diag(rad)>`` of a bounded box (radii rounded up: it contains
-        the box exactly)."""
+        the box exactly).
+
+        Parameters
+        ----------
+        box : Box
+            A bounded box.
+
+        Returns
+        -------
+        Zonotope
+            An axis-aligned zonotope containing the box.
+
+        Raises
+        ------
+        TypeError
+            If ``box`` is not a Box.
+        ValueError
+            If ``box`` is unbounded.
+        """
         if not isinstance(box, Box):
             raise TypeError(f"box must be a Box, got {type(box).__name__}")
         if not box.is_bounded:
@@ -150,7 +168,23 @@ class Zonotope(ConvexSet):
     @classmethod
     def from_ellipsoid(cls, E) -> Zonotope:
         """A parallelotope containing the ellipsoid ``E`` (certified; see
-        :func:`~optbound.sets.zonotope_conversions.ellipsoid_generators`)."""
+        :func:`~optbound.sets.zonotope_conversions.ellipsoid_generators`).
+
+        Parameters
+        ----------
+        E : Ellipsoid
+            The ellipsoid enclosed.
+
+        Returns
+        -------
+        Zonotope
+            A parallelotope with E's centre containing E.
+
+        Raises
+        ------
+        ValueError
+            If E is too ill-conditioned for the containment to be proven.
+        """
         from optbound.sets.zonotope_conversions import ellipsoid_generators
 
         return cls(E.center, ellipsoid_generators(E))

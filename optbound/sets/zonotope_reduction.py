@@ -47,6 +47,13 @@ def reduce_generators(G: np.ndarray, max_generators: int, method: str = "girard"
     np.ndarray, shape (n, k), k <= max_generators
         The kept generators (in their original order) followed by the box generators with a
         non-zero radius. ``G`` itself when it already fits the budget.
+
+    Raises
+    ------
+    TypeError
+        If ``max_generators`` is not an integer.
+    ValueError
+        If ``max_generators < n`` or ``method`` is unknown.
     """
     n, m = G.shape
     scores = _scores(G, method)
