@@ -111,6 +111,8 @@ def lifted_update(
     Returns
     -------
     LiftedUpdate
+        The certified bound (None if the intersection is certified empty), the lambda used and
+        the certified inflation.
 
     Raises
     ------

@@ -200,8 +200,9 @@ def minkowski_member(c1, C1, c2, C2, p, out_c, out_C) -> None:
 
 
 def minkowski_p_volume(C1, C2) -> float:
-    """p of the minimum-volume Schweppe member: the root of
-    ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
+    """The parameter p of the minimum-volume Schweppe member.
+
+    It is the root of ``h(p) = sum_i p (p + 1) / (l_i + p) - n`` (l_i the generalized eigenvalues of
     ``C1 v = l C2 v``), which is increasing in p and changes sign on
     ``[sqrt(min l), sqrt(max l)]`` (Durieu, Walter & Polyak 2001); found by bisection to the
     resolution of floats.

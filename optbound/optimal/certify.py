@@ -81,6 +81,12 @@ def certify_lmi(
         The certified ellipsoid, the inflation ``alpha >= 1`` applied to its semi-axes, and the
         factor ``beta`` in (0, 1] by which the multipliers must be scaled for the certificate.
 
+    Raises
+    ------
+    CertificationError
+        If no ``beta`` makes the right-hand side positive definite with margin, or the
+        inflated ellipsoid still fails the re-check.
+
     Notes
     -----
     At an S-procedure optimum ``G0 + S`` is typically singular exactly where ``P`` is (the
@@ -88,12 +94,6 @@ def certify_lmi(
     multipliers by ``beta < 1`` restores it, so ``alpha`` is minimised over
     ``beta in {1} U {1 - 10^-j : j = 1..14}``; for each, the smallest ``alpha`` is the
     generalized eigenvalue ``lambda_max(P, G0 + beta S - delta I)``.
-
-    Raises
-    ------
-    CertificationError
-        If no ``beta`` makes the right-hand side positive definite with margin, or the
-        inflated ellipsoid still fails the re-check.
     """
     S, weighted = weighted_sum(np.asarray(weights, dtype=float), matrices)
     g_scale = float(np.linalg.norm(fixed)) + weighted

@@ -27,7 +27,8 @@ class SolverError(RuntimeError):
 class EmptyIntersectionError(EmptySetError):
     """The sets to be bounded have an empty intersection: no outer ellipsoid is defined.
 
-    A ``ValueError`` (through ``optbound.sets.base.EmptySetError``)."""
+    A ``ValueError`` (through ``optbound.sets.base.EmptySetError``).
+    """
 
 
 class CertificationError(RuntimeError):

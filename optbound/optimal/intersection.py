@@ -225,7 +225,7 @@ def outer_ellipsoid(
 
     Parameters
     ----------
-    intersection : sequence of Ellipsoid, Strip, Halfspace, Box, QuadraticSet, ...
+    intersection : sequence of QuadraticallyDescribed (Ellipsoid, Strip, Halfspace, Box, ...)
         The sets whose intersection is bounded (same dimension n): any type with a quadratic
         description (``optbound.sets.base.QuadraticallyDescribed``).
     objective : {"volume", "trace", "projection"}

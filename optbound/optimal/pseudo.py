@@ -133,6 +133,7 @@ def optimal_pseudo_ellipsoid(
     Returns
     -------
     PseudoReference
+        The certified upper set and the bracket ``lower <= optimum <= upper`` of lifted volumes.
 
     Raises
     ------

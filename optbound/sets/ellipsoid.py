@@ -139,7 +139,7 @@ class Ellipsoid(ConvexSet):
         return log_unit_ball + float(np.sum(np.log(np.diag(self._chol))))
 
     def volume(self) -> float:
-        """n-dimensional volume ``vol(unit ball) * sqrt(det C)``.
+        """The n-dimensional volume ``vol(unit ball) * sqrt(det C)``.
 
         Returns
         -------

@@ -81,6 +81,14 @@ class Strip(_LinearSet):
     b : float
         Offset: the strip is ``b - 1 <= a^T x <= b + 1``.
 
+    Raises
+    ------
+    ValueError
+        If ``a`` is zero, non-finite or has a norm outside ``[1e-60, 1e60]``, or ``b`` is
+        non-finite or ``|b| > 1e120`` (the supported domain, ``optbound._core.domain``).
+    TypeError
+        If an argument is complex or not numeric.
+
     Examples
     --------
     >>> from optbound.sets import Strip
@@ -91,14 +99,6 @@ class Strip(_LinearSet):
     [True, False]
     >>> S.extent([0.0, 1.0])
     (0.0, 1.0)
-
-    Raises
-    ------
-    ValueError
-        If ``a`` is zero, non-finite or has a norm outside ``[1e-60, 1e60]``, or ``b`` is
-        non-finite or ``|b| > 1e120`` (the supported domain, ``optbound._core.domain``).
-    TypeError
-        If an argument is complex or not numeric.
     """
 
     @classmethod
