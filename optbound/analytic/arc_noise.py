@@ -9,6 +9,11 @@ shape ``diag(4 r^2 / 3, 4 r^4 / 9)``. Along the arc its level is ``(9 tau^2 - 9 
 with ``tau = t^2 / r^2``: 1 at the three points of contact, below 1 in between. Its area is
 ``4 pi r^3 / (3 sqrt 3)``: a Steiner circum-ellipse has ``4 pi / (3 sqrt 3)`` times the area of
 its triangle, here ``r^3``; the shear has determinant 1, so the area holds for any centre.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

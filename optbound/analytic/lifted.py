@@ -31,6 +31,11 @@ Criteria:
   ``AREA_RTOL`` of the grid minimum is taken (the best-conditioned of the equally small
   candidates); only when that is the grid minimum itself is it refined by Brent. Every lambda
   >= 0 is an outer bound, so the choice costs no guarantee.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

@@ -28,6 +28,11 @@ ranges gives them, so the S-procedure with them is tighter on polytopes
 The range is then written in product form ``(a^T x - lo)(a^T x - hi) <= 0``; for a strip
 ``|a^T x - b| <= 1`` this is the very same polynomial as ``(a^T x - b)^2 <= 1``, so the two
 forms are one quadratic. An unclipped half-space stays affine, ``a^T x - b <= 0``.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

@@ -22,6 +22,11 @@ returned ellipsoid in x.
 For two summands the optimum equals the best member of the family
 ``C_1 / (1 - kappa) + C_2 / kappa`` [HS96, eqs. (9)-(11)]; for three or more the S-procedure
 can be slightly above the true minimum.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

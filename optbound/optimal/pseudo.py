@@ -17,6 +17,11 @@ the lifted filter [BH, eq. (16)] approximates. It is bracketed:
   The reference is nearly flat in some lifted directions (the lifted set lies close to the
   zero set of a few polynomials), so a coarse paving, whose boundary boxes protrude to first
   order in their width, needs a large inflation.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

@@ -3,6 +3,13 @@
 The convention matches [HS96, eq. (7)] and [BH, eq. (4)]: ``shape`` is the matrix C (not its
 inverse), so semi-axes are the square roots of its eigenvalues and the support function is
 ``c^T d + sqrt(d^T C d)``.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

@@ -17,6 +17,11 @@ closed under translations and scalings, so nothing is lost.
 One formula serves points and boxes: :meth:`PolynomialLifting.components` takes the
 coordinates as float arrays or as :class:`~optbound.interval.Interval` arrays (outward-rounded
 interval arithmetic), so the image of a box is a guaranteed enclosure.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

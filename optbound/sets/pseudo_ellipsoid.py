@@ -16,6 +16,11 @@ Membership on boxes is proven, not sampled (:meth:`PseudoEllipsoid.tri_contains`
   (m the box's midpoint, J the lifting's interval Jacobian), intersected with the natural
   extension ``W y(box)``; the mean-value form keeps the cancellations inside ``W J`` that the
   natural extension loses, so its overestimate shrinks like the box width squared.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

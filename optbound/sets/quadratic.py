@@ -9,6 +9,13 @@ Sect. 2.6.3]. Writing ``F = [[A, b], [b^T, c]]`` the inequality reads
 The set need not be convex (``A`` may be indefinite), so this class offers the ``ConvexSet``
 methods (``dim``, ``contains``, ``support``, ``extent``) without claiming convexity: its
 ``support`` is the support function of the closed convex hull.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

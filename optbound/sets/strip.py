@@ -1,4 +1,10 @@
-"""Strips ``{x : |a^T x - b| <= 1}`` [HS96, eq. (23)] and half-spaces ``{x : a^T x <= b}``."""
+"""Strips ``{x : |a^T x - b| <= 1}`` [HS96, eq. (23)] and half-spaces ``{x : a^T x <= b}``.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
+"""
 
 from __future__ import annotations
 
