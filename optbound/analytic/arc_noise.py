@@ -12,8 +12,8 @@ its triangle, here ``r^3``; the shear has determinant 1, so the area holds for a
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

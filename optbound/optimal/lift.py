@@ -31,8 +31,8 @@ forms are one quadratic. An unclipped half-space stays affine, ``a^T x - b <= 0`
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

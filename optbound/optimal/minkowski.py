@@ -25,8 +25,8 @@ can be slightly above the true minimum.
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

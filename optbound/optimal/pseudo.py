@@ -20,8 +20,8 @@ the lifted filter [BH, eq. (16)] approximates. It is bracketed:
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

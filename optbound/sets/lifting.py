@@ -20,8 +20,8 @@ interval arithmetic), so the image of a box is a guaranteed enclosure.
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

@@ -19,8 +19,8 @@ Membership on boxes is proven, not sampled (:meth:`PseudoEllipsoid.tri_contains`
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations

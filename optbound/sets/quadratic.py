@@ -12,10 +12,11 @@ methods (``dim``, ``contains``, ``support``, ``extent``) without claiming convex
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
+
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
