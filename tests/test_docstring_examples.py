@@ -11,6 +11,9 @@ ENTRY_POINTS = [
     "optbound.analytic.bounding_update:bounding_update",
     "optbound.optimal.intersection:outer_ellipsoid",
     "optbound.interval.sivia:sivia",
+    "optbound.interval.interval:Interval",
+    "optbound.interval.relaxed:relaxed_paving",
+    "optbound.interval.relaxed:min_outliers",
     "optbound.problems.audit:evaluate",
 ]
 
