@@ -14,6 +14,9 @@ ENTRY_POINTS = [
     "optbound.interval.interval:Interval",
     "optbound.interval.relaxed:relaxed_paving",
     "optbound.interval.relaxed:min_outliers",
+    "optbound.compare.metrics:volume_ratio",
+    "optbound.compare.containment:contains",
+    "optbound.compare.size:size_bracket",
     "optbound.problems.audit:evaluate",
 ]
 
