@@ -17,6 +17,7 @@ ENTRY_POINTS = [
     "optbound.compare.metrics:volume_ratio",
     "optbound.compare.containment:contains",
     "optbound.compare.size:size_bracket",
+    "optbound.localization.sonar:localize",
     "optbound.problems.audit:evaluate",
 ]
 
