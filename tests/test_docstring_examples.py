@@ -18,6 +18,7 @@ ENTRY_POINTS = [
     "optbound.compare.containment:contains",
     "optbound.compare.size:size_bracket",
     "optbound.localization.sonar:localize",
+    "optbound.localization.visibility:track",
     "optbound.problems.audit:evaluate",
 ]
 
