@@ -19,6 +19,7 @@ ENTRY_POINTS = [
     "optbound.compare.size:size_bracket",
     "optbound.localization.sonar:localize",
     "optbound.localization.visibility:track",
+    "optbound.localization.relative_bearing:localize",
     "optbound.problems.audit:evaluate",
 ]
 
