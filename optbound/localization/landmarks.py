@@ -433,6 +433,26 @@ def heading_bound(L, Lx, Ly, alphas, delta, xy: Box) -> Interval:
 
     Each bearing gives ``psi in atan2(L_i - p) - alpha_i + [-delta, delta]`` (mod 2 pi);
     intervals narrower than pi are shifted by 2 pi k onto the first one and intersected.
+
+    Parameters
+    ----------
+    L : numpy.ndarray, shape (N, 2)
+        Landmark positions.
+    Lx, Ly : Interval, shape (N,)
+        Boxes enclosing the landmark ellipses [HS96, eq. (2)].
+    alphas : numpy.ndarray, shape (N,)
+        Measured bearings (radians).
+    delta : float
+        Bound on the bearing errors (radians).
+    xy : Box
+        2-D box of positions.
+
+    Returns
+    -------
+    Interval
+        Heading interval centred in ``[-pi, pi]``, containing every heading consistent with
+        a position of ``xy``; ``[-pi, pi]`` if no bearing is informative, empty if the
+        bearings are inconsistent.
     """
     x, y = Interval(xy.lo[0], xy.hi[0]), Interval(xy.lo[1], xy.hi[1])
     out = None
@@ -454,8 +474,30 @@ def pose_test(landmarks, alphas, delta_alpha: float, landmark_shapes=None, psi_r
     """The three-valued test of :func:`pose_paving`'s set on ``Interval`` ``(x, y, psi)`` boxes.
 
     ``psi_range`` ``(lo, hi)`` (default ``(-pi, pi)``): the headings the test must handle
-    (boxes of other headings can only lose TRUE answers, never get a wrong one). Arguments
-    as in :func:`linear_position_bound`.
+    (boxes of other headings can only lose TRUE answers, never get a wrong one).
+
+    Parameters
+    ----------
+    landmarks : array_like, shape (N, 2)
+        Landmark positions.
+    alphas : array_like, shape (N,)
+        Measured bearings (radians).
+    delta_alpha : float
+        Bound on the bearing errors (radians).
+    landmark_shapes : array_like, optional
+        (N, 2, 2) or (2, 2) landmark error ellipses ``C_i``; default exact landmarks.
+    psi_range : tuple of float, optional
+        ``(lo, hi)`` headings the test must handle; default ``(-pi, pi)``.
+
+    Returns
+    -------
+    callable
+        ``test(x, y, psi)`` on ``Interval`` boxes: TRUE / FALSE / UNKNOWN per box.
+
+    Raises
+    ------
+    ValueError
+        On malformed landmarks, bearings, bound or shapes.
     """
     L = as_landmarks("landmarks", landmarks, min_count=1)
     a = as_angles("alphas", alphas, L.shape[0])
