@@ -17,6 +17,8 @@ ENTRY_POINTS = [
     "optbound.compare.metrics:volume_ratio",
     "optbound.compare.containment:contains",
     "optbound.compare.size:size_bracket",
+    "optbound.compare.exact:contains_set",
+    "optbound.compare.tri:tri_contains",
     "optbound.localization.sonar:localize",
     "optbound.localization.visibility:track",
     "optbound.localization.relative_bearing:localize",
