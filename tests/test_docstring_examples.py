@@ -22,6 +22,11 @@ ENTRY_POINTS = [
     "optbound.localization.sonar:localize",
     "optbound.localization.visibility:track",
     "optbound.localization.relative_bearing:localize",
+    "optbound.localization.linearized_bearing:linearized_localize",
+    "optbound.localization.landmarks:linear_position_bound",
+    "optbound.localization.landmarks:pose_paving",
+    "optbound.localization.tracker:SetTracker",
+    "optbound.compare.proof:prove_contains",
     "optbound.problems.audit:evaluate",
 ]
 

@@ -92,6 +92,15 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
         ``outer`` has neither an interval test nor ``contains``.
     ValueError
         If the dimensions differ.
+
+    Examples
+    --------
+    >>> from optbound.interval import sivia
+    >>> disc = sivia(lambda x, y: (x**2 + y**2,), [[-np.inf, 1]], [[-2, 2], [-2, 2]], 0.05)
+    >>> prove_contains(Box([-1.1, -1.1], [1.1, 1.1]), disc).status
+    'proven'
+    >>> prove_contains(Box([-0.9, -0.9], [0.9, 0.9]), disc).status
+    'refuted'
     """
     outer = bound_set(outer)
     dim = getattr(outer, "dim", None)

@@ -304,6 +304,22 @@ def linear_position_bound(landmarks, alphas, delta_alpha: float, landmark_shapes
         from a multiple of pi, an interval matrix ``M`` that is not provably regular (errors
         too large or the geometry near singular), or bearings that no position fits within
         the bounds.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+
+    Examples
+    --------
+    Four landmarks at the corners of a room, robot at (1, 1) heading 0.2 rad, bearings
+    known to 0.01 rad:
+
+    >>> L = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]])
+    >>> alphas = np.arctan2(L[:, 1] - 1.0, L[:, 0] - 1.0) - 0.2
+    >>> box = linear_position_bound(L, alphas, 0.01)
+    >>> bool(box.contains([1.0, 1.0])), bool(np.all(box.widths < 0.1))
+    (True, True)
     """
     L = as_landmarks("landmarks", landmarks, min_count=3)
     a = as_angles("alphas", alphas, L.shape[0])
@@ -548,6 +564,21 @@ def pose_paving(
     -------
     Paving
         With ``.hull()`` (``None`` if the set is empty) and ``.components()``.
+
+    Raises
+    ------
+    ValueError
+        On malformed landmarks, bearings, bounds or shapes, an ``X0`` that is not a bounded
+        3-D box with volume, or the errors of :func:`linear_position_bound` when ``X0`` and
+        ``prior`` are not given.
+
+    Examples
+    --------
+    >>> L = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]])
+    >>> alphas = np.arctan2(L[:, 1] - 1.0, L[:, 0] - 1.0) - 0.2
+    >>> hull = pose_paving(L, alphas, 0.01, eps=0.02).hull()
+    >>> bool(hull.contains([1.0, 1.0, 0.2])), bool(hull.widths[2] < 0.05)
+    (True, True)
     """
     L = as_landmarks("landmarks", landmarks, min_count=1)
     a = as_angles("alphas", alphas, L.shape[0])

@@ -139,6 +139,17 @@ def linearized_localize(
     -------
     LinearizedResult
         Not guaranteed to contain the feasible set (module docstring).
+
+    Examples
+    --------
+    The setting of [BH, Sect. V] (vehicle at the origin, eps = 4 degrees):
+
+    >>> from optbound.localization.relative_bearing import bearings
+    >>> L = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
+    >>> pairs = [(2, 0), (0, 1), (1, 2)]
+    >>> result = linearized_localize(L, pairs, bearings([0.0, 0.0], L, pairs), np.radians(4))
+    >>> result.certified, result.rejected, bool(result.ellipse.contains([0.0, 0.0]))
+    (False, 0, True)
     """
     data = measurements(landmarks, pairs, gammas, eps)
     if int(relinearize) != relinearize or relinearize < 0:
