@@ -12,6 +12,10 @@ ENTRY_POINTS = [
     "optbound.optimal.intersection:outer_ellipsoid",
     "optbound.interval.sivia:sivia",
     "optbound.problems.audit:evaluate",
+    "optbound.problems:families",
+    "optbound.problems:suite",
+    "optbound.problems.problem:Problem",
+    "optbound.problems.registry:load",
 ]
 
 

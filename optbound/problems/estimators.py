@@ -15,12 +15,60 @@ from optbound.sets import Ellipsoid
 
 
 def analytic_volume(problem: Problem) -> Ellipsoid | None:
-    """The volume-optimal member of the ellipsoid ∩ strip family [HS96, eq. (26)]."""
+    """Bound a ``strip`` problem by the volume-optimal member of the ellipsoid ∩ strip family.
+
+    [HS96, eq. (26)], by :func:`optbound.analytic.intersect_strip` with
+    ``criterion="volume"``.
+
+    Parameters
+    ----------
+    problem : Problem
+        A problem whose ``data`` has an ``"ellipsoid"`` and a ``"strip"``.
+
+    Returns
+    -------
+    Ellipsoid or None
+        The fused ellipsoid; None if the strip misses the ellipsoid.
+
+    Raises
+    ------
+    TypeError
+        If ``problem.data`` lacks ``"ellipsoid"`` or ``"strip"``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+    """
     return _intersect_strip(problem, "volume")
 
 
 def analytic_trace(problem: Problem) -> Ellipsoid | None:
-    """The trace-minimising member of the ellipsoid ∩ strip family [HS96, eq. (24)]."""
+    """Bound a ``strip`` problem by the trace-minimising member of the ellipsoid ∩ strip family.
+
+    [HS96, eq. (24)], by :func:`optbound.analytic.intersect_strip` with
+    ``criterion="trace"``.
+
+    Parameters
+    ----------
+    problem : Problem
+        A problem whose ``data`` has an ``"ellipsoid"`` and a ``"strip"``.
+
+    Returns
+    -------
+    Ellipsoid or None
+        The fused ellipsoid; None if the strip misses the ellipsoid.
+
+    Raises
+    ------
+    TypeError
+        If ``problem.data`` lacks ``"ellipsoid"`` or ``"strip"``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+    """
     return _intersect_strip(problem, "trace")
 
 
