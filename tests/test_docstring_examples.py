@@ -16,6 +16,12 @@ ENTRY_POINTS = [
     "optbound.problems:suite",
     "optbound.problems.problem:Problem",
     "optbound.problems.registry:load",
+    "optbound.scenarios.alamo2005:system",
+    "optbound.scenarios.arena:simulate",
+    "optbound.scenarios.bh_geometry:sect5_instance",
+    "optbound.scenarios.linear_systems:random_system",
+    "optbound.scenarios.office:office_map",
+    "optbound.scenarios.office:simulate",
 ]
 
 

@@ -28,7 +28,20 @@ HALF_APERTURE, REL_ACCURACY = np.deg2rad(12.0), 0.02
 def triangle_sonars(
     half_aperture: float = HALF_APERTURE, rel_accuracy: float = REL_ACCURACY
 ) -> list[Sonar]:
-    """Four sonars on a 0.2 m radius belt pointing forward, left, backward and right (ours)."""
+    """Build four sonars on a 0.2 m radius belt pointing forward, left, backward and right (ours).
+
+    Parameters
+    ----------
+    half_aperture : float, default HALF_APERTURE
+        Half-angle of each sonar's emission cone [rad] (12° [LJMW97, Sect. 4]).
+    rel_accuracy : float, default REL_ACCURACY
+        Relative range accuracy (2 % [LJMW97, Sect. 4]).
+
+    Returns
+    -------
+    list of Sonar
+        The four sonars, in the robot's frame.
+    """
     return [
         Sonar((0.2 * np.cos(a), 0.2 * np.sin(a)), a, half_aperture, rel_accuracy)
         for a in np.deg2rad([0.0, 90.0, 180.0, -90.0])
@@ -45,7 +58,29 @@ def belt_sonars(
     half_aperture: float = HALF_APERTURE,
     rel_accuracy: float = REL_ACCURACY,
 ) -> list[Sonar]:
-    """``n`` sonars evenly spread on a circular belt, each pointing outward [KJWM00, Fig. 1]."""
+    """Build ``n`` sonars evenly spread on a circular belt, each pointing outward [KJWM00, Fig. 1].
+
+    Parameters
+    ----------
+    n : int, default 16
+        The number of sonars; the first points forward.
+    radius : float, default 0.3
+        The belt's radius [m].
+    half_aperture : float, default HALF_APERTURE
+        Half-angle of each sonar's emission cone [rad].
+    rel_accuracy : float, default REL_ACCURACY
+        Relative range accuracy.
+
+    Returns
+    -------
+    list of Sonar
+        The sonars, in the robot's frame.
+
+    References
+    ----------
+    .. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+       localization using interval analysis", Reliable Computing, 2000.
+    """
     angles = 2 * np.pi * np.arange(n) / n
     return [
         Sonar((radius * np.cos(a), radius * np.sin(a)), a, half_aperture, rel_accuracy)
