@@ -22,6 +22,11 @@ ENTRY_POINTS = [
     "optbound.scenarios.linear_systems:random_system",
     "optbound.scenarios.office:office_map",
     "optbound.scenarios.office:simulate",
+    "optbound.report.document:write_report",
+    "optbound.report.results:save_results",
+    "optbound.report.readme:headline_refusal",
+    "optbound.report.summary:ratio_stats",
+    "optbound.report.tables:markdown_table",
 ]
 
 
