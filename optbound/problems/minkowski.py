@@ -101,8 +101,10 @@ def instance(seed: int, dim: int, cond: float, scale: float) -> tuple[Ellipsoid,
 
     Returns
     -------
-    E1, E2 : Ellipsoid
-        The summands.
+    E1 : Ellipsoid
+        The first summand (largest semi-axis 1).
+    E2 : Ellipsoid
+        The second summand (largest semi-axis ``scale``).
     """
     rng = np.random.default_rng(seed)
     E1 = random_ellipsoid(rng, dim, cond)

@@ -104,7 +104,8 @@ class Problem:
         Raises
         ------
         ValueError
-            If ``X`` is not finite or its last dimension is not :attr:`dim`.
+            If ``X`` is not real and finite or its shape is neither (m, :attr:`dim`) nor
+            (:attr:`dim`,).
         """
         pts, _ = v.points("X", X, self.dim)
         return point_test(self.test, pts)
@@ -127,7 +128,7 @@ class Problem:
         Raises
         ------
         ValueError
-            If ``eps`` is not a finite positive number.
+            If ``eps`` is not a real, finite, positive number.
 
         References
         ----------
@@ -164,15 +165,15 @@ class Problem:
         Returns
         -------
         dict of str to set
-            A copy of the cached references:
+            A copy of the cached references.
 
-        - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has one,
-          else the S-procedure SDP optimum of :attr:`intersection`
-          (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
-          intersection) the certified MVEE of the exact paving's box corners
-          (``optimal.mvee``, which contains every box);
-        - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
-          hence exact), the smallest box the paving can prove.
+            - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has
+              one, else the S-procedure SDP optimum of :attr:`intersection`
+              (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
+              intersection) the certified MVEE of the exact paving's box corners
+              (``optimal.mvee``, which contains every box);
+            - ``"best_box"``: the hull of the exact paving's inner and boundary boxes
+              (floats, hence exact), the smallest box the paving can prove.
         """
         if "references" not in self._cache:
             self._cache["references"] = {

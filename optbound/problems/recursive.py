@@ -98,7 +98,7 @@ def instance(
 
 
 def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]:
-    """Boxes proven to contain ``E0 ∩ S_1 ∩ ... ∩ S_k``, one per depth ``k`` of ``ks``.
+    """Bound ``E0 ∩ S_1 ∩ ... ∩ S_k`` by a proven box, for each depth ``k`` of ``ks``.
 
     ``E0``'s box contracted by one pass over the strips in order, the box of a depth carried
     to the next: each strip ``|a^T x - b| <= 1`` gives, for every coordinate ``i`` with

@@ -334,9 +334,11 @@ def corrupt_scan(
 
     Returns
     -------
-    (alphas, labels) : ndarray (m,), ndarray of int (m,)
-        The corrupted scan (kept true bearings first, spurious ones after) and each bearing's
-        landmark index, ``-1`` for a spurious bearing (``association.SPURIOUS``).
+    alphas : np.ndarray, shape (m,)
+        The corrupted scan: kept true bearings first, spurious ones after.
+    labels : np.ndarray of int, shape (m,)
+        Each bearing's landmark index, ``-1`` for a spurious bearing
+        (``association.SPURIOUS``).
 
     Raises
     ------
