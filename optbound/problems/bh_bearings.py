@@ -15,6 +15,11 @@ benchmark's: a coarse paving of the prior box (1/40 of its widest side) gives a 
 to contain the set, paved at 1/``relative`` of the hull's widest side. The reference ellipse
 is the benchmark's: the smaller of the rings' S-procedure SDP and the MVEE of the exact
 paving's boxes (``relative_bearing.best_ellipse``, both certified).
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -59,6 +64,11 @@ def tasks(suite: str, seed: int) -> list[dict]:
     ------
     ValueError
         For an unknown ``suite``.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
@@ -87,6 +97,11 @@ def instance(seed: int, variant: str) -> tuple[np.ndarray, list, np.ndarray, flo
     tuple
         ``(landmarks, pairs, gammas, eps, truth)``: landmarks (N, 2), landmark pairs,
         relative bearings (P,), their error bounds and the vehicle's position (2,).
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     if variant == "BH geometry":
         return bh.sect5_instance()

@@ -6,6 +6,11 @@ the way an installed package registers its own (:mod:`optbound.problems.registry
 Each applies one fusion criterion of [HS96, eq. (24)] (:func:`optbound.analytic.intersect_strip`)
 to the prior ellipsoid and the strip of a ``strip`` problem; on a problem of another family it
 raises a TypeError, which :func:`optbound.evaluate` reports as that row's error.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

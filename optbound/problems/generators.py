@@ -131,6 +131,11 @@ def strip_bounds(rng: np.random.Generator, kind: str) -> tuple[float, float]:
     ------
     ValueError
         For an unknown ``kind``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     if kind == "narrow":
         width, mid = rng.uniform(0.05, 0.3), rng.uniform(-0.2, 0.2)

@@ -16,6 +16,11 @@ bearing is consistent with some landmark in its ellipse and some error within
 domain is the hull of that paving's adaptive refinement from the office box times every
 heading (guaranteed, and defined also where HS96's linear position bound is not), paved at
 1/RELATIVE of the hull's widest side.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -90,6 +95,11 @@ def instance(seed: int, count: int, delta_alpha: float) -> dict:
     dict
         ``"landmarks"`` (count, 2), ``"landmark_shapes"`` (count, 2, 2), ``"alphas"``
         (count,) in [0, 2 pi) and ``"truth"``, the pose (x, y, psi).
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     rng = np.random.default_rng(seed)
     omap = office.office_map()

@@ -24,6 +24,11 @@ The direction and the split point of a box come from the κ family (HS96's outer
 summands' gauges at the optimal κ; the share ``a`` is ``E1``'s part of the support in
 direction ``d``, ``h1 / (h1 + h2)``. Both are floating-point guesses; only the interval checks
 decide, so a poor guess costs tightness, never soundness.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

@@ -4,6 +4,11 @@ A problem is described once, by the three-valued interval test of its true set (
 built from the ``tri_test`` of its constituent sets). Both :meth:`Problem.member` (points)
 and :meth:`Problem.exact` (a SIVIA paving [LJMW97, Sect. 3.2]) evaluate that one test, so the
 membership of a point and the paving can never disagree.
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 """
 
 from __future__ import annotations

@@ -8,6 +8,11 @@ estimator gets ``data = {"prior": E0, "strips": (S_1, ..., S_k)}`` (to fuse in t
 recursively or at once) and ``truth`` is the point. The true set is the intersection,
 described once by the conjunction of the sets' interval tests; its reference ellipsoid is
 the S-procedure SDP over all k strips at once (the benchmark's "batch SDP").
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

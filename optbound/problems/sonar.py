@@ -14,6 +14,13 @@ The true set is ``{q ∈ X0 : f(q) ∈ D}`` [LJMW97, eq. (3)], described once by
 own tests (:func:`optbound.localization.sonar.sonar_tests`, the ones ``sonar.localize``
 paves) and ``X0``'s. Its domain is the hull of a coarse paving of ``X0`` (1/COARSE of its
 widest side), paved at 1/RELATIVE of the hull's widest side.
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+   localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -60,6 +67,11 @@ def tasks(suite: str, seed: int) -> list[dict]:
     ------
     ValueError
         For an unknown ``suite``.
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
@@ -107,6 +119,11 @@ def instance(seed: int, room: str, paper_pose: bool) -> dict:
     dict
         ``"world"`` (s, 2, 2) walls, ``"sonars"``, ``"ranges"`` (t,), ``"prior_box"`` and
         ``"truth"``, the pose (x, y, theta).
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     rng = np.random.default_rng(seed)
     world, belt = _room(room)

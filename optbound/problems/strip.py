@@ -6,6 +6,11 @@ partial (only one plane cuts: in effect a half-space) [HS96, Sect. 4]. The estim
 ``data = {"ellipsoid": E, "strip": S}``: the prior set and the measurement. The true set is
 ``E ∩ S``, described once by the conjunction of the two sets' interval tests; its volume
 has a closed form (:func:`~optbound.compare.size.ellipsoid_strip_volume_bracket`).
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

@@ -17,6 +17,11 @@ built on the model's three-valued segment test
 LUVIA use): a measurement is refuted on a box when the whole team-mate box refutes it, and
 proven when one of WITNESSES × WITNESSES witness points of the team-mate box proves it for
 every point of the box. The truth lies in the set, since E⁻ ⊂ E ⊂ E⁺.
+
+References
+----------
+.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+   set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations

@@ -16,6 +16,11 @@ one at a time, each with stated alternatives: ``layout="random"`` draws 11 conve
 and 11 start positions from the run's seed (a different room per seed, same rules as the
 designed one), ``turn`` the motion (0: straight lines, a new random heading when blocked),
 ``heading_error`` the compass bound and ``box_offset`` where the truth sits in its initial box.
+
+References
+----------
+.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+   set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations

@@ -6,6 +6,11 @@
 restate it. The paper's figures are lost, so nothing beyond these numbers is reproduced.
 :func:`random_instance` is **our design**: random landmark triples and vehicles with the
 same pairs, for sweeps. The model they feed is :mod:`optbound.localization.relative_bearing`.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -86,6 +91,11 @@ def random_instance(
         The noise bound [rad].
     vehicle : np.ndarray, shape (2,)
         The vehicle, uniform in ``[-1, 1]^2``.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     pairs = [tuple(p) for p in pairs]
     margin = np.radians(3.0)

@@ -17,6 +17,11 @@ Nothing here was tuned to reach the paper's numbers. The models it drives are
 :class:`optbound.localization.tracker.SetTracker` (with its association gate
 :func:`~optbound.localization.tracker.nearest_landmark`) and the association search of
 :mod:`optbound.localization.association`.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -345,6 +350,11 @@ def corrupt_scan(
     ValueError
         If ``alphas`` and ``truth`` are not 1-D of equal length, or a rate is outside
         ``[0, 1]``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     alphas = np.asarray(alphas, dtype=float)
     truth = np.asarray(truth, dtype=int)

@@ -6,6 +6,13 @@ and four sonars; a room with a belt of sonars), not reconstructions of the paper
 The model they feed is :mod:`optbound.localization.sonar` (which also holds the wall builder
 :func:`~optbound.localization.sonar.polygon_walls` and the "robot inside the room" prior
 :func:`~optbound.localization.sonar.clearance_test`).
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+   localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -41,6 +48,11 @@ def triangle_sonars(
     -------
     list of Sonar
         The four sonars, in the robot's frame.
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     return [
         Sonar((0.2 * np.cos(a), 0.2 * np.sin(a)), a, half_aperture, rel_accuracy)
