@@ -106,10 +106,7 @@ def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]
     """Bound ``E0 ∩ S_1 ∩ ... ∩ S_k`` by a proven box, for each depth ``k`` of ``ks``.
 
     ``E0``'s box contracted by one pass over the strips in order, the box of a depth carried
-    to the next: each strip ``|a^T x - b| <= 1`` gives, for every coordinate ``i`` with
-    ``a_i != 0``, ``x_i ∈ (b + [-1, 1] - sum_{j != i} a_j X_j) / a_i`` in outward-rounded
-    interval arithmetic (forward-backward propagation, all coordinates at once), intersected
-    with ``X_i``.
+    to the next (see Notes).
 
     Parameters
     ----------
@@ -125,6 +122,16 @@ def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]
     list of Box
         One box per depth, each proven to contain the intersection of ``E0`` and the first
         ``k`` strips.
+
+    Notes
+    -----
+    Each strip ``|a^T x - b| <= 1`` contracts the box ``X`` coordinate by coordinate: for
+    every ``i`` with ``a_i != 0``::
+
+        x_i ∈ X_i ∩ (b + [-1, 1] - sum_{j != i} a_j X_j) / a_i
+
+    in outward-rounded interval arithmetic (forward-backward propagation, all coordinates at
+    once from the same ``X``).
     """
     prior = as_pseudo_ellipsoid(E0).bounding_box()  # outward-rounded: contains E0
     X, n, done, out = Interval(prior.lo, prior.hi), E0.dim, 0, []

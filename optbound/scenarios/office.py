@@ -96,9 +96,6 @@ class OdometryBounds:
     def shape(self, step: np.ndarray, floor: float = 1e-7) -> np.ndarray:
         """Build ``C^Delta``, the shape of an ellipsoid containing the error box.
 
-        ``3 diag(h^2)`` with ``h`` the :meth:`half_widths` plus ``floor``: the ellipsoid
-        ``e^T C^{-1} e <= 1`` through the box's corners in 3-D.
-
         Parameters
         ----------
         step : np.ndarray, shape (3,)
@@ -110,6 +107,12 @@ class OdometryBounds:
         -------
         np.ndarray, shape (3, 3)
             The diagonal shape matrix.
+
+        Notes
+        -----
+        With ``h`` the :meth:`half_widths` plus ``floor``, ``C = 3 diag(h^2)``: the
+        ellipsoid ``e^T C^{-1} e <= 1`` passes through the box's corners, since
+        ``sum_i h_i^2 / (3 h_i^2) = 1`` in 3-D, so by convexity it contains the box.
         """
         h = self.half_widths(step) + floor
         return np.diag(3.0 * h**2)
