@@ -22,12 +22,12 @@ import numpy as np
 
 from optbound import estimation as est
 from optbound.estimation import references as ref
-from optbound.estimation.exact_polygon import area as polygon_area
 from optbound.estimation.exact_polygon import exact_polygons
 from optbound.papers_repro._common import claim_table, finish_axes, pyplot, run_cli, save_figure
 from optbound.report.tables import markdown_table
 from optbound.scenarios import alamo2005 as data
 from optbound.sets import Box, Ellipsoid
+from optbound.sets.constrained_zonotope_polygon import polygon_area
 
 PAPER = "ABC05"
 CZ_BUDGETS = ((8.0, 2), (12.0, 6), (20.0, 10))  # (order, max constraints); the first is default

@@ -134,9 +134,34 @@ def certified_polygons(cz) -> CertifiedPolygons:
     ValueError
         If ``cz`` is not 2-D, or its LP vertex polygon is flat or empty.
     """
+    _check_planar(cz)
+    V, xis = cz._vertex_search()
+    outer, normals, h = _outer(cz, V)
+    return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
+
+
+def outer_polygon(cz) -> tuple[np.ndarray, list[Point]]:
+    """The float LP vertex polygon (ccw) of the 2-D constrained zonotope ``cz`` and the
+    certified outer polygon of :func:`certified_polygons` built from it, without the inner
+    one (whose exact repairs cost far more than the LPs).
+
+    Raises
+    ------
+    ValueError
+        If ``cz`` is not 2-D, or its LP vertex polygon is flat or empty.
+    """
+    _check_planar(cz)
+    V = cz.vertices()
+    return V, _outer(cz, V)[0]
+
+
+def _check_planar(cz) -> None:
     if cz.dim != 2:
         raise ValueError(f"certified polygons are for 2-D sets, got dimension {cz.dim}")
-    V, xis = cz._vertex_search()
+
+
+def _outer(cz, V: np.ndarray) -> tuple[list[Point], np.ndarray, np.ndarray]:
+    """The outer polygon, its normals and certified support values (module docstring)."""
     if len(V) < 3:
         raise ValueError("the set is flat or empty: it has no polygon")
     edges = np.array(
@@ -153,7 +178,7 @@ def certified_polygons(cz) -> CertifiedPolygons:
     outer = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
     for (a, b), hk in zip(edges, h[4:], strict=True):
         outer = clip(outer, Fraction(float(a)), Fraction(float(b)), Fraction(float(hk)))
-    return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
+    return outer, normals, h
 
 
 def clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
@@ -269,16 +294,20 @@ def convex_hull(points: list[Point]) -> list[Point]:
 
 
 def polygon_area(P: list[Point]) -> Fraction:
-    """Exact area of the polygon ``P`` (shoelace; vertices in order)."""
+    """Exact area of the polygon ``P`` (shoelace; vertices in order); 0 for fewer than three."""
     n = len(P)
+    if n < 3:
+        return Fraction(0)
     return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
 
 
 def round_down(x: Fraction) -> float:
+    """The largest float ``<= x``."""
     f = float(x)
     return f if Fraction(f) <= x else float(np.nextafter(f, -np.inf))
 
 
 def round_up(x: Fraction) -> float:
+    """The smallest float ``>= x``."""
     f = float(x)
     return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
