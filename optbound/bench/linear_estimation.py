@@ -16,15 +16,18 @@ Records, one per method and recorded step ``k``:
   set, the polygon's area exactly); ``mvee_ratio_lo/hi``, the bracket of area(set) / area(MVEE
   of the exact polygon's vertices, :func:`optbound.optimal.mvee`); ``contained``: True when
   :func:`optbound.estimation.references.proven_contains` proves, in rational arithmetic, that
-  the set contains the exact polygon (boxes, zonotopes, ellipsoids), None where it cannot decide
-  (constrained zonotopes);
+  the set contains the exact polygon (at its vertices: boxes by their bounds, ellipsoids by
+  their quadratic form, zonotopes by their facets, constrained zonotopes by an exact parameter
+  certificate per vertex), False where a vertex is outside, None where a certificate fails;
 - otherwise the size measure is the **interval-hull widths**: ``ratio_lo/hi`` is the bracket
   of the mean over states of width(set's hull) / width(exact set's hull), the exact hull by
   certified LP bounds (:func:`optbound.estimation.references.interval_hull`; box noise and
   n <= 6 only: the exact constrained zonotope grows by one constraint per output and step);
   where there is no exact reference (ellipsoidal noise, the tank) ``hull_ratio`` is the mean
   over states of width / the smallest width any method reached in that state;
-  ``mean_width`` is recorded everywhere; ``contained`` is None (not decided in n > 2);
+  ``mean_width`` is recorded everywhere; ``contained`` is None (not decided in n > 2: the
+  exact polytopes of :func:`optbound.estimation.exact_polytopes` take minutes over the 50 - 100
+  steps of these runs);
 - ``ms_per_step``: the method's wall time over the whole run / number of steps.
 
 A method that refuses a system (the volume gain's generator subsets beyond its limit) gives

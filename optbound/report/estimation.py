@@ -11,7 +11,7 @@ INTRO = (
     "measured against the exact set X_k. 2-D with box noise: the upper end of the certified "
     "bracket of area(set) / area(X_k) (X_k the exact rational polygon), area(set) / area(MVEE "
     "of X_k), and the steps at which containment of X_k was proven in rational arithmetic "
-    "(constrained zonotopes: not decided here). Otherwise the size is the interval hull: the "
+    "(at its vertices, for every kind of set). Otherwise the size is the interval hull: the "
     "mean over states of width(set's hull) / width(X_k's hull) (X_k's hull by certified LPs; "
     "box noise), or, without an exact reference (ellipsoidal noise, the tank), / the "
     "smallest width any method reached. ms/step: the whole run's wall time per step."

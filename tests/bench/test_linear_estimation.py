@@ -24,8 +24,8 @@ def test_tiny_is_alamo_with_every_method_at_every_step(tiny):
         assert 0 < r["ratio_lo"] <= r["ratio_hi"] and r["ratio_hi"] >= 1.0
         assert r["mvee_ratio_lo"] <= r["mvee_ratio_hi"]
         assert r["ms_per_step"] > 0
-        # Proven exactly for boxes, zonotopes and ellipsoids; not decided for CZs.
-        assert r["contained"] is (None if r["method"] == "constrained_zonotope" else True)
+        # Proven exactly for every method (constrained zonotopes by parameter certificates).
+        assert r["contained"] is True
     (png,) = tiny["attachments"].values()
     assert len(png) > 10_000
 
