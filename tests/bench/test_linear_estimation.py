@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from optbound.bench import linear_estimation as family
-from optbound.estimation import METHODS
+from optbound.estimation import METHODS, observe
 from optbound.report.estimation import estimation_rows, estimation_section
 
 
@@ -65,3 +65,22 @@ def test_suites_and_steps():
     assert family.recorded_steps(55) == [10, 20, 30, 40, 50, 55]
     with pytest.raises(ValueError, match="suite"):
         family.tasks("huge", 0)
+
+
+def test_one_step_optimal_sampled_and_reported():
+    # The tank's sampled SDP column, on a small 3-D system (the tank is full-suite only).
+    task = {"seed": 5, "system": "random", "n": 3, "noise": "box", "steps": 20, "rep": 0}
+    _, system, X0, ys = family.instance(task)
+    out = family.run(task)
+    runs = {m: (observe(system, X0, ys, m), 1.0) for m in ("ellipsoid_volume", "ellipsoid_trace")}
+    losses = family._one_step_losses(system, ys, runs, family.recorded_steps(20))
+    assert set(losses) == {(m, k) for m in runs for k in (10, 20)}
+    for loss in losses.values():
+        # The analytic step contains the same prediction ∩ strips as the optimal ellipsoid.
+        assert loss["one_step_ratio"] >= 1.0 - 1e-6 and loss["sdp_seconds"] > 0
+    records = [
+        {**r, **losses.get((r["method"], r["k"]), {})} for r in out["records"] if r["k"] is not None
+    ]
+    text = "\n".join(estimation_section(records))
+    assert "/ one-step optimal (k=20; SDP at 10, 20) | s/SDP |" in text
+    assert "| `interval` |" in text and "| – | – |" in text
