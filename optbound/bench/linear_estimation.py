@@ -36,7 +36,8 @@ Records, one per method and recorded step ``k``:
   (:func:`optbound.estimation.references.one_step_optimal`: the smallest ellipsoid containing
   the observer's own prediction ∩ the measurement strips), i.e. the loss of the analytic strip
   fusion in that step (float ratio of certified ellipsoids), and ``sdp_seconds``, that SDP's
-  wall time.
+  wall time; where the SDP cannot be certified (a degenerate prediction), ``one_step_ratio``
+  is None and ``sdp_error`` says why.
 
 A method that refuses a system (the volume gain's generator subsets beyond its limit) gives
 one record with its ``error``. The first 2-D task of each system attaches a PNG: the exact
@@ -238,6 +239,7 @@ def _hull_measures(system, X0, ys, runs: dict, ks: list[int], task: dict) -> dic
 def _one_step_losses(system, ys, runs: dict, ks: list[int]) -> dict:
     """``{(method, k): {"one_step_ratio", "sdp_seconds"}}`` of the ellipsoidal observers at
     the steps of ``ks`` divisible by :data:`SDP_EVERY` (module docstring)."""
+    from optbound import optimal
     from optbound.estimation.ellipsoidal import CRITERIA
     from optbound.estimation.references import one_step_optimal
 
@@ -248,7 +250,15 @@ def _one_step_losses(system, ys, runs: dict, ks: list[int]) -> dict:
         sets = runs[method][0]
         for k in (k for k in ks if k % SDP_EVERY == 0):
             start = time.perf_counter()
-            opt = one_step_optimal(system, sets[k - 2], ys[k - 1], method).ellipsoid
+            try:
+                opt = one_step_optimal(system, sets[k - 2], ys[k - 1], method).ellipsoid
+            except (ValueError, optimal.CertificationError) as exc:  # e.g. a degenerate prediction
+                out[method, k] = {
+                    "one_step_ratio": None,
+                    "sdp_seconds": time.perf_counter() - start,
+                    "sdp_error": f"{type(exc).__name__}: {exc}",
+                }
+                continue
             seconds = time.perf_counter() - start
             E = sets[k - 1]
             if CRITERIA[method] == "volume":  # in logs: the volumes of n = 30 underflow

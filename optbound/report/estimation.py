@@ -48,11 +48,14 @@ def _steps(ks: list[int]) -> str:
 
 def _one_step_cells(by_k: dict, sampled: list[int]) -> list[str]:
     """The ratio to the one-step optimal ellipsoid at the last sampled step and the median
-    SDP time of a method (dashes for a method without the SDP)."""
+    SDP time of a method, with the number of SDPs that could not be certified (dashes for a
+    method without the SDP)."""
     seconds = [by_k[k]["sdp_seconds"] for k in sampled if by_k[k].get("sdp_seconds") is not None]
     if not seconds:
         return ["–", "–"]
-    return [fmt_ratio(by_k[sampled[-1]]["one_step_ratio"]), f"{median(seconds):.3g}"]
+    failed = sum(by_k[k].get("sdp_error") is not None for k in sampled)
+    note = f" ({failed} of {len(sampled)} not certified)" if failed else ""
+    return [fmt_ratio(by_k[sampled[-1]]["one_step_ratio"]), f"{median(seconds):.3g}{note}"]
 
 
 def estimation_section(records: list[dict]) -> list[str]:
