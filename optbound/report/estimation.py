@@ -69,7 +69,7 @@ def estimation_section(records: list[dict]) -> list[str]:
         area = any(r.get("measure") == "area" for r in done)
         headers = ["method", *[f"k={k}" for k in shown]]
         headers += [f"/ MVEE (k={ks[-1]})", "proven steps"] if area else []
-        sampled = sorted({r["k"] for r in done if r.get("one_step_ratio") is not None})
+        sampled = sorted({r["k"] for r in done if r.get("sdp_seconds") is not None})
         if sampled:
             headers += [f"/ one-step optimal (k={sampled[-1]}; SDP at {_steps(sampled)})", "s/SDP"]
         headers.append("ms/step")

@@ -84,3 +84,26 @@ def test_one_step_optimal_sampled_and_reported():
     text = "\n".join(estimation_section(records))
     assert "/ one-step optimal (k=20; SDP at 10, 20) | s/SDP |" in text
     assert "| `interval` |" in text and "| – | – |" in text
+
+
+def test_an_uncertifiable_one_step_sdp_is_recorded_not_fatal(monkeypatch):
+    from optbound.estimation import references
+
+    def fail(*_):
+        raise ValueError("not jointly positive definite")
+
+    monkeypatch.setattr(references, "one_step_optimal", fail)
+    task = {"seed": 5, "system": "random", "n": 3, "noise": "box", "steps": 20, "rep": 0}
+    _, system, X0, ys = family.instance(task)
+    runs = {"ellipsoid_volume": (observe(system, X0, ys, "ellipsoid_volume"), 1.0)}
+    losses = family._one_step_losses(system, ys, runs, [10, 20])
+    for loss in losses.values():
+        assert loss["one_step_ratio"] is None and "positive definite" in loss["sdp_error"]
+    base = {"family": "linear_estimation", "system": "s", "dim": 3, "steps": 20, "error": None}
+    records = [
+        {**base, "method": "ellipsoid_volume", "k": k, "ms_per_step": 1.0, "ratio_lo": 1.5,
+         "ratio_hi": None, "measure": "interval-hull widths", "contained": None, **losses[
+             "ellipsoid_volume", k]}
+        for k in (10, 20)
+    ]  # fmt: skip
+    assert "(2 of 2 not certified)" in "\n".join(estimation_section(records))
