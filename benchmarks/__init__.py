@@ -5,6 +5,7 @@ Not installed: the benchmark families that ``optbound bench`` runs live in
 ``python -m optbound.bench.speed_analytic``). The scripts here measure the cost of the SDP
 lower bound (``lower_bound_cost``), the start-up time of the command (``cli_startup``), what
 ``optbound.evaluate`` costs per problem (``audit_cost``), the one-time compilation
-(``compile_cost``), the first and second run of the bench (``first_run``) and where a warm
-bench spends its time (``bench_profile``).
+(``compile_cost``), the first and second run of the bench (``first_run``), where a warm
+bench spends its time (``bench_profile``), and the analytic kernels' outputs on seeded
+instances, to check that a change leaves them bitwise equal (``kernel_outputs``).
 """

@@ -29,6 +29,8 @@ import tempfile
 import time
 from collections import defaultdict
 
+from optbound.bench.target import numba_target
+
 
 def _thread_cpu() -> float:
     usage = resource.getrusage(resource.RUSAGE_THREAD)
@@ -75,21 +77,6 @@ def _record(suite: str) -> dict:
     }
 
 
-def target() -> str:
-    """The CPU and the vector instruction sets numba compiles for on this host."""
-    import llvmlite.binding as ll
-    import numba
-
-    name = numba.config.CPU_NAME or ll.get_host_cpu_name()
-    features = ll.get_host_cpu_features()
-    vectors = [
-        f for f in ("sse4.2", "avx", "avx2", "fma", "avx512f", "avx512vl") if features.get(f)
-    ]
-    if numba.config.CPU_NAME or numba.config.CPU_FEATURES:
-        return f"{name} (set by NUMBA_CPU_NAME/NUMBA_CPU_FEATURES)"
-    return f"{name}: {', '.join(vectors)}"
-
-
 def measure(suite: str) -> dict:
     """Compile costs of ``suite`` in a child process with an empty numba cache."""
     with tempfile.TemporaryDirectory() as cache:
@@ -114,8 +101,8 @@ def main(argv=None) -> None:
             json.dump(result, f, indent=1)
     rows = result["rows"]
     total = sum(r["top"] for r in rows.values())
-    print(f"numba target: {target()}; load average {load:.1f} at start, {os.getloadavg()[0]:.1f} "
-          f"at end, on {os.cpu_count()} cores")  # fmt: skip
+    print(f"numba target: {numba_target()}; load average {load:.1f} at start, "
+          f"{os.getloadavg()[0]:.1f} at end, on {os.cpu_count()} cores")  # fmt: skip
     print(f"bench --suite {args.suite} --jobs 1 with an empty numba cache: {total:.1f} s CPU "
           f"compiling ({len(rows)} dispatchers, "
           f"{sum(len(r['types']) for r in rows.values())} compiles), "

@@ -24,10 +24,10 @@ from numba.core import event
 
 ENV = "OPTBOUND_COMPILE_NOTICE"
 #: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, as measured by
-#: ``python -m benchmarks.compile_cost`` (about 104 s for the kernels plus about 6 s for the
-#: speed benchmark's compiled baseline, on a 2-core Intel Xeon); one process compiling on an
-#: idle core takes about this long in wall time too.
-COMPILE_CPU_SECONDS = 110
+#: ``python -m benchmarks.compile_cost`` (86 s, of which 5 s for the speed benchmark's
+#: compiled baseline, on a 2-core Intel Xeon at load 6-8); one process compiling on an idle
+#: core takes about this long in wall time too.
+COMPILE_CPU_SECONDS = 85
 MESSAGE = (
     "optbound: compiling numerical kernels once (about {seconds} s of CPU in all, first run "
     "only; later runs load them from numba's cache) ..."

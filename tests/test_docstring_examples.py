@@ -12,6 +12,21 @@ ENTRY_POINTS = [
     "optbound.optimal.intersection:outer_ellipsoid",
     "optbound.interval.sivia:sivia",
     "optbound.problems.audit:evaluate",
+    "optbound.problems:families",
+    "optbound.problems:suite",
+    "optbound.problems.problem:Problem",
+    "optbound.problems.registry:load",
+    "optbound.scenarios.alamo2005:system",
+    "optbound.scenarios.arena:simulate",
+    "optbound.scenarios.bh_geometry:sect5_instance",
+    "optbound.scenarios.linear_systems:random_system",
+    "optbound.scenarios.office:office_map",
+    "optbound.scenarios.office:simulate",
+    "optbound.report.document:write_report",
+    "optbound.report.results:save_results",
+    "optbound.report.readme:headline_refusal",
+    "optbound.report.summary:ratio_stats",
+    "optbound.report.tables:markdown_table",
 ]
 
 

@@ -33,6 +33,7 @@ from functools import partial
 import numpy as np
 
 from optbound.bench.family import Family
+from optbound.bench.target import numba_target
 from optbound.bench.timing import per_call, speed_record
 from optbound.problems.generators import random_ellipsoid, random_strip, task_seeds
 
@@ -396,6 +397,7 @@ def main(argv=None) -> None:
             print(f"{t:5.1f} | {ours / 1e6:5.1f} M/s | {ref / 1e6:5.1f} M/s")
         return
     batches = BATCHES[args.suite]
+    print(f"numba target: {numba_target()}")
     print(f"JIT warm-up (fresh compile, empty cache): {jit_warmup():.1f} s\n")
     for what, timings in (
         ("strip (intersect_strip)", strip_timings(rng, batches)),

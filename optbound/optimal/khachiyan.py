@@ -149,7 +149,7 @@ def _iterate(
     for it in range(max_iter):
         if it % refresh == 0:
             _refresh(Q, u, X_inv, w)
-        up, down = 0, -1
+        up, down = np.int64(0), np.int64(-1)  # typed: literals would compile a specialization
         for i in range(m):
             if w[i] > w[up]:
                 up = i

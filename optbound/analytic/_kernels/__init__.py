@@ -33,6 +33,12 @@ must give the same bits. ``nogil=True`` on the entry points run by threads; ``_n
 the loops that take views (no atomic reference count per view, a cache line the threads would
 share); ``inline="always"`` for the steps of a block, so that LLVM sees one loop nest.
 
+One compiled entry point per update (``strip_kernel.fuse_range``, ``minkowski_kernel.
+sum_blocks``), with the loop over the blocks written in it, and single calls passing through
+it from Python as a batch of one. A compiled function calling another links the callee's
+code into its own and LLVM optimizes and emits it again: every compiled wrapper around the
+lane loop nests costs seconds of compile time on the first run, for nothing at run time.
+
 No allocation in loops. Scratch is made once per thread and dimension (``workspace``,
 ``block_work``); a block gets views from its first instance (``c[base:]``), indexed by the
 lane alone (a runtime ``base + k`` carries wraparound code). Per-lane scalars of the strip

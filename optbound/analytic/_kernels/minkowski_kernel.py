@@ -58,6 +58,7 @@ from optbound.analytic._kernels.lanes import (
     store_vectors,
 )
 from optbound.analytic._kernels.midrad import U, mr_add, mr_div, mr_mul
+from optbound.analytic._kernels.threads import workspace
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
 # Error codes: check_ellipsoid's (1..6) for the first summand, +10 for the second, and:
@@ -503,9 +504,9 @@ def block_work(n, lanes):
 
     For full blocks (lanes = W) every array is allocated separately: a lane loop storing to
     one row of an array while reading another is not vectorized by LLVM (their distance
-    depends on the runtime stride). A smaller batch (a single call) gets views of three
-    stacks instead, since ~40 allocations would dominate its time; its loops run in scalar
-    code either way. Same types, same compiled kernel, the same bits."""
+    depends on the runtime stride). A smaller slice (the bench's reference on a short batch)
+    gets views of three stacks instead, since ~40 allocations would dominate its time; its
+    loops run in scalar code either way. Same types, same compiled kernel, the same bits."""
     mat, vec, row = (n, n, lanes), (n, lanes), (lanes,)
     k = 1 if lanes < W else 0
     mats, vecs, rows = np.empty((12 * k, *mat)), np.empty((8 * k, *vec)), np.empty((24 * k, lanes))
@@ -520,28 +521,36 @@ def block_work(n, lanes):
 
 
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
-    """The loop over blocks, compiled without numba's reference counting (``_nrt=False``):
-    every view and every work tuple taken per block would otherwise increment and decrement
-    its parent's counter atomically (microseconds per block). Nothing here allocates. Each
-    block is given views from its first instance (``lanes``: no wraparound code)."""
+def sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
+    """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
+    in blocks of W lanes, ``wk`` the work space :func:`block_work`; ``out`` = (centres,
+    shapes, code, p, margin). Returns the first instance with a non-zero code, or -1.
+
+    The only compiled entry point of the sum, with the loop over the blocks written here
+    rather than in a compiled caller: a caller would link the lane loop nests in and LLVM
+    would optimize and emit them again. Compiled without numba's reference counting
+    (``_nrt=False``): every view and every work tuple taken per block would otherwise
+    increment and decrement its parent's counter atomically (microseconds per block). Nothing
+    here allocates. Each block is given views from its first instance (``lanes``: no
+    wraparound code)."""
     for base in range(start, stop, W):
         m = min(W, stop - base)
         o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:])
         _sum_block(c1[base:], C1[base:], c2[base:], C2[base:], mode, p_in[base:], planar,
                    heading, o, m, wk)  # fmt: skip
-
-
-@njit(cache=True, error_model="numpy", nogil=True)
-def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
-    """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes; ``out`` = (centres, shapes, code, p, margin). The entry point of
-    both :func:`minkowski_sum` (a batch of one: the same compiled code, so single and batched
-    results agree bitwise) and :func:`minkowski_sum_batch`; both pass their inputs read-only,
-    so that numba compiles it once. Returns the first instance with a non-zero code, or -1.
-
-    The work space is allocated here, not cached per thread as the strip's: its ~40 arrays
-    cost as much to pass through numba's dispatcher (unboxing each) as to allocate."""
-    wk = block_work(c1.shape[1], min(W, stop - start))
-    _sum_loop(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
     return first_error(out[2], start, stop)
+
+
+def _work(n: int) -> tuple:
+    """The work space of full blocks in dimension n (``threads.workspace``'s factory)."""
+    return block_work(n, W)
+
+
+def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
+    """:func:`sum_blocks` with the calling thread's work space (made once per thread and
+    dimension by ``threads.workspace``): the entry point of both :func:`minkowski_sum` (a
+    batch of one: the same compiled code, so single and batched results agree bitwise) and
+    :func:`minkowski_sum_batch`; both pass their inputs read-only, so that numba compiles
+    it once. Returns the first instance with a non-zero code, or -1."""
+    wk = workspace(_work, c1.shape[1])
+    return sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)

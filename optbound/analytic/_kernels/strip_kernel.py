@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from optbound._core import MAG, MAX_DIAG, check_ellipsoid
+from optbound.analytic._kernels import threads
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,
@@ -563,57 +564,6 @@ def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
         t[GAM + k] = x / ((1.0 + x * gn) * (t[HALF + k] * t[HALF + k]))
 
 
-@njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _fuse_block(c, C, a, b, halfspace, clip, mode, lam_in, idx, steep, midp, out, ws, m):
-    """Steps 1-6 for the m <= W instances of a block (lane k = instance k of the views c, C,
-    a, b, lam_in and out, which start at the block), each step a loop over the lanes
-    (``lanes``). Compiled without numba's reference counting (``_nrt=False``): every view
-    (``V[0]``, ``t[EPS]``, ``C[k]``) otherwise increments and decrements its parent's counter
-    atomically, a cache line both threads fight over. Nothing here allocates; the views live
-    no longer than the call."""
-    n = c.shape[1]
-    V, M, t, code, case, scratch, work, wvec = ws
-    cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
-    Cs, L, Os = M[0], M[1], M[2]
-    load_vectors(c, m, cs)
-    load_matrices(C, m, Cs)
-    load_vectors(a, m, av)
-    for k in range(m):
-        t[STRIP_B + k] = b[k]
-        t[LAM_IN + k] = lam_in[k] if mode == GIVEN else 0.0  # (B,) in that mode only
-    _validate(cs, Cs, av, t, mode, m, L, code, scratch)
-    _offsets(cs, av, t, m)
-    _project(Cs, av, m, wh, wl, we, t)
-    for k in range(m):
-        ck, cons, mid, half, g, glo, rg = locate(
-            t[EPS + k], t[REPS + k], t[GS + k], t[GT + k], t[RG + k], halfspace, clip
-        )
-        case[k] = ck if code[k] == 0 else INCONSISTENT
-        t[CONS + k], t[MID + k], t[HALF + k] = cons, mid, half
-        t[GRAM + k], t[GRAM_LO + k], t[RG + k] = g, glo, rg
-    _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
-    for k in range(m):
-        kh, kl, rk, om = _shape_factor(
-            t[GAM + k], t[MID + k], t[HALF + k], t[GRAM + k], t[GRAM_LO + k], t[RG + k]
-        )
-        t[KH + k], t[KL + k], t[RK + k], t[OM + k] = kh, kl, rk, om
-        ok = t[LAM + k] > 0.0 and rk >= 0.0 and kh > 2.0 * (abs(kl) + rk)
-        t[ACTIVE + k] = 1.0 if ok else 0.0
-    _member_centre(cs, av, Cs, wh, wl, we, t, m, oc)
-    trace_inverse_lanes(L, m, t[TRINV : TRINV + W])  # L is not needed after this
-    for k in range(m):
-        terms = _margin_terms(
-            t[KH + k], t[KL + k], t[RK + k], t[OM + k], t[GAM + k], t[TRINV + k], t[AA + k],
-            t[TRC + k], t[WW + k], t[DD + k], t[CMAX + k],
-        )  # fmt: skip
-        lmin, lref, rho, centre, sh, sl, sa, alpha, beta, gamma, widen = terms
-        t[LMIN + k], t[LREF + k], t[RHO + k], t[CENTRE + k] = lmin, lref, rho, centre
-        t[SH + k], t[SL + k], t[SA + k], t[WIDEN + k] = sh, sl, sa, widen
-        t[ALPHA + k], t[BETA + k], t[GAMMA + k] = alpha, beta, gamma
-    _member_shape(Cs, wh, wl, we, t, m, Os, hd, ld)
-    _finish(m, n, code, case, t, cs, Cs, oc, Os, out)
-
-
 @njit(cache=True, error_model="numpy", inline="always")
 def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
     """Step 6 and the block's outputs: a lane whose member was not certified falls back to E
@@ -664,47 +614,91 @@ def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
 
 
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
-def _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
-    """Instances ``start..stop`` block by block, each block given views from its first
-    instance (``lanes``: no wraparound code)."""
+def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
+    """Steps 1-6 on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the caller),
+    ``ws`` the calling thread's ``workspace(n)``, ``out`` = (centres, shapes, code, case,
+    consistency, lam, empty, margin). Returns the first instance with a non-zero code, or -1.
+
+    Block by block: lane k of a block is instance ``base + k`` of the views ``c[base:]``, ...
+    (``lanes``: no wraparound code), and each step is a loop over the lanes. This is the only
+    compiled entry point of the update (single calls go through it too), with the loop over
+    the blocks written here rather than in a compiled caller: a caller would link the lane loop
+    nests in and LLVM would optimize and emit them again. Compiled without numba's reference
+    counting (``_nrt=False``): every view (``V[0]``, ``t[EPS]``, ``C[k]``) would otherwise
+    increment and decrement its parent's counter atomically, a cache line both threads fight
+    over. Nothing here allocates."""
+    n = c.shape[1]
+    V, M, t, code, case, scratch, work, wvec = ws
+    cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
+    Cs, L, Os = M[0], M[1], M[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
+        Cb, bb = C[base:], b[base:]
         lam_b = lam[base:] if mode == GIVEN else lam  # (B,) in that mode only
+        load_vectors(c[base:], m, cs)
+        load_matrices(Cb, m, Cs)
+        load_vectors(a[base:], m, av)
+        for k in range(m):
+            t[STRIP_B + k] = bb[k]
+            t[LAM_IN + k] = lam_b[k] if mode == GIVEN else 0.0
+        _validate(cs, Cs, av, t, mode, m, L, code, scratch)
+        _offsets(cs, av, t, m)
+        _project(Cs, av, m, wh, wl, we, t)
+        for k in range(m):
+            ck, cons, mid, half, g, glo, rg = locate(
+                t[EPS + k], t[REPS + k], t[GS + k], t[GT + k], t[RG + k], halfspace, clip
+            )
+            case[k] = ck if code[k] == 0 else INCONSISTENT
+            t[CONS + k], t[MID + k], t[HALF + k] = cons, mid, half
+            t[GRAM + k], t[GRAM_LO + k], t[RG + k] = g, glo, rg
+        _choose_lam(Cb, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
+        for k in range(m):
+            kh, kl, rk, om = _shape_factor(
+                t[GAM + k], t[MID + k], t[HALF + k], t[GRAM + k], t[GRAM_LO + k], t[RG + k]
+            )
+            t[KH + k], t[KL + k], t[RK + k], t[OM + k] = kh, kl, rk, om
+            ok = t[LAM + k] > 0.0 and rk >= 0.0 and kh > 2.0 * (abs(kl) + rk)
+            t[ACTIVE + k] = 1.0 if ok else 0.0
+        _member_centre(cs, av, Cs, wh, wl, we, t, m, oc)
+        trace_inverse_lanes(L, m, t[TRINV : TRINV + W])  # L is not needed after this
+        for k in range(m):
+            terms = _margin_terms(
+                t[KH + k], t[KL + k], t[RK + k], t[OM + k], t[GAM + k], t[TRINV + k],
+                t[AA + k], t[TRC + k], t[WW + k], t[DD + k], t[CMAX + k],
+            )  # fmt: skip
+            lmin, lref, rho, centre, sh, sl, sa, alpha, beta, gamma, widen = terms
+            t[LMIN + k], t[LREF + k], t[RHO + k], t[CENTRE + k] = lmin, lref, rho, centre
+            t[SH + k], t[SL + k], t[SA + k], t[WIDEN + k] = sh, sl, sa, widen
+            t[ALPHA + k], t[BETA + k], t[GAMMA + k] = alpha, beta, gamma
+        _member_shape(Cs, wh, wl, we, t, m, Os, hd, ld)
         o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:],
              out[5][base:], out[6][base:], out[7][base:])  # fmt: skip
-        _fuse_block(c[base:], C[base:], a[base:], b[base:], halfspace, clip, mode, lam_b, idx,
-                    steep, midp, o, ws, m)  # fmt: skip
-
-
-@njit(cache=True, error_model="numpy")
-def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
-    """One instance through the batch loop ``_fuse_loop`` (a batch of one: the same compiled
-    code, so single and batched results agree bitwise and the kernel is compiled once), plus
-    the result's Cholesky factor and its validation code (0 by construction: the member keeps
-    the result in the domain as ``midrad.inflate`` does). ``ws`` is ``workspace(n)``."""
-    n = c.shape[0]
-    out = (
-        np.empty((1, n)), np.empty((1, n, n)), np.zeros(1, np.int8), np.zeros(1, np.int8),
-        np.zeros(1), np.zeros(1), np.zeros(1, np.bool_), np.zeros(1),
-    )  # fmt: skip
-    one = n // n  # a runtime int: literal 0 and 1 would compile a specialization of their own
-    _fuse_loop(
-        np.ascontiguousarray(c).reshape((1, n)), np.ascontiguousarray(C).reshape((1, n, n)),
-        np.ascontiguousarray(a).reshape((1, n)), np.full(1, b), halfspace, clip, mode,
-        np.full(1, lam), idx, steep, midp, out, ws, one - 1, one,
-    )  # fmt: skip
-    out_c, out_C = out[0][0], out[1][0]
-    out_L = np.empty((n, n))
-    valid = check_ellipsoid(out_c, out_C, out_L)
-    r = (out[2][0], out[3][0], out[4][0], out[5][0], out[6][0], out[7][0])
-    return out_c, out_C, out_L, valid, r
-
-
-@njit(cache=True, error_model="numpy", nogil=True)
-def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
-    """The update on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the
-    caller), ``ws`` the calling thread's ``workspace(n)``.
-    ``out`` = (centres, shapes, code, case, consistency, lam, empty, margin). Returns the
-    first instance with a non-zero code, or -1."""
-    _fuse_loop(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop)
+        _finish(m, n, code, case, t, cs, Cs, oc, Os, o)
     return first_error(out[2], start, stop)
+
+
+def _single_buffers(n: int) -> tuple:
+    """Inputs and outputs of a batch of one in dimension n (``threads.workspace``'s factory):
+    c, C, a, b, lam and the outputs of :func:`fuse_range`."""
+    return (
+        np.empty((1, n)), np.empty((1, n, n)), np.empty((1, n)), np.empty(1), np.empty(1),
+        threads.ellipsoid_outputs(1, n, np.int8, np.int8, float, float, np.bool_, float),
+    )  # fmt: skip
+
+
+def fuse_single(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, ws):
+    """One instance as a batch of one through :func:`fuse_range` (the same compiled code, so
+    single and batched results agree bitwise and the kernel is compiled once), plus the
+    result's Cholesky factor and its validation code (0 by construction: the member keeps
+    the result in the domain as ``midrad.inflate`` does). ``ws`` is ``workspace(n)``.
+    Returns (centre, shape, factor, code, (code, case, consistency, lam, empty, margin)).
+    The instance is copied into the calling thread's buffers of a batch of one (writable
+    arrays: the batch's argument types, so that numba compiles :func:`fuse_range` once)."""
+    n = c.shape[0]
+    c1, C1, a1, b1, lam1, out = threads.workspace(_single_buffers, n)
+    c1[0], C1[0], a1[0], b1[0], lam1[0] = c, C, a, b, lam
+    fuse_range(c1, C1, a1, b1, halfspace, clip, mode, lam1, idx, steep, midp, out, ws, 0, 1)
+    out_c, out_C, out_L = out[0][0].copy(), out[1][0].copy(), np.empty((n, n))
+    valid = check_ellipsoid(out_c, out_C, out_L)
+    return out_c, out_C, out_L, valid, (out[2][0], out[3][0], out[4][0], out[5][0],
+                                        out[6][0], out[7][0])  # fmt: skip

@@ -88,7 +88,7 @@ def lam_trace(C, w, half, Gn, e):
         -Gn * T * e2 + 3.0 * Gn * T - Gn * W + 2.0 * W * e2 - 2.0 * W,
         T * (1.0 - e2) - W,
     )
-    return _best_root(roots, Gn, e, _TRACE, T, W)
+    return _best_root(roots, Gn, e, np.int64(_TRACE), T, W)
 
 
 @njit(cache=True, error_model="numpy")
@@ -121,4 +121,4 @@ def lam_projection(C, w, half, Gn, e, idx, P, LP, y):
         (3.0 * Gn - H + e2 * (H - Gn)) * m - Gn * H - H + e2 * H,
         m * (1.0 - e2) - H,
     )
-    return _best_root(roots, Gn, e, _PROJECTION, H, float(m))
+    return _best_root(roots, Gn, e, np.int64(_PROJECTION), H, float(m))
