@@ -28,6 +28,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 import optbound
+from optbound.bench import warmup
 from optbound.bench.executors import check_available, ignore_interrupts
 from optbound.bench.executors import executor as make_executor
 from optbound.bench.family import SUITES, Family
@@ -82,6 +83,7 @@ def run_suite(
     command = command or f"optbound bench --suite {suite} --seed {seed}"
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
+    complete = where is None and (not names or set(names) >= {f.name for f in fams})
     if names:
         unknown = sorted(set(names) - {fam.name for fam in fams})
         if unknown:
@@ -103,6 +105,9 @@ def run_suite(
     costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
     with Progress(command, costs, progress) as bar:
         with make_executor(executor, jobs, scheduler) as pool:
+            if executor == "process" and scheduler is None and jobs > 1 and complete and tasks:
+                # Cold cache: the big kernels compiled once, split over the workers (warmup).
+                warmup.compile_cold(pool, warmup.cold_groups())
             futures = {
                 pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
                 for fam, i, task, cost in pooled
@@ -124,8 +129,7 @@ def run_suite(
         "jobs": jobs,
         "executor": "dask" if scheduler else executor,
         "families_run": [fam.name for fam in fams],
-        "complete": where is None
-        and (not names or set(names) >= {f.name for f in registered_families()}),
+        "complete": complete,
         "started": started.isoformat(timespec="seconds"),
         "wall_time_s": time.perf_counter() - start,
         "load_average": _load_average(),
