@@ -5,6 +5,10 @@ unreachable Dask scheduler, a full disk) end the command with one line on stderr
 2, before any work where they can be detected before it. Ctrl-C ends it with one line and exit
 code 130. Either way an ``--out`` folder the command created and left empty is removed.
 
+``bench`` and ``repro`` store each finished task in the report folder as it finishes
+(:mod:`optbound.bench.run_folder`); ``--resume DIR`` finishes an interrupted run with the
+arguments stored in DIR, running only the tasks not stored yet.
+
 Building the parser imports no family, numba, scipy or cvxpy (the family names are declared in
 :data:`optbound.bench.registry.FAMILIES`), so ``--help`` and argument errors answer at once;
 the work of a command is imported by its handler.
@@ -17,10 +21,14 @@ import os
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from optbound.bench.executors import EXECUTORS
 from optbound.bench.family import SUITES
 from optbound.bench.registry import FAMILIES, PAPERS
+
+if TYPE_CHECKING:
+    from optbound.bench.run_folder import RunFolder
 
 DEFAULT_OUT = Path("bench-report")
 DEFAULT_REPRO_OUT = Path("repro-report")
@@ -66,8 +74,14 @@ def _add_run_options(parser: argparse.ArgumentParser, out: Path) -> None:
     parser.add_argument(
         "--out",
         type=Path,
-        default=out,
         help=f"report folder (default {out}); created if missing, checked before any work",
+    )
+    parser.add_argument(
+        "--resume",
+        type=Path,
+        metavar="DIR",
+        help="finish the interrupted run whose report folder is DIR: its stored arguments "
+        "are used and its finished tasks are not run again",
     )
     parser.add_argument(
         "--force",
@@ -112,14 +126,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument(
         "--suite",
         choices=SUITES,
-        default="quick",
         help="quick (default: minutes on 2 cores, the papers' fast variants), full "
         "(every family at full size and the papers' full scripts, spread over --jobs), tiny "
         "(a seconds-long smoke test of the same code path)",
     )
-    bench.add_argument(
-        "--seed", type=_int_at_least(0, "seed"), default=0, help="suite seed (default 0)"
-    )
+    bench.add_argument("--seed", type=_int_at_least(0, "seed"), help="suite seed (default 0)")
     bench.add_argument(
         "--family",
         action="append",
@@ -166,8 +177,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     report.add_argument("dir", type=Path, metavar="DIR", help="a directory written by bench")
     _add_evaluate_parser(sub)
-    bench.set_defaults(handler=_bench, subparser=bench)
-    repro.set_defaults(handler=_repro, subparser=repro)
+    bench.set_defaults(handler=_bench, subparser=bench, default_out=DEFAULT_OUT)
+    repro.set_defaults(handler=_repro, subparser=repro, default_out=DEFAULT_REPRO_OUT)
     report.set_defaults(handler=_report, subparser=report)
     return parser
 
@@ -244,9 +255,62 @@ def _version() -> str:
     return f"optbound {__version__}"
 
 
+#: The arguments of each command that decide its results, with their defaults: stored in the
+#: run folder and repeated by --resume.
+_RUN_ARGUMENTS = {
+    "bench": {"suite": "quick", "seed": 0, "family": None, "estimator": None},
+    "repro": {"papers": [], "quick": False},
+}
+
+
+def _resolve_run_arguments(args: argparse.Namespace) -> RunFolder:
+    """Fill in the run arguments: from ``--resume DIR``'s stored ones, else the defaults.
+
+    Returns the run folder (:class:`optbound.bench.run_folder.RunFolder`). With
+    ``--resume``, an argument given that differs from the stored one is an error.
+    """
+    from optbound.bench.run_folder import RunFolder, RunFolderError
+
+    defaults = _RUN_ARGUMENTS[args.command]
+    if args.resume is None:
+        for key, default in defaults.items():
+            if getattr(args, key) is None:
+                setattr(args, key, default)
+        args.out = args.out or args.default_out
+        return RunFolder(
+            args.out, {"command": args.command, **{k: getattr(args, k) for k in defaults}}
+        )
+    if args.force:
+        raise CommandError("--resume finishes a run; it cannot be combined with --force")
+    if args.out is not None and args.out.resolve() != args.resume.resolve():
+        raise CommandError(f"--out {str(args.out)!r} differs from --resume {str(args.resume)!r}")
+    try:
+        folder = RunFolder.open(args.resume)
+    except RunFolderError as exc:
+        raise CommandError(f"--resume: {exc}") from None
+    stored = folder.arguments
+    if stored.get("command") != args.command:
+        raise CommandError(
+            f"--resume: {str(args.resume)!r} holds a run of optbound {stored.get('command')}, "
+            f"not of optbound {args.command}"
+        )
+    for key in defaults:
+        given = getattr(args, key)
+        # Not given: None (bench), or the parser's empty value (repro's papers and --quick).
+        if not (given is None or given is False or given == []) and given != stored[key]:
+            raise CommandError(
+                f"--resume: the run in {str(args.resume)!r} was started with {key} "
+                f"{stored[key]!r}, not {given!r}; leave {key} out to resume it"
+            )
+        setattr(args, key, stored[key])
+    args.out = args.resume
+    return folder
+
+
 def _bench(args: argparse.Namespace) -> int:
     from optbound import report
 
+    args.folder = _resolve_run_arguments(args)
     readme = None
     if args.update_readme:
         meta = {"suite": args.suite, "seed": args.seed, "complete": not args.family}
@@ -258,7 +322,7 @@ def _bench(args: argparse.Namespace) -> int:
             raise CommandError("--update-readme: no docs/benchmarks.md with headline markers found")
     estimators = _user_estimators(args)
     out = _prepare(args)
-    results = _run(args, args.suite, args.seed, names=args.family)
+    results = _run(args, args.suite, args.seed, names=args.family, folder=args.folder)
     if estimators:
         from optbound.bench.user_estimators import run_estimators
 
@@ -273,6 +337,7 @@ def _bench(args: argparse.Namespace) -> int:
 def _repro(args: argparse.Namespace) -> int:
     from optbound.papers_repro._common import scripts
 
+    args.folder = _resolve_run_arguments(args)
     try:
         selected = {script.name for script in scripts(args.papers or None)}
     except ValueError as exc:
@@ -287,6 +352,7 @@ def _repro(args: argparse.Namespace) -> int:
         names=["papers"],
         where=lambda t: t["script"] in selected,
         command=command,
+        folder=args.folder,
     )
     path = _write(results, out)
     _print_summary(results, path)
@@ -297,7 +363,8 @@ def _prepare(args: argparse.Namespace) -> Path:
     """Check the executor, then create and check ``--out``: all before any work.
 
     The folders this creates are recorded in ``args.created`` so that a run that stops
-    before writing anything into them (an error, Ctrl-C) removes them again.
+    before writing anything into them (an error, Ctrl-C) removes them again. A fresh run
+    (no ``--resume``) forgets the tasks an earlier run stored in the folder (``--force``).
     """
     from optbound.bench.executors import check_available
     from optbound.report.outdir import OutDirError, prepare_out_dir
@@ -307,10 +374,14 @@ def _prepare(args: argparse.Namespace) -> Path:
     except ValueError as exc:
         raise CommandError(str(exc)) from None
     args.created = [p for p in (args.out, *args.out.parents) if not p.exists()]
+    if args.resume is not None:
+        return args.out
     try:
-        return prepare_out_dir(args.out, args.force)
+        out = prepare_out_dir(args.out, args.force)
     except OutDirError as exc:
         raise CommandError(str(exc)) from None
+    args.folder.clear()
+    return out
 
 
 def _remove_if_empty(folders: list[Path]) -> None:
@@ -390,8 +461,16 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_USAGE
     except KeyboardInterrupt:
         _remove_if_empty(getattr(args, "created", []))
-        print(f"optbound {args.command}: interrupted", file=sys.stderr)
+        print(f"optbound {args.command}: interrupted{_resumable(args)}", file=sys.stderr)
         return EXIT_INTERRUPTED
+
+
+def _resumable(args: argparse.Namespace) -> str:
+    """How to finish an interrupted run whose folder holds finished tasks ("" if none)."""
+    folder = getattr(args, "folder", None)
+    if folder is None or not any(folder.tasks.glob("*.json")):
+        return ""
+    return f"; finish it with: optbound {args.command} --resume {folder.path}"
 
 
 if __name__ == "__main__":

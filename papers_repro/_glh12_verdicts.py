@@ -11,7 +11,9 @@ The rules below were fixed before the seeded sweeps were run and are stated in t
   the last quarter of the run is at most ``DRIFT`` times the one over the second quarter;
 - a configuration is *efficient* when at least ``MAJORITY`` of its runs are;
 - each claim becomes ``reproduced``, ``partly`` or ``not reproduced`` by the functions
-  here, from the fraction of efficient runs and the median final area per configuration.
+  here, from the fraction of efficient runs and the median final area per configuration;
+  "over 9 robots the results are similar" is ``not applicable`` when neither count is
+  efficient (two failing configurations are not the paper's plateau of good results).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ MAJORITY = 0.5  # fraction of efficient runs that makes a configuration efficien
 DRIFT = 1.2  # drift-free: last-quarter mean area <= DRIFT x second-quarter mean area
 SIMILAR = 2.0  # "similar": medians within this factor
 REPRODUCED, PARTLY, NOT_REPRODUCED = "reproduced", "partly", "not reproduced"
+NOT_APPLICABLE = "not applicable: neither configuration is efficient"
 
 
 def efficient_counts(fraction: Mapping[int, float]) -> set[int]:
@@ -50,9 +53,13 @@ def plateau_verdict(
 ) -> str:
     """ "Over ``at`` the results are similar": no clear gain from ``at`` to ``beyond``.
 
-    Two tests: the median final areas are within a factor :data:`SIMILAR`, and both counts
-    are efficient or both are not. ``reproduced`` when both hold, ``partly`` when one does.
+    The paper's claim is that efficient tracking gains nothing beyond ``at`` robots, so it is
+    :data:`NOT_APPLICABLE` when neither count is efficient. Otherwise two tests: the median
+    final areas are within a factor :data:`SIMILAR`, and both counts are efficient.
+    ``reproduced`` when both hold, ``partly`` when one does.
     """
+    if fraction[at] < MAJORITY and fraction[beyond] < MAJORITY:
+        return NOT_APPLICABLE
     near = max(median[at], median[beyond]) <= SIMILAR * min(median[at], median[beyond])
     same = (fraction[at] >= MAJORITY) == (fraction[beyond] >= MAJORITY)
     return REPRODUCED if near and same else PARTLY if near or same else NOT_REPRODUCED
@@ -92,6 +99,7 @@ __all__ = [
     "DRIFT",
     "EFFICIENT",
     "MAJORITY",
+    "NOT_APPLICABLE",
     "NOT_REPRODUCED",
     "PARTLY",
     "REPRODUCED",

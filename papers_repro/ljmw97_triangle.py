@@ -243,52 +243,103 @@ def _draw_room(ax) -> None:
 
 
 def _draw_pose(ax, pose, d, color) -> None:
-    """The robot at ``pose`` with its four cones drawn to the measured ranges."""
+    """The robot at ``pose`` with its four cones drawn to the measured ranges.
+
+    Each label Ti sits on its cone's axis at 60 % of the range (the apexes are 0.2 m apart,
+    the cones point four ways, so the labels do not overlap).
+    """
     for i, s in enumerate(SONARS):
         apex = np.array(to_world(tuple(pose), s.position), float)
-        heading = np.rad2deg(pose[2] + s.orientation)
+        axis = pose[2] + s.orientation
         half = np.rad2deg(s.half_aperture)
         ax.add_patch(
-            Wedge(apex, d[i], heading - half, heading + half, color=color, alpha=0.25, lw=0)
+            Wedge(
+                apex,
+                d[i],
+                np.rad2deg(axis) - half,
+                np.rad2deg(axis) + half,
+                color=color,
+                alpha=0.25,
+                lw=0,
+            )
         )
-        ax.annotate(f"T{i + 1}", apex, fontsize=7, color=color)
+        tip = apex + 0.6 * d[i] * np.array([np.cos(axis), np.sin(axis)])
+        ax.annotate(f"T{i + 1}", tip, fontsize=8, color=color, ha="center", va="center")
     ax.plot(*pose[:2], "o", color=color, ms=4)
 
 
-def _figures(paving: SonarPaving, rows, out_dir: Path) -> list[Path]:
+def _label_components(ax, rows, dims, colors) -> None:
+    """One label per component in a column right of the axes, with a leader line to its hull.
+
+    Labels are stacked at even heights in the order of the hulls' centres, so they never
+    overlap however close the components are; proven components are marked ✓.
+    """
+    centres = [0.5 * (r["lo"][list(dims)] + r["hi"][list(dims)]) for r in rows]
+    order = np.argsort([c[1] for c in centres])[::-1]
+    heights = np.linspace(0.97, 0.03, len(rows)) if len(rows) > 1 else [0.5]
+    for slot, k in zip(heights, order, strict=True):
+        r = rows[k]
+        proven = "✓ proven" if r["proven"] else "? unproven"
+        ax.annotate(
+            f"Q{r['component']} {proven}",
+            xy=centres[k],
+            xycoords="data",
+            xytext=(1.03, slot),
+            textcoords="axes fraction",
+            fontsize=7,
+            va="center",
+            color=colors[k],
+            arrowprops={"arrowstyle": "-", "color": colors[k], "lw": 0.5, "alpha": 0.6},
+        )
+
+
+def _figures(paving: SonarPaving, rows, prior_rows, out_dir: Path) -> list[Path]:
+    """Fig. 4: the room and every component of the problem as stated (proven ones in colour);
+    Fig. 5: the hypotheses of Q1 and Q2 with the clearance prior."""
     plt = pyplot()
-    colors = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd"]
+    cmap = plt.get_cmap("tab10")
+    colors = [cmap(k % 10) if r["proven"] else "0.55" for k, r in enumerate(rows)]
     figs = []
-    # Fig. 4(a)-(c): the room and the set projected on (x, y) and (x, theta).
-    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    fig, axes = plt.subplots(1, 3, figsize=(18, 5.5), gridspec_kw={"wspace": 0.45})
     _draw_room(axes[0])
     _draw_pose(axes[0], TRUTH, readings(), "k")
     finish_axes(axes[0], "our triangular room (Fig. 4(a) lost), q* and the 4 cones")
     for ax, dims, title in ((axes[1], (0, 1), "(x, y)"), (axes[2], (0, 2), "(x, θ)")):
-        for r, comp in zip(rows[:4], paving.components()[:4], strict=False):
+        for r, comp, color in zip(rows, paving.components(), colors, strict=True):
             lo, hi = r["lo"][list(dims)], r["hi"][list(dims)]
             comp.plot(ax=ax, dims=dims)
             ax.add_patch(
-                plt.Rectangle(lo, *(hi - lo), fill=False, ec=colors[r["component"] - 1], lw=1.0)
+                plt.Rectangle(
+                    lo,
+                    *(hi - lo),
+                    fill=False,
+                    ec=color,
+                    lw=1.2 if r["proven"] else 0.8,
+                    ls="-" if r["proven"] else "--",
+                )
             )
-            mark = " (proven)" if r["proven"] else ""
-            ax.annotate(f"Q{r['component']}{mark}", hi, color=colors[r["component"] - 1])
-        lo = np.min([r["lo"][list(dims)] for r in rows[:4]], axis=0)
-        hi = np.max([r["hi"][list(dims)] for r in rows[:4]], axis=0)
-        pad = 0.1 * (hi - lo) + 0.05
+        _label_components(ax, rows, dims, colors)
+        lo = np.min([r["lo"][list(dims)] for r in rows], axis=0)
+        hi = np.max([r["hi"][list(dims)] for r in rows], axis=0)
+        pad = 0.05 * (hi - lo) + 0.05
         ax.set_xlim(lo[0] - pad[0], hi[0] + pad[0])
         ax.set_ylim(lo[1] - pad[1], hi[1] + pad[1])
         ax.plot(TRUTH[dims[0]], TRUTH[dims[1]], "k+", ms=10)
         ax.set_xlabel("x [m]")
         ax.set_ylabel("y [m]" if dims[1] == 1 else "θ [rad]")
-        ax.set_title(f"Figs. 4(b)-(c): components projected on {title}", fontsize=9)
+        n_proven = sum(r["proven"] for r in rows)
+        ax.set_title(
+            f"Figs. 4(b)-(c): all {len(rows)} components on {title}, {n_proven} proven "
+            f"(ε = {EPS}, no prior)",
+            fontsize=9,
+        )
     figs.append(save_figure(fig, out_dir, "ljmw97_fig4_components.png"))
     # Fig. 5: the association hypotheses of Q1 (q*) and Q2 (second-largest proven).
     fig, axes = plt.subplots(1, 2, figsize=(11, 5))
-    pair = [r for r in proven_pair(rows) if r is not None]
-    for ax, r in zip(axes, pair, strict=False):
+    pair = [r for r in proven_pair(prior_rows) if r is not None]
+    for ax, r, color in zip(axes, pair, ("#d62728", "#1f77b4"), strict=False):
         _draw_room(ax)
-        _draw_pose(ax, 0.5 * (r["lo"] + r["hi"]), readings(), colors[r["component"] - 1])
+        _draw_pose(ax, 0.5 * (r["lo"] + r["hi"]), readings(), color)
         finish_axes(ax, f"Q{r['component']}: {_hypothesis_text(r['hypothesis'])}")
     figs.append(save_figure(fig, out_dir, "ljmw97_fig5_hypotheses.png"))
     return figs
@@ -374,7 +425,7 @@ def main(out_dir: Path | str, quick: bool = False) -> dict:
         "claims": claim_rows,
         "seconds": seconds,
         "seconds_prior": seconds_prior,
-        "figures": _figures(with_prior, rows_prior, out_dir),
+        "figures": _figures(plain, rows, rows_prior, out_dir),
         "markdown": markdown,
     }
 

@@ -54,15 +54,25 @@ def ignore_interrupts() -> None:
 
 
 class _Inline:
-    """Runs each task at submission, in this process (``--jobs 1``)."""
+    """Runs the tasks in this process (``--jobs 1``), each when the runner asks for the next
+    finished one, so the runner handles (and stores) each result before the next task runs."""
+
+    def __init__(self):
+        self.calls: dict[cf.Future, tuple[Callable, object]] = {}
 
     def submit(self, fn: Callable, arg, priority: float = 0.0) -> cf.Future:
         future: cf.Future = cf.Future()
-        future.set_result(fn(arg))
+        self.calls[future] = (fn, arg)
         return future
 
     def completed(self, futures: Iterable[cf.Future]) -> Iterator[cf.Future]:
-        yield from futures
+        for future in list(futures):
+            fn, arg = self.calls.pop(future)
+            try:
+                future.set_result(fn(arg))
+            except Exception as exc:
+                future.set_exception(exc)
+            yield future
 
 
 class _Pool:

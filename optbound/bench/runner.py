@@ -11,6 +11,12 @@ from its JSON alone)::
 
 ``task_seconds`` holds ``[task index, wall seconds]`` pairs: what each task cost, to check
 the families' cost estimates (``Family.cost``) against.
+
+A run given a :class:`~optbound.bench.run_folder.RunFolder` stores each task's result as it
+finishes and takes the tasks already stored there from it (``--resume``). A worker process
+that dies (killed, out of memory) breaks a process pool: the tasks that were running are then
+run again one by one, each in its own child process, the task whose process dies again is
+recorded as failed with the signal that ended it, and a new pool runs the tasks not started.
 """
 
 from __future__ import annotations
@@ -18,9 +24,12 @@ from __future__ import annotations
 import multiprocessing
 import os
 import platform
+import signal
+import tempfile
 import time
 import warnings
 from collections.abc import Callable
+from concurrent.futures.process import BrokenProcessPool
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -34,6 +43,7 @@ from optbound.bench.executors import executor as make_executor
 from optbound.bench.family import SUITES, Family
 from optbound.bench.progress import Progress
 from optbound.bench.registry import families as registered_families
+from optbound.bench.run_folder import RunFolder
 from optbound.report.results import SCHEMA
 
 
@@ -47,6 +57,7 @@ def run_suite(
     scheduler: str | None = None,
     where: Callable[[dict], bool] | None = None,
     command: str | None = None,
+    folder: RunFolder | None = None,
 ) -> dict:
     """Run every available family of ``suite`` and return the results dict.
 
@@ -72,6 +83,9 @@ def run_suite(
     command : str, optional
         The command line that repeats this run, for the progress bar and the report
         (default ``optbound bench --suite SUITE --seed SEED``); recorded as ``meta["command"]``.
+    folder : RunFolder, optional
+        Store each finished task's result there, and take the tasks already stored there
+        instead of running them (``meta["resumed_tasks"]`` counts them).
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
@@ -83,7 +97,6 @@ def run_suite(
     command = command or f"optbound bench --suite {suite} --seed {seed}"
     start, started = time.perf_counter(), datetime.now(timezone.utc)
     fams = registered_families()
-    complete = where is None and (not names or set(names) >= {f.name for f in fams})
     if names:
         unknown = sorted(set(names) - {fam.name for fam in fams})
         if unknown:
@@ -99,27 +112,33 @@ def run_suite(
         for i, task in enumerate(fam.tasks(suite, seed))
         if where is None or where(task)
     ]
-    # Longest first: a long task started last would leave the other workers idle at the end.
-    pooled = sorted((t for t in tasks if t[0].parallel), key=lambda t: -t[3])
-    serial = [t for t in tasks if not t[0].parallel]
     costs = {fam.name: [t[3] for t in tasks if t[0] is fam] for fam in runnable}
+    resumed = 0
     with Progress(command, costs, progress) as bar:
-        with make_executor(executor, jobs, scheduler) as pool:
-            if executor == "process" and scheduler is None and jobs > 1 and complete and tasks:
-                # Cold cache: the big kernels compiled once, split over the workers (warmup).
-                warmup.compile_cold(pool, warmup.cold_groups())
-            futures = {
-                pool.submit(_run_registered, (fam.name, i, task), priority=cost): cost
-                for fam, i, task, cost in pooled
-            }
-            for future in pool.completed(futures):
-                name, index, result = future.result()
-                _merge(out[name], index, result)
-                bar.done(name, futures[future])
-        for fam, i, task, cost in serial:
-            run = _run_isolated if fam.isolated else _run_registered
-            _merge(out[fam.name], i, run((fam.name, i, task))[2])
+
+        def finish(fam: Family, index: int, task: dict, cost: float, result: dict) -> None:
+            if folder is not None:
+                folder.save(fam.name, index, task, result)
+            _merge(out[fam.name], index, result)
             bar.done(fam.name, cost)
+
+        todo = []
+        for fam, i, task, cost in tasks:
+            stored = folder.load(fam.name, i, task) if folder is not None else None
+            if stored is None:
+                todo.append((fam, i, task, cost))
+            else:
+                _merge(out[fam.name], i, stored)
+                bar.done(fam.name, cost)
+                resumed += 1
+        # Longest first: a long task started last would leave the other workers idle at the end.
+        pooled = sorted((t for t in todo if t[0].parallel), key=lambda t: -t[3])
+        if pooled and executor == "process" and scheduler is None and where is None and not names:
+            warmup.compile_cold(jobs)  # a cold cache: the big kernels, once, over the cores
+        _run_pooled(pooled, finish, executor, jobs, scheduler)
+        for fam, i, task, cost in (t for t in todo if not t[0].parallel):
+            run = _run_alone if fam.isolated else _run_registered
+            finish(fam, i, task, cost, run((fam.name, i, task))[2])
     for entry in out.values():
         _sort_by_task(entry)
     meta = {
@@ -129,9 +148,11 @@ def run_suite(
         "jobs": jobs,
         "executor": "dask" if scheduler else executor,
         "families_run": [fam.name for fam in fams],
-        "complete": complete,
+        "complete": where is None
+        and (not names or set(names) >= {f.name for f in registered_families()}),
         "started": started.isoformat(timespec="seconds"),
         "wall_time_s": time.perf_counter() - start,
+        "resumed_tasks": resumed,
         "load_average": _load_average(),
         "cpus": os.cpu_count(),
         "optbound": optbound.__version__,
@@ -179,10 +200,103 @@ def _family_entry(fam: Family) -> dict:
     }
 
 
-def _run_isolated(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
-    """Run one task in a single-use child process, so its side effects die with it."""
-    with multiprocessing.get_context().Pool(1, initializer=ignore_interrupts) as pool:
-        return pool.apply(_run_registered, (item,))
+def _run_pooled(pooled: list, finish: Callable, executor: str, jobs: int, scheduler) -> None:
+    """Run the ``(family, index, task, cost)`` items on the executor, ``finish``-ing each.
+
+    A task whose future raises (a Dask worker lost, say) is a failed task. A dead worker
+    breaks a process pool and fails every unfinished future with it: the tasks that had
+    started (each marks its start in a temporary folder) are run again alone
+    (:func:`_run_alone`), and the others go to a new pool.
+    """
+    with tempfile.TemporaryDirectory(prefix="optbound-started-") as marks:
+        while pooled:
+            left = {(item[0].name, item[1]): item for item in pooled}
+            with make_executor(executor, jobs, scheduler) as pool:
+                futures = {
+                    pool.submit(_run_marked, (marks, fam.name, i, task), priority=cost): key
+                    for key, (fam, i, task, cost) in left.items()
+                }
+                for future in pool.completed(futures):
+                    item = left[futures[future]]
+                    try:
+                        result = future.result()[2]
+                    except BrokenProcessPool:
+                        break
+                    except Exception as exc:
+                        result = _failed(item[2], f"{type(exc).__name__}: {exc}", 0.0)
+                    del left[futures[future]]
+                    finish(*item, result)
+            started = [k for k in left if os.path.exists(os.path.join(marks, _mark(*k)))]
+            # A pool that broke before any task started (a worker that cannot start) would
+            # break again: then every task left runs alone, so the run always progresses.
+            for key in started or list(left):
+                fam, i, task, cost = left.pop(key)
+                finish(fam, i, task, cost, _run_alone((fam.name, i, task))[2])
+            pooled = list(left.values())
+
+
+def _mark(name: str, index: int) -> str:
+    return f"{name}-{index}"
+
+
+def _run_marked(item: tuple[str, str, int, dict]) -> tuple[str, int, dict]:
+    """A pool worker's task: mark its start in the folder ``item[0]``, then run it.
+
+    A remote Dask worker has no such folder; it needs no mark (only a process pool breaks).
+    """
+    marks, name, index, task = item
+    try:
+        with open(os.path.join(marks, _mark(name, index)), "w") as fh:
+            fh.write(str(os.getpid()))
+    except OSError:
+        pass
+    return _run_registered((name, index, task))
+
+
+def _run_alone(item: tuple[str, int, dict]) -> tuple[str, int, dict]:
+    """Run one task in a single-use child process, so its side effects die with it.
+
+    A child that dies before returning its result (a signal, the out-of-memory killer, an
+    ``os._exit``) makes the task a failed one, with the reason; the run goes on.
+    """
+    context = multiprocessing.get_context()
+    receive, send = context.Pipe(duplex=False)
+    child = context.Process(target=_child, args=(item, send), daemon=True)
+    start = time.perf_counter()
+    child.start()
+    send.close()
+    try:
+        return receive.recv()
+    except EOFError:  # the child died without sending
+        child.join()
+        seconds = time.perf_counter() - start
+        return item[0], item[1], _failed(item[2], _death(child.exitcode), seconds)
+    finally:
+        if child.is_alive():  # interrupted while waiting: do not leave the child running
+            child.terminate()
+        child.join()
+        receive.close()
+
+
+def _child(item: tuple[str, int, dict], send) -> None:
+    ignore_interrupts()
+    send.send(_run_registered(item))
+    send.close()
+
+
+def _death(exitcode: int | None) -> str:
+    """Why a worker process ended without a result, from its exit code."""
+    if exitcode is not None and exitcode < 0:
+        name = signal.Signals(-exitcode).name
+        return (
+            f"WorkerDied: the process running this task was killed by {name} (the "
+            "out-of-memory killer, a user or the system ended it)"
+        )
+    return f"WorkerDied: the process running this task exited with code {exitcode}"
+
+
+def _failed(task: dict, reason: str, seconds: float) -> dict:
+    return {"errors": [{"task": task, "error": reason}], "seconds": seconds}
 
 
 def _run_registered(item: tuple[str, int, dict]) -> tuple[str, int, dict]:

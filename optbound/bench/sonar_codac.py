@@ -48,6 +48,7 @@ from optbound.bench.sivia_codac import _median_time
 from optbound.interval import pave
 from optbound.interval.fenv import get_rounding, set_rounding
 from optbound.interval.paving import box_volumes
+from optbound.interval.relaxed import min_outliers, relaxed_paving
 from optbound.interval.sivia import FALSE, TRUE
 from optbound.interval.tribool import as_tri, from_masks
 from optbound.localization.sonar import (
@@ -207,6 +208,21 @@ def old_localize(world, sonars, ranges, X0, eps: float, q) -> tuple[int, object]
         if q != "auto" or not paving.is_empty:
             return k, paving
     raise ValueError("empty for every q")
+
+
+def interval_layer_localize(world, sonars, ranges, X0, eps: float, q) -> tuple[int, object]:
+    """``localize`` as it was before the compiled belt (the named reference of the speed-ups).
+
+    The same SIVIA and the same per-sonar tests, evaluated with numpy ``Interval`` arrays:
+    ``list(sonar_tests(...))`` drops their compiled q-relaxed conjunction, so
+    :func:`~optbound.interval.relaxed_test` runs each sonar's test lazily on the boxes left
+    undecided; levels below 1024 boxes are bisected untested (``pave``'s default).
+    """
+    tests = list(sonar_tests(world, sonars, ranges))
+    box, _ = _initial_box(X0)
+    if q == "auto":
+        return min_outliers(tests, box, eps)
+    return q, relaxed_paving(tests, q, box, eps)
 
 
 def _kjwm00_case() -> dict:

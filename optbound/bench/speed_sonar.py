@@ -1,14 +1,28 @@
-"""Sonar localization speed: optbound's ``sonar.localize`` vs codac 2 separators (full suite).
+"""Sonar localization speed: the KJWM00 workload against the interval-layer reference, and codac.
 
-The measurement lives in :mod:`optbound.bench.sonar_codac` (the LJMW97 triangle, eps = 0.04; codac
-runs in a child process of its own). codac takes about 4 minutes, so the family has a task in
-the full suite only; like ``speed_sivia`` it runs isolated in a child process, since codac
-leaves the FPU rounding mode set to upward. Without codac the report prints its note.
+Two tasks:
+
+- ``kjwm00`` (full suite): the pavings the KJWM00 reproduction's quick plan computes
+  per trial (q = 0, 1, ... up to the first not proven empty, which is q = "auto", and q = 2 on
+  the 16-sonar belt), on its first seeded trials of each group, timed with
+  ``sonar.localize`` (compiled belt test) and with the named reference
+  :func:`optbound.bench.sonar_codac.interval_layer_localize` (the same SIVIA with the sonar
+  tests evaluated on numpy ``Interval`` arrays, as ``localize`` was before). CPU seconds of
+  this process, both in the same run, case by case; ``ratio`` = reference / ours.
+- ``codac`` (full suite): :mod:`optbound.bench.sonar_codac` (the LJMW97 triangle, eps = 0.04;
+  codac runs in a child process of its own, about 4 minutes).
+
+The family runs isolated in a child process, like ``speed_sivia``, since codac leaves the FPU
+rounding mode set to upward. Without codac the report prints its note.
 """
 
 from __future__ import annotations
 
 import math
+import os
+import time
+
+import numpy as np
 
 from optbound.bench.family import Family
 from optbound.bench.speed_sivia import sivia_records
@@ -18,8 +32,80 @@ from optbound.problems.generators import task_seeds
 NAME = "speed_sonar"
 
 
+#: Seeded trials per group of the KJWM00 quick plan timed in the full suite (the reference
+#: takes about 2 s CPU per 16-sonar trial on a quiet machine).
+KJWM00_TRIALS = 10
+
+
 def tasks(suite: str, seed: int) -> list[dict]:
-    return [{"seed": task_seeds(seed, NAME, 1)[0]}] if suite == "full" else []
+    seeds = task_seeds(seed, NAME, 2)
+    out = []
+    if suite == "full":
+        out.append({"seed": seeds[0], "kind": "kjwm00", "trials": KJWM00_TRIALS})
+        out.append({"seed": seeds[1], "kind": "codac"})
+    return out
+
+
+def kjwm00_cases(trials: int) -> tuple[list[dict], float]:
+    """The first ``trials`` seeded cases of each group of the KJWM00 quick plan, and its eps."""
+    from optbound.papers_repro import kjwm00_outliers as kj
+    from optbound.scenarios import rooms
+
+    plan, _, eps = kj._plan(quick=True)
+    cases = []
+    for g, (_, kind, k, n_sonars) in enumerate(plan):
+        for i in range(trials):
+            sonars = rooms.belt_sonars(n_sonars if n_sonars else 3 + i % 5)
+            cases.append(kj.scenario(np.random.default_rng([0, g, i]), kind, k, sonars))
+    return cases, eps
+
+
+def _trial_pavings(pave_q, n_sonars: int) -> list:
+    """A KJWM00 trial's pavings: q = 0, 1, ... up to q = "auto", and q = 2 on 16 sonars."""
+    done = {}
+    for q in range(n_sonars + 1):
+        done[q] = pave_q(q)
+        if not done[q].is_empty:
+            break
+    if n_sonars >= 8 and 2 not in done:
+        done[2] = pave_q(2)
+    return [done[q] for q in sorted(done)]
+
+
+def kjwm00_records(trials: int) -> list[dict]:
+    """CPU seconds of the workload with the reference and with ``localize``, case by case."""
+    from optbound.bench.sonar_codac import interval_layer_localize
+    from optbound.localization.sonar import localize
+
+    cases, eps = kjwm00_cases(trials)
+    X0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
+    totals = {"reference": 0.0, "ours": 0.0}
+    for case in cases:
+        args = (case["world"], case["sonars"], case["ranges"], X0, eps)
+        runs = {
+            "reference": lambda q, a=args: interval_layer_localize(*a, q)[1],
+            "ours": lambda q, a=args: localize(*a, q=q),
+        }
+        outer = {}
+        for name, pave_q in runs.items():
+            start = time.process_time()
+            pavings = _trial_pavings(pave_q, len(case["sonars"]))
+            totals[name] += time.process_time() - start
+            outer[name] = [p.volume_bounds()[1] for p in pavings]
+        if outer["ours"] != outer["reference"]:
+            raise RuntimeError("the compiled belt paved a KJWM00 case unlike the reference")
+    label = f"KJWM00 quick workload, {len(cases)} trials ({trials} per group), CPU"
+    return [
+        speed_record(NAME, f"interval-layer localize (reference), {label}", totals["reference"]),
+        speed_record(
+            NAME,
+            f"sonar.localize (compiled belt test), {label}",
+            totals["ours"],
+            ratio=totals["reference"] / totals["ours"],
+            ratio_label="CPU time of the interval-layer reference / ours (same run)",
+            load_average=os.getloadavg()[0],
+        ),
+    ]
 
 
 def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
@@ -42,6 +128,8 @@ def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
 
 
 def run(task: dict) -> dict:
+    if task.get("kind") == "kjwm00":
+        return {"records": kjwm00_records(task["trials"]), "notes": []}
     from optbound.bench import sonar_codac
 
     records, notes = sonar_records(sonar_codac.run())
@@ -49,7 +137,7 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    return 260.0
+    return 3.0 * task["trials"] if task.get("kind") == "kjwm00" else 260.0
 
 
 FAMILY = Family(

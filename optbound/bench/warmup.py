@@ -7,12 +7,13 @@ SDP references' helpers), so each worker compiled them at the same moment: the s
 CPU spent twice, and the serial families after the pool compiled theirs on one core.
 
 Here the kernels are split into disjoint groups, each compiled by a few calls on one small
-instance; the groups run as pool tasks (longest first) and every task of the suite waits for
-them. Each group writes numba's on-disk cache, so every process after it (the other workers,
-the parent running the serial families) loads its kernels instead of compiling them. Kernels
-no group covers still compile on first use, as before. A group whose probe kernel is already
-cached is skipped, so a warm run submits nothing. The calls' results are discarded: only
-which machine code exists changes, never what a task computes.
+instance; when numba's cache lacks them, the groups run on a pool of their own (longest
+first) before the suite's tasks start. Each group writes numba's on-disk cache, so every
+process after it (the task workers, the parent running the serial families) loads its kernels
+instead of compiling them. Kernels no group covers still compile on first use, as before. A
+group whose probe kernel is already cached is skipped, so a warm run starts no pool. The
+calls' results are discarded: only which machine code exists changes, never what a task
+computes.
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ import time
 from collections.abc import Callable
 
 import numpy as np
+
+from optbound.bench.executors import executor
 
 
 def _ellipsoids():
@@ -123,9 +126,22 @@ def compile_group(name: str) -> tuple[str, float | str]:
     return name, time.process_time() - start
 
 
-def compile_cold(pool, names: list[str]) -> dict[str, float | str]:
-    """Compile the groups ``names`` on ``pool`` (an executor of
-    :mod:`optbound.bench.executors`) and wait for all of them; what
-    :func:`compile_group` returned, per group."""
-    futures = [pool.submit(compile_group, name, priority=GROUPS[name][0]) for name in names]
-    return dict(future.result() for future in pool.completed(futures))
+def compile_cold(jobs: int) -> dict[str, float | str]:
+    """Compile the groups missing from numba's cache on a pool of ``jobs`` processes, longest
+    first, and wait for all of them; what :func:`compile_group` returned, per group (a
+    worker lost on the way is reported the same way). With ``jobs == 1`` or a warm cache,
+    nothing runs: one process compiles each kernel once anyway, on first use."""
+    names = cold_groups() if jobs > 1 else []
+    if not names:
+        return {}
+    done: dict[str, float | str] = {}
+    with executor("process", min(jobs, len(names))) as pool:
+        futures = {
+            pool.submit(compile_group, name, priority=GROUPS[name][0]): name for name in names
+        }
+        for future in pool.completed(futures):
+            try:
+                done.update([future.result()])
+            except Exception as exc:  # a broken pool: the tasks compile what is missing
+                done[futures[future]] = f"{type(exc).__name__}: {exc}"
+    return done

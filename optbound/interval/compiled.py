@@ -56,7 +56,79 @@ def isub(al, ah, bl, bh):
 
 
 @njit(cache=True, inline="always")
+def iadd(al, ah, bl, bh):
+    """``[al, ah] + [bl, bh]``, rounded outward."""
+    return down1(al + bl), up1(ah + bh)
+
+
+@njit(cache=True, inline="always")
 def imul(al, ah, bl, bh):
-    """``[al, ah] * [bl, bh]`` for finite bounds, rounded outward."""
-    p1, p2, p3, p4 = al * bl, al * bh, ah * bl, ah * bh
-    return down1(min(min(p1, p2), min(p3, p4))), up1(max(max(p1, p2), max(p3, p4)))
+    """``[al, ah] * [bl, bh]`` for finite bounds, rounded outward.
+
+    The min and max of the four corner products, found from the operands' signs (two
+    products instead of four, except when both straddle 0). Rounding is monotone, so these
+    are bit for bit the min and max of the four rounded products.
+    """
+    if al >= 0.0:
+        if bl >= 0.0:
+            lo, hi = al * bl, ah * bh
+        elif bh <= 0.0:
+            lo, hi = ah * bl, al * bh
+        else:
+            lo, hi = ah * bl, ah * bh
+    elif ah <= 0.0:
+        if bl >= 0.0:
+            lo, hi = al * bh, ah * bl
+        elif bh <= 0.0:
+            lo, hi = ah * bh, al * bl
+        else:
+            lo, hi = al * bh, al * bl
+    elif bl >= 0.0:
+        lo, hi = al * bh, ah * bh
+    elif bh <= 0.0:
+        lo, hi = ah * bl, al * bl
+    else:
+        lo, hi = min(al * bh, ah * bl), max(al * bl, ah * bh)
+    return down1(lo), up1(hi)
+
+
+@njit(cache=True, inline="always")
+def isqr(al, ah):
+    """``[al, ah] ** 2`` (tight: the smallest and largest absolute values squared)."""
+    mig = max(max(al, -ah), 0.0)
+    mag = max(-al, ah)
+    return max(fmin(mig * mig * (1.0 - _EPS) - _TINY, _MAX), 0.0), mag * mag * (1.0 + _EPS) + _TINY
+
+
+@njit(cache=True, inline="always")
+def isqrt(al, ah):
+    """Square root on its domain (``_transcendental.sqrt``); empty ``(inf, -inf)`` if ``ah < 0``."""
+    if ah < 0.0:
+        return np.inf, -np.inf
+    return max(down1(np.sqrt(max(al, 0.0))), 0.0), up1(np.sqrt(max(ah, 0.0)))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def idiv(al, ah, bl, bh):
+    """``[al, ah] / [bl, bh]`` as ``_arith.div``: hull of the extended quotient where ``b`` holds 0.
+
+    Empty ``(inf, -inf)`` for ``b = [0, 0]``.
+    """
+    p1, p2, p3, p4 = al / bl, al / bh, ah / bl, ah / bh
+    lo, hi = fmin(fmin(p1, p2), fmin(p3, p4)), fmax(fmax(p1, p2), fmax(p3, p4))
+    lo, hi = down1(0.0 if lo != lo else lo), up1(0.0 if hi != hi else hi)
+    if bl > 0.0 or bh < 0.0:
+        return lo, hi
+    if bl == 0.0 and bh == 0.0:
+        return np.inf, -np.inf
+    b_right, b_left = bl == 0.0 and bh > 0.0, bl < 0.0 and bh == 0.0
+    new_lo, new_hi = -np.inf, np.inf
+    if b_right and al > 0.0:
+        new_lo = down1(al / bh)
+    elif b_left and ah < 0.0:
+        new_lo = down1(ah / bl)
+    if b_right and ah < 0.0:
+        new_hi = up1(ah / bh)
+    elif b_left and al > 0.0:
+        new_hi = up1(al / bl)
+    return new_lo, new_hi

@@ -12,7 +12,7 @@ m contractors remove it (:func:`relaxed_contractor`).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -21,6 +21,7 @@ from optbound.interval.paving import Paving
 from optbound.interval.sivia import (
     DEFAULT_MAX_BOXES,
     DEFAULT_RATIO,
+    DEFER_BELOW,
     FALSE,
     TRUE,
     UNKNOWN,
@@ -31,11 +32,25 @@ from optbound.interval.sivia import (
 from optbound.interval.tribool import as_tri
 
 
+class FusedTests(list):
+    """A list of tests that also evaluates its q-relaxed conjunction in one call.
+
+    ``fused(q)`` returns a test of one box per entry (1-D coordinate intervals of one shape,
+    SIVIA's case) answering exactly as :func:`relaxed_test` ``(list(tests), q)`` does; a model
+    whose tests share most of their work (the sonar belt) provides it, compiled.
+    :func:`relaxed_test`, :func:`relaxed_paving` and :func:`min_outliers` use it when given one.
+    """
+
+    def __init__(self, tests: Sequence[Test], fused: Callable[[int], Test]):
+        super().__init__(tests)
+        self.fused = fused
+
+
 def _check_tests(tests) -> list:
-    tests = list(tests)
-    if not tests or not all(callable(t) for t in tests):
+    checked = list(tests)
+    if not checked or not all(callable(t) for t in checked):
         raise ValueError("tests must be a non-empty sequence of callables")
-    return tests
+    return tests if isinstance(tests, FusedTests) else checked
 
 
 def _check_count(name: str, value, m: int) -> int:
@@ -54,10 +69,13 @@ def relaxed_test(tests: Sequence[Test], q: int) -> Test:
     tests = _check_tests(tests)
     m = len(tests)
     q = _check_count("q", q, m)
+    fused = tests.fused(q) if isinstance(tests, FusedTests) else None
 
     def test(*coords) -> np.ndarray:
         shapes = {np.shape(c.lo if isinstance(c, Interval) else c) for c in coords}
         if len(shapes) == 1 and len(next(iter(shapes))) == 1:  # SIVIA's case: one box each
+            if fused is not None:
+                return fused(*coords)
             return _lazy(tests, coords, m, q)
         tris = np.stack(np.broadcast_arrays(*(as_tri(t(*coords)) for t in tests)))
         n_true, n_false = (np.count_nonzero(tris == v, axis=0) for v in (TRUE, FALSE))
@@ -107,6 +125,7 @@ def min_outliers(
     contractors: Sequence[Contractor] | None = None,
     ratio: float = DEFAULT_RATIO,
     max_boxes: int = DEFAULT_MAX_BOXES,
+    defer_below: int = DEFER_BELOW,
 ) -> tuple[int, Paving]:
     """Raise ``q`` from 0 until the q-relaxed intersection is not proven empty [KJWM00].
 
@@ -137,6 +156,7 @@ def min_outliers(
             contractors=contractors,
             ratio=ratio,
             max_boxes=max_boxes,
+            defer_below=defer_below,
         )
         if not paving.is_empty:
             return q, paving
@@ -153,6 +173,7 @@ def relaxed_paving(
     contractors: Sequence[Contractor] | None = None,
     ratio: float = DEFAULT_RATIO,
     max_boxes: int = DEFAULT_MAX_BOXES,
+    defer_below: int = DEFER_BELOW,
 ) -> Paving:
     """Pave the q-relaxed intersection of ``tests`` (and ``prior``, tested first) in ``X0``.
 
@@ -170,7 +191,15 @@ def relaxed_paving(
             )
     relaxed = relaxed_test(tests, q)
     test = relaxed if prior is None else [prior, relaxed]
-    return pave(test, X0, eps, ratio=ratio, max_boxes=max_boxes, contractor=contractor)
+    return pave(
+        test,
+        X0,
+        eps,
+        ratio=ratio,
+        max_boxes=max_boxes,
+        contractor=contractor,
+        defer_below=defer_below,
+    )
 
 
 def relaxed_contractor(contractors: Sequence[Contractor], q: int) -> Contractor:

@@ -102,6 +102,7 @@ def pave(
     ratio: float = DEFAULT_RATIO,
     max_boxes: int = DEFAULT_MAX_BOXES,
     contractor: Contractor | None = None,
+    defer_below: int = DEFER_BELOW,
 ) -> Paving:
     """Pave ``X0`` with a three-valued test (or the conjunction of several).
 
@@ -123,6 +124,10 @@ def pave(
         (contraction before bisection, as codac's separators do). It must be sound: the parts
         it removes hold no point of the set. They are recorded as ``outside`` boxes, so inner,
         boundary and outside still tile ``X0``.
+    defer_below
+        Levels with fewer boxes are bisected without being tested (see Notes); default
+        ``DEFER_BELOW`` (1024), suited to tests made of numpy calls. A compiled test, whose
+        call costs little, prunes earlier with a smaller value.
 
     Raises
     ------
@@ -138,7 +143,7 @@ def pave(
 
     Notes
     -----
-    A level holding fewer than ``DEFER_BELOW`` (1024) boxes is bisected without being tested:
+    A level holding fewer than ``defer_below`` boxes is bisected without being tested:
     a numpy call costs nearly the same for 1 box as for 1000, and the children of a box that
     would have been proven inner (outside) are proven inner (outside) themselves, by inclusion
     monotonicity. The union of the inner and of the boundary boxes is the one of plain SIVIA;
@@ -154,6 +159,8 @@ def pave(
         raise ValueError(f"eps must be positive, got {eps}")
     if not 0.0 < ratio < 1.0:
         raise ValueError(f"ratio must lie in (0, 1), got {ratio}")
+    if isinstance(defer_below, bool) or not isinstance(defer_below, (int, np.integer)):
+        raise TypeError(f"defer_below must be an integer, got {type(defer_below).__name__}")
     # Every split point must fall strictly inside its box: keep eps far above the float spacing.
     spacing = np.spacing(max(np.max(np.abs(x_lo)), np.max(np.abs(x_hi))))
     if min(ratio, 1.0 - ratio) * eps < 8.0 * spacing:
@@ -172,7 +179,7 @@ def pave(
                 f"eps={eps} needs more than max_boxes={max_boxes} boxes; raise eps or max_boxes"
             )
         axis, mid, splittable = _split_points(lo, hi, eps, ratio)
-        if m < DEFER_BELOW and splittable.all():
+        if m < defer_below and splittable.all():
             # Too few boxes to amortise numpy's per-call cost: bisect without testing. The
             # children are tested later and, by inclusion monotonicity, classify the same
             # union of boxes as the parent would have.

@@ -11,9 +11,12 @@ bound on the number of outliers, see :func:`localize`). Optionally, every box is
 by the sonars' upper range bounds before bisection (:func:`sonar_contractors`).
 
 The geometry (cone, reflecting side, nearest point) is :func:`geometry.nearest_in_cone`,
-one formula for points and boxes. The heading ``theta`` is an angle: an initial box covering
-a whole turn is widened to contain the true circle, and components that meet across the seam
-``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
+one formula for points and boxes. On SIVIA's boxes the belt is evaluated by a compiled loop
+(:mod:`optbound.localization._sonar_kernel`) that computes the same outward-rounded bounds bit
+for bit and counts the inconsistent sonars per box, stopping at the first that decides it
+(:func:`sonar_tests`); the numpy evaluation stays the reference. The heading ``theta`` is an
+angle: an initial box covering a whole turn is widened to contain the true circle, and
+components that meet across the seam ``theta = +-pi`` are merged (:meth:`SonarPaving.components`).
 
 A world is an (s, 2, 2) array of oriented segments; :func:`polygon_walls` builds a room's
 walls from its vertices and :func:`clearance_test` is a "centre inside the room" prior. Under
@@ -39,7 +42,8 @@ from optbound.interval import (
     relaxed_test,
 )
 from optbound.interval.fenv import nearest
-from optbound.interval.relaxed import relaxed_paving
+from optbound.interval.relaxed import FusedTests, relaxed_paving
+from optbound.localization import _sonar_kernel as kernel
 from optbound.localization import geometry as g
 from optbound.localization._sonar_contractor import upper_range_contractor
 from optbound.sets import Box
@@ -47,6 +51,10 @@ from optbound.sets import Box
 #: Default maximal range d_max [m]: what a sonar returns when its cone meets no reflecting
 #: face [LJMW97, eq. (2)] (the Polaroid sensors' usual limit).
 D_MAX = 10.0
+#: SIVIA tests every level of at least this many boxes (:func:`~optbound.interval.pave`'s
+#: ``defer_below``): the compiled belt test costs little per call, so pruning from a few
+#: hundred boxes on is cheaper than bisecting untested (1024, the default, halves the speed).
+DEFER_BELOW = 256
 
 
 @dataclass(frozen=True)
@@ -165,14 +173,20 @@ def range_inclusion(world, sonars, boxes, d_max: float = D_MAX) -> Interval:
     """Inclusion function of f on (m, 3, 2) pose boxes: an (m, t) ``Interval``.
 
     Every pose of box k gives, for sonar i, a range inside entry ``[k, i]`` (outward-rounded:
-    guaranteed for the floats of the map and the boxes read as exact numbers). Vectorized over
-    boxes, sonars and segments; see :func:`geometry.nearest_in_cone` for the bounds.
+    guaranteed for the floats of the map and the boxes read as exact numbers). The bounds of
+    :func:`geometry.nearest_in_cone` on intervals, minimised over the segments, evaluated by
+    the compiled loop of :mod:`optbound.localization._sonar_kernel` (the same bounds, bit for
+    bit).
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
     arr = box_array("boxes", boxes, 3)
-    pose = tuple(Interval._make(arr[:, k, 0], arr[:, k, 1]) for k in range(3))
-    return _min_over_segments(_ranges(world, belt, pose, _d_max(d_max)))
+    pose = tuple(Interval._make(arr[:, k, 0].copy(), arr[:, k, 1].copy()) for k in range(3))
+    return kernel.range_bounds(kernel.wall_table(world), _param_table(belt), _d_max(d_max), *pose)
+
+
+def _param_table(belt: list[Sonar]) -> np.ndarray:
+    return np.array(_params(belt), dtype=float).reshape(len(belt), 4)
 
 
 def measurement_box(sonars, ranges) -> np.ndarray:
@@ -206,8 +220,15 @@ def _initial_box(X0) -> tuple[np.ndarray, bool]:
     return np.stack([lo, hi], axis=1), bool(full)
 
 
-def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> list:
-    """One three-valued SIVIA test per sonar: ``f_i(q) in [d_i (1 -+ alpha_i)]``."""
+def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
+    """One three-valued SIVIA test per sonar: ``f_i(q) in [d_i (1 -+ alpha_i)]``.
+
+    Each test evaluates :func:`geometry.nearest_in_cone` with the interval layer. The list
+    also carries their compiled q-relaxed conjunction (:class:`~optbound.interval.relaxed.
+    FusedTests`), which :func:`~optbound.interval.relaxed_test` uses on SIVIA's boxes: one
+    compiled pass over the boxes that stops, per box, at the first sonar that decides it
+    [KJWM00]. ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
+    """
     world = g.as_segments(world)
     belt = _belt(sonars)
     Y = measurement_box(belt, ranges)
@@ -219,7 +240,15 @@ def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> list:
 
         return constraint(f, Y[i : i + 1])
 
-    return [test_of(i) for i in range(len(belt))]
+    walls, params = kernel.wall_table(world), _param_table(belt)
+
+    def fused(q: int):
+        def test(x, y, theta):
+            return kernel.relaxed_tri(walls, params, d_max, Y, q, x, y, theta)
+
+        return test
+
+    return FusedTests([test_of(i) for i in range(len(belt))], fused)
 
 
 def _keep(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -421,7 +450,7 @@ def localize(
         Contract every box by the sonars' :func:`sonar_contractors` before it is tested
         (their q-relaxed union, :func:`~optbound.interval.relaxed.relaxed_contractor`);
         ``False`` (default) is plain SIVIA. Both are guaranteed. The contractors act on
-        ``(x, y)`` only and, measured in ``benchmarks/sonar_codac.py``, do not pay for
+        ``(x, y)`` only and, measured in :mod:`optbound.bench.sonar_codac`, do not pay for
         themselves on our rooms; they are kept as a sound option.
 
     Returns
@@ -441,16 +470,15 @@ def localize(
     eps = v.finite_scalar("eps", eps)
     if eps <= 0.0:
         raise ValueError(f"eps must be positive, got {eps}")
+    options = dict(
+        prior=prior, contractors=contractors, max_boxes=max_boxes, defer_below=DEFER_BELOW
+    )
     if isinstance(q, str):
         if q != "auto":
             raise ValueError(f'q must be an integer in [0, {len(belt)}] or "auto", got {q!r}')
-        q, paving = min_outliers(
-            tests, box, eps, prior=prior, contractors=contractors, max_boxes=max_boxes
-        )
+        q, paving = min_outliers(tests, box, eps, **options)
     else:
-        paving = relaxed_paving(
-            tests, q, box, eps, prior=prior, contractors=contractors, max_boxes=max_boxes
-        )
+        paving = relaxed_paving(tests, q, box, eps, **options)
     problem = dict(
         world=world,
         sonars=belt,

@@ -110,8 +110,12 @@ def _header(results: dict, csv_files: list[str]) -> str:
 
 
 def _wall_time(meta: dict) -> str:
-    """What the run cost: the tasks alone, and (if run by the command) from its start."""
+    """What the run cost: the tasks alone, and (if run by the command) from its start; for a
+    resumed run, of the resuming command only."""
     tasks = f"{meta['wall_time_s']:.1f} s running the tasks"
+    resumed = meta.get("resumed_tasks", 0)
+    if resumed:
+        tasks += f" not taken from the interrupted run it resumed ({resumed} task(s) were)"
     if "since_start_s" not in meta:
         return f"wall time {tasks}"
     return (

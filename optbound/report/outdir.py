@@ -5,8 +5,9 @@ from __future__ import annotations
 import tempfile
 from pathlib import Path
 
-#: Files whose presence marks a folder as holding a report of optbound bench or repro.
-REPORT_MARKERS = ("results.json", "report.md")
+#: Files whose presence marks a folder as holding a report of optbound bench or repro (or the
+#: finished tasks of a run, :mod:`optbound.bench.run_folder`).
+REPORT_MARKERS = ("results.json", "report.md", "run.json")
 
 
 class OutDirError(ValueError):
@@ -45,8 +46,9 @@ def prepare_out_dir(path: str | Path, force: bool = False) -> Path:
         raise OutDirError(f"cannot write to --out {str(out)!r}: {exc.strerror or exc}") from None
     existing = [name for name in REPORT_MARKERS if (out / name).exists()]
     if existing and not force:
+        resume = f", --resume {str(out)!r} to finish its run" if "run.json" in existing else ""
         raise OutDirError(
             f"--out {str(out)!r} already holds a report ({', '.join(existing)}); "
-            "pass --force to overwrite it or choose another --out"
+            f"pass --force to overwrite it{resume} or choose another --out"
         )
     return out

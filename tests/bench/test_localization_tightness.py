@@ -50,7 +50,7 @@ def test_suites():
 def test_records_have_the_documented_fields(tiny):
     _, out = tiny
     criteria = [r["criterion"] for r in out["records"]]
-    assert criteria == ["hs96_linearized", "bh_L4", "bh_L8", "sdp_ellipse", "optimal_pseudo_L4"]
+    assert criteria == ["hs96_linearized", "bh_L4", "bh_L8", "best_ellipse", "optimal_pseudo_L4"]
     for rec in out["records"]:
         assert FIELDS | MEASURED <= set(rec), rec["criterion"]
         assert rec["ratio_lo"] <= rec["ratio"] <= rec["ratio_hi"]
@@ -94,9 +94,12 @@ def test_sample_exact_draws_points_of_the_inner_boxes():
 
 
 def test_each_bound_is_labelled_for_what_it_is(tiny):
-    """The paving's SDP ellipse is an outer ellipse of a coarse paving, not the optimum."""
+    """The best ellipse found on a coarse paving is an outer ellipse, not the optimum; it is
+    named as the BH reproduction names its own (``relative_bearing.best_ellipse().best``)."""
     _, out = tiny
     kinds = {rec["criterion"]: rec["bound"] for rec in out["records"]}
-    assert kinds["sdp_ellipse"] == "paving SDP (outer, not optimal)"
+    assert kinds["best_ellipse"] == "best outer ellipse found (certified, not optimal)"
+    [best] = [rec for rec in out["records"] if rec["criterion"] == "best_ellipse"]
+    assert best["lower_area"] <= best["area_lo"] == best["area_hi"]
     assert kinds["hs96_linearized"] == kinds["bh_L4"] == "analytic"
     assert all(k == "optimal" for c, k in kinds.items() if c.startswith("optimal_pseudo"))

@@ -50,9 +50,35 @@ def test_glh12_family_runs_its_own_suite():
     assert speed_glh12.cost(task) < speed_glh12.cost({"suite": "full"})
 
 
-def test_sonar_has_a_task_in_the_full_suite_only():
+def test_sonar_has_tasks_in_the_full_suite_only():
     assert speed_sonar.tasks("tiny", 0) == speed_sonar.tasks("quick", 0) == []
-    assert len(speed_sonar.tasks("full", 0)) == 1
+    assert [t["kind"] for t in speed_sonar.tasks("full", 0)] == ["kjwm00", "codac"]
+
+
+class _Paving:
+    def __init__(self, empty):
+        self.is_empty = empty
+
+
+@pytest.mark.parametrize(
+    ("n_sonars", "first", "expected"), [(16, 1, [0, 1, 2]), (16, 3, [0, 1, 2, 3]), (5, 1, [0, 1])]
+)
+def test_kjwm00_workload_paves_up_to_auto_and_q2_on_the_belt(n_sonars, first, expected):
+    """The pavings of one trial: q = 0 ... q = auto, plus q = 2 on the 16-sonar belt."""
+    asked = []
+
+    def pave_q(q):
+        asked.append(q)
+        return _Paving(q < first)
+
+    assert len(speed_sonar._trial_pavings(pave_q, n_sonars)) == len(expected)
+    assert sorted(asked) == expected and len(asked) == len(set(asked))
+
+
+@pytest.mark.slow
+def test_kjwm00_records_time_both_paths_on_the_same_pavings():
+    reference, ours = speed_sonar.kjwm00_records(1)
+    assert reference["value"] > 0 and ours["ratio"] == reference["value"] / ours["value"]
 
 
 ROW = {"name": "ljmw97_triangle eps=0.04", "seconds": 0.5, "load_average": 1.0}

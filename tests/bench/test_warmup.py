@@ -6,7 +6,6 @@ import subprocess
 import sys
 
 from optbound.bench import warmup
-from optbound.bench.executors import executor
 
 
 def test_every_group_is_cold_in_an_empty_cache(tmp_path):
@@ -23,22 +22,16 @@ def test_every_group_is_cold_in_an_empty_cache(tmp_path):
     assert not list(tmp_path.rglob("*.nbi"))  # finding them cold compiled nothing
 
 
-def test_compile_cold_runs_each_named_group_once(monkeypatch):
-    calls = []
-    groups = {
-        "a": (2.0, lambda: calls.append("a"), "optbound.analytic._kernels.strip_kernel:fuse_range"),
-        "b": (1.0, lambda: calls.append("b"), "optbound.analytic._kernels.strip_kernel:fuse_range"),
-    }
+def _fails():
+    raise ValueError("no solver")
+
+
+def test_compile_cold_runs_each_cold_group_once_and_reports_failures(monkeypatch):
+    probe = "optbound.analytic._kernels.strip_kernel:fuse_range"
+    groups = {"ok": (2.0, lambda: None, probe), "bad": (1.0, _fails, probe)}
     monkeypatch.setattr(warmup, "GROUPS", groups)
-    with executor("process", 1) as pool:
-        spent = warmup.compile_cold(pool, ["a", "b"])
-    assert sorted(calls) == ["a", "b"]
-    assert set(spent) == {"a", "b"} and all(isinstance(s, float) for s in spent.values())
-
-
-def test_a_failing_group_is_reported_not_raised(monkeypatch):
-    def fails():
-        raise ValueError("no solver")
-
-    monkeypatch.setattr(warmup, "GROUPS", {"bad": (1.0, fails, "optbound:__name__")})
-    assert warmup.compile_group("bad") == ("bad", "ValueError: no solver")
+    monkeypatch.setattr(warmup, "cold_groups", lambda: ["ok", "bad"])
+    done = warmup.compile_cold(2)  # a process pool (forked: it sees the patched groups)
+    assert done.keys() == {"ok", "bad"} and isinstance(done["ok"], float)
+    assert done["bad"] == "ValueError: no solver"
+    assert warmup.compile_cold(1) == {}  # one process: nothing to split

@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from optbound import interval as iv
-from optbound.interval.relaxed import relaxed_paving
+from optbound.interval.relaxed import FusedTests, relaxed_paving
 
 LANDMARKS = np.array([[0.0, 0.0], [10.0, 0.0], [0.0, 10.0], [10.0, 10.0], [5.0, -4.0]])
 TRUTH = np.array([3.0, 4.0])
@@ -108,3 +108,43 @@ def test_prior_is_required_whatever_q():
     prior = iv.constraint(lambda x, y: x, [[4.0, np.inf]])  # excludes the truth (x = 3)
     paving = relaxed_paving(tests, 5, X0, 0.2, prior=prior)
     assert not _covers(paving, TRUTH) and _covers(relaxed_paving(tests, 5, X0, 0.2), TRUTH)
+
+
+def test_fused_tests_answer_for_one_box_per_entry_only():
+    """A FusedTests list hands SIVIA's boxes to its fused test; other shapes get the plain one."""
+    tests = _range_tests(_measurements())
+    calls = []
+
+    def fused(q):
+        def test(*coords):
+            calls.append(q)
+            return iv.relaxed_test(tests, q)(*coords)
+
+        return test
+
+    bank = FusedTests(tests, fused)
+    paving = relaxed_paving(bank, 1, X0, 0.5)
+    assert calls and set(calls) == {1}
+    reference = relaxed_paving(tests, 1, X0, 0.5)
+    assert np.array_equal(paving.boundary, reference.boundary)
+    calls.clear()
+    grid = [iv.Interval(np.zeros((2, 2)), np.ones((2, 2)))] * 2  # not one box per entry
+    assert iv.relaxed_test(bank, 1)(*grid).shape == (2, 2) and not calls
+
+
+def test_deferral_changes_the_boxes_not_the_set():
+    """Testing every level (defer_below=1) or deferring: the same outer set at sampled points."""
+    tests = _range_tests(_measurements())
+    rng = np.random.default_rng(0)
+    points = rng.uniform(-5, 15, (4000, 2))
+    covered = []
+    for defer in (1, 64, 1024):
+        paving = relaxed_paving(tests, 1, X0, 0.1, defer_below=defer)
+        boxes = paving.outer()
+        inside = (boxes[None, :, :, 0] <= points[:, None]) & (
+            points[:, None] <= boxes[None, :, :, 1]
+        )
+        covered.append(np.any(np.all(inside, axis=-1), axis=1))
+    assert covered[0].any() and all(np.array_equal(covered[0], c) for c in covered[1:])
+    with pytest.raises(TypeError, match="defer_below"):
+        relaxed_paving(tests, 1, X0, 0.1, defer_below=2.5)

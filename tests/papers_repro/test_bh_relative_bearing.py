@@ -34,6 +34,29 @@ def test_bounds_are_proven_and_ordered(result):
     assert a["ellipse"][1] >= a["exact"][0]
 
 
+def test_the_area_table_has_one_best_ellipse_and_names_the_others(result):
+    """One "best" ellipse row: the certified one found, its own area (not the midpoint of its
+    bracket with the lower bound, which is no ellipse's area); the lower bound and the two
+    candidates each in a row named for what it is; the bench's localization family uses the
+    same name for the same construction."""
+    from optbound.bench.localization_tightness import KINDS
+
+    md, a = result["markdown"], result["areas"]
+    table = md.split("### Areas")[1].split("###")[0]
+    rows = {r.split(" | ")[0].lstrip("| "): r.split(" | ")[2].rstrip(" |") for r in
+            table.splitlines()[2:] if r.startswith("| ")}  # fmt: skip
+    assert set(repro.ELLIPSE_NAMES.values()) <= set(rows)
+    assert [name for name in rows if "best" in name and "ellips" in name] == [
+        repro.ELLIPSE_NAMES["best"]
+    ]
+    ex_mid = (a["exact"][0] + a["exact"][1]) / 2
+    assert rows[repro.ELLIPSE_NAMES["best"]] == f"{a['ellipse'][1] / ex_mid:.2f}"
+    assert rows[repro.ELLIPSE_NAMES["lower"]] == f"{a['ellipse'][0] / ex_mid:.2f}"
+    assert rows[repro.ELLIPSE_NAMES["sdp"]] == f"{a['sdp'][1] / ex_mid:.2f}"
+    best = KINDS["best_ellipse"]
+    assert repro.ELLIPSE_NAMES["best"].startswith(best.split(" (")[0])
+
+
 def test_optimal_reference_bracket(result):
     ref = result["references"]["opt4"]
     assert ref.lower <= ref.upper

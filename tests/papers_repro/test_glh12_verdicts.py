@@ -28,6 +28,9 @@ def test_threshold_verdict(fraction, expected):
         ({9: 0.8, 11: 0.3}, {9: 0.9, 11: 1.0}, P),  # 11 robots more than halve the area
         ({9: 1.2, 11: 0.9}, {9: 0.4, 11: 0.6}, P),  # close medians, one side of the rule each
         ({9: 4.0, 11: 0.9}, {9: 0.0, 11: 0.6}, N),
+        # both fail, with similar medians: similar failures are not the paper's plateau
+        ({9: 4.3, 11: 2.7}, {9: 0.0, 11: 0.0}, v.NOT_APPLICABLE),
+        ({9: 1.2, 11: 1.1}, {9: 0.4, 11: 0.3}, v.NOT_APPLICABLE),
     ],
 )
 def test_plateau_verdict(median, fraction, expected):

@@ -22,6 +22,8 @@ def test_quick_variant_keeps_the_truth_and_reports(result):
     assert all(s["n"] == n for s in (*result["robots"].values(), *result["obstacles"].values()))
     assert "| quantity | paper | optbound | verdict |" in result["markdown"]
     assert "**Why ours differ.**" in result["markdown"]
+    n_runs = f"({n} runs each)"
+    assert all(n_runs in row[2] or f"({n} each)" in row[2] for row in result["claims"][1:])
     for path in result["figures"]:
         assert path.suffix == ".png" and path.stat().st_size > 10_000
 
@@ -39,6 +41,10 @@ def test_verdicts_are_computed_from_the_reported_fractions(result):
             frac_o, (4, 5, 6, 8)
         )
         assert rows[f"7 obstacles, 7 robots ({reading})"] == verdicts.dip_verdict(frac_o, 7, (6, 8))
+        med_r = {n: s["median"] for n, s in result["robots"].items()}
+        assert rows[f"more robots than 9 ({reading})"] == verdicts.plateau_verdict(
+            med_r, frac_r, 9, 11
+        )
 
 
 def test_distribution_summarizes_final_areas():
@@ -66,3 +72,37 @@ def test_sweep_on_two_processes_matches_serial():
     serial, parallel = repro.sweep(configs, (0, 1)), repro.sweep(configs, (0, 1), jobs=2)
     assert [r["area"] for r in serial] == [r["area"] for r in parallel]
     assert np.all([r["lost"] == 0 for r in parallel])
+
+
+def test_sweep_stores_each_run_and_takes_the_stored_ones(tmp_path, monkeypatch):
+    """``runs``: every finished run appended to the file; a second sweep runs only what is
+    missing (a torn last line, left by a killed process, is skipped)."""
+    configs = [{**repro.BASE, "robots": 2, "obstacles": 3, "steps": 10, "eps": 0.02,
+                "max_depth": 6}]  # fmt: skip
+    runs = tmp_path / "runs.jsonl"
+    first = repro.sweep(configs, (0, 1), runs=runs)
+    assert len(runs.read_text().splitlines()) == 2
+    with runs.open("a") as fh:
+        fh.write('{"robots": 2, "obst')
+    ran = []
+    real = repro.run_one
+    monkeypatch.setattr(repro, "run_one", lambda c, s: ran.append(s) or real(c, s))
+    again = repro.sweep(configs, (0, 1, 2), runs=runs)
+    assert ran == [2]
+    assert [r["area"] for r in again[:2]] == [r["area"] for r in first]
+    assert again[2] == real(configs[0], 2) | {k: again[2][k] for k in ("seconds", "cpu_seconds")}
+
+
+def test_contraction_rows_are_kept_beside_the_runs(tmp_path, monkeypatch):
+    calls = []
+    fake = lambda params, seed, at, eps, split: calls.append(seed) or [{"seed": seed}]  # noqa: E731
+    monkeypatch.setattr(repro.contraction, "study", fake)
+    study = {"seeds": (0, 1), "at": (5,), "paving_eps": 0.1, "split": 2}
+    runs = tmp_path / "runs.jsonl"
+    first = repro._contraction_rows({"robots": 2}, study, runs)
+    assert (
+        repro._contraction_rows({"robots": 2}, study, runs) == first == [{"seed": 0}, {"seed": 1}]
+    )
+    assert calls == [0, 1]
+    repro._contraction_rows({"robots": 3}, study, runs)  # another study: run, not taken
+    assert calls == [0, 1, 0, 1]

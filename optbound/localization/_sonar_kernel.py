@@ -1,0 +1,238 @@
+"""Compiled inclusion function of the sonar belt and its q-relaxed test [LJMW97], [KJWM00].
+
+:func:`geometry.nearest_in_cone` on :class:`~optbound.interval.Interval` arrays is the
+inclusion function of one sonar's range [LJMW97, eq. (2)]; evaluated with numpy it costs about
+a hundred array operations per sonar and bisection level, which dominates SIVIA on the few
+thousand boxes of a sonar paving. Here the same formulas (:func:`geometry.cone_candidates`),
+in the same order with the same outward-rounded operations (:mod:`optbound.interval.compiled`,
+bit for bit those of the numpy interval layer), run in one compiled loop over boxes, sonars and
+walls. The tests check that the bounds equal those of the numpy evaluation.
+
+Only the heading's sines and cosines (per box and sonar) are computed outside, by the interval
+layer (:func:`geometry.to_world`, :func:`geometry.unit`); the walls' own quantities (``b - a``,
+length, inward normal) once per map. The q-relaxed test [KJWM00] counts, per box, the sonars
+whose range interval lies inside / outside their reading and stops at the first sonar that
+decides the box (the verdicts of :func:`optbound.interval.relaxed_test`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from optbound.interval import Interval
+from optbound.interval.compiled import iadd, idiv, imul, isqr, isqrt, isub
+from optbound.interval.sivia import FALSE, TRUE, UNKNOWN
+from optbound.localization import geometry as g
+
+# Columns of the wall table (:func:`wall_table`).
+_AX, _AY, _BX, _BY = 0, 1, 2, 3
+_EX, _EY, _LEN, _INX, _INY = 4, 6, 8, 10, 12  # lo at the index, hi at index + 1
+_WALL_COLUMNS = 14
+# Columns of the per-(box, sonar) table (:func:`pose_table`): lo, hi of each quantity.
+_PX, _PY, _RX, _RY, _LX, _LY = 0, 2, 4, 6, 8, 10
+_POSE_COLUMNS = 12
+
+
+def wall_table(world: np.ndarray) -> np.ndarray:
+    """(s, 14) per wall: ``a``, ``b``, then the intervals ``b - a``, ``|b - a|``, inward normal.
+
+    Computed by the interval layer exactly as :func:`geometry.cone_candidates` computes them.
+    """
+    a, b = g.exact(g.segment_points(world)[0]), g.exact(g.segment_points(world)[1])
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    length = g.distance(b, a)
+    short = np.flatnonzero(length.lo <= 0.0)
+    if short.size:  # the compiled products assume finite operands: 1 / length must be finite
+        raise ValueError(f"world: segment(s) {short.tolist()} are too short (length below 1e-150)")
+    inward = (ey / length, -ex / length)
+    out = np.empty((world.shape[0], _WALL_COLUMNS))
+    out[:, _AX], out[:, _AY], out[:, _BX], out[:, _BY] = a[0].lo, a[1].lo, b[0].lo, b[1].lo
+    for col, v in ((_EX, ex), (_EY, ey), (_LEN, length), (_INX, inward[0]), (_INY, inward[1])):
+        out[:, col], out[:, col + 1] = v.lo, v.hi
+    return out
+
+
+def pose_table(params: np.ndarray, x: Interval, y: Interval, theta: Interval) -> np.ndarray:
+    """(m, t, 12) per box and sonar: the apex and the cone's right and left unit vectors.
+
+    ``params`` is (t, 4): each sonar's mounting ``x, y``, orientation and half-aperture.
+    Computed by the interval layer exactly as :func:`sonar._ranges` computes them.
+    """
+    x, y, theta = (Interval._make(c.lo[:, None], c.hi[:, None]) for c in (x, y, theta))
+    sx, sy, alpha, gamma = params.T
+    apex = g.to_world((x, y, theta), (sx, sy))
+    heading = theta + alpha
+    right, left = g.unit(heading - gamma), g.unit(heading + gamma)
+    out = np.empty((*apex[0].shape, _POSE_COLUMNS))
+    for col, v in zip((_PX, _PY, _RX, _RY, _LX, _LY), (*apex, *right, *left), strict=True):
+        out[..., col], out[..., col + 1] = v.lo, v.hi
+    return out
+
+
+@njit(cache=True, inline="always")
+def _det(ul, uh, vl, vh, wl, wh, zl, zh):
+    """``det(u, v, w, z) = u z - v w`` on intervals (:func:`geometry.det`)."""
+    p_lo, p_hi = imul(ul, uh, zl, zh)
+    q_lo, q_hi = imul(vl, vh, wl, wh)
+    return isub(p_lo, p_hi, q_lo, q_hi)
+
+
+@njit(cache=True, inline="always")
+def _norm(xl, xh, yl, yh):
+    """``sqrt(x**2 + y**2)`` on intervals (:func:`geometry.distance`)."""
+    sx_lo, sx_hi = isqr(xl, xh)
+    sy_lo, sy_hi = isqr(yl, yh)
+    n_lo, n_hi = iadd(sx_lo, sx_hi, sy_lo, sy_hi)
+    return isqrt(n_lo, n_hi)
+
+
+@njit(cache=True, error_model="numpy")
+def _range(pose, walls, far, y_lo, y_hi):
+    """Enclosure ``(lo, hi)`` of one sonar's range on one box (:func:`nearest_in_cone`).
+
+    Per wall, the candidates of :func:`geometry.cone_candidates`: a candidate's value lowers
+    ``lo`` where it may be valid and ``hi`` where it is surely valid. Every candidate needs
+    the apex on the reflecting side (``front > 0``). The cone-edge margins of the rays are
+    the end points' in-cone determinants (``det(a - apex, right) = -det(right, a - apex)``,
+    negation being exact in outward rounding), so each product is computed once.
+
+    With ``y_lo = -inf, y_hi = +inf`` the result is the enclosure, bit for bit. With a
+    reading ``[y_lo, y_hi]`` only its comparisons with the reading are kept (the test's
+    Tri): a wall whose every candidate lies above ``y_hi`` (their least lower bound, the
+    minimum of the end points' distances and the perpendicular distance, exceeds it) changes
+    none of them and is skipped, and the walls stop once ``hi < y_lo`` (FALSE).
+    """
+    lo = far
+    hi = far
+    pxl, pxh, pyl, pyh = pose[_PX], pose[_PX + 1], pose[_PY], pose[_PY + 1]
+    r0l, r0h, r1l, r1h = pose[_RX], pose[_RX + 1], pose[_RY], pose[_RY + 1]
+    l0l, l0h, l1l, l1h = pose[_LX], pose[_LX + 1], pose[_LY], pose[_LY + 1]
+    for j in range(walls.shape[0]):
+        if hi < y_lo:
+            break
+        w = walls[j]
+        a0, a1, b0, b1 = w[_AX], w[_AY], w[_BX], w[_BY]
+        exl, exh, eyl, eyh = w[_EX], w[_EX + 1], w[_EY], w[_EY + 1]
+        # front = -side(apex, a, b) = -det(apex - a, b - a)
+        ux_lo, ux_hi = isub(pxl, pxh, a0, a0)
+        uy_lo, uy_hi = isub(pyl, pyh, a1, a1)
+        s_lo, s_hi = _det(ux_lo, ux_hi, uy_lo, uy_hi, exl, exh, eyl, eyh)
+        f_lo, f_hi = -s_hi, -s_lo
+        if not f_hi > 0.0:  # no candidate
+            continue
+        perp_lo, perp_hi = idiv(f_lo, f_hi, w[_LEN], w[_LEN + 1])
+        ax_lo, ax_hi = isub(a0, a0, pxl, pxh)
+        ay_lo, ay_hi = isub(a1, a1, pyl, pyh)
+        bx_lo, bx_hi = isub(b0, b0, pxl, pxh)
+        by_lo, by_hi = isub(b1, b1, pyl, pyh)
+        da_lo, da_hi = _norm(ax_lo, ax_hi, ay_lo, ay_hi)
+        db_lo, db_hi = _norm(bx_lo, bx_hi, by_lo, by_hi)
+        if min(min(da_lo, db_lo), perp_lo) > y_hi:
+            continue
+        sure_front = f_lo > 0.0
+        # In-cone determinants of the end points: det(right, p - apex), det(p - apex, left).
+        ra_lo, ra_hi = _det(r0l, r0h, r1l, r1h, ax_lo, ax_hi, ay_lo, ay_hi)
+        al_lo, al_hi = _det(ax_lo, ax_hi, ay_lo, ay_hi, l0l, l0h, l1l, l1h)
+        rb_lo, rb_hi = _det(r0l, r0h, r1l, r1h, bx_lo, bx_hi, by_lo, by_hi)
+        bl_lo, bl_hi = _det(bx_lo, bx_hi, by_lo, by_hi, l0l, l0h, l1l, l1h)
+        # The end points a and b.
+        if min(ra_hi, al_hi) >= 0.0:
+            lo = min(lo, da_lo)
+            if sure_front and min(ra_lo, al_lo) >= 0.0:
+                hi = min(hi, da_hi)
+        if min(rb_hi, bl_hi) >= 0.0:
+            lo = min(lo, db_lo)
+            if sure_front and min(rb_lo, bl_lo) >= 0.0:
+                hi = min(hi, db_hi)
+        # The foot of the perpendicular: dot(apex - a, e) >= 0, dot(b - apex, e) >= 0, and
+        # the inward normal in the cone.
+        p_lo, p_hi = imul(-ax_hi, -ax_lo, exl, exh)
+        q_lo, q_hi = imul(-ay_hi, -ay_lo, eyl, eyh)
+        t1_lo, t1_hi = iadd(p_lo, p_hi, q_lo, q_hi)
+        p_lo, p_hi = imul(bx_lo, bx_hi, exl, exh)
+        q_lo, q_hi = imul(by_lo, by_hi, eyl, eyh)
+        t2_lo, t2_hi = iadd(p_lo, p_hi, q_lo, q_hi)
+        if t1_hi >= 0.0 and t2_hi >= 0.0:
+            nx_lo, nx_hi, ny_lo, ny_hi = w[_INX], w[_INX + 1], w[_INY], w[_INY + 1]
+            cr_lo, cr_hi = _det(r0l, r0h, r1l, r1h, nx_lo, nx_hi, ny_lo, ny_hi)
+            cl_lo, cl_hi = _det(nx_lo, nx_hi, ny_lo, ny_hi, l0l, l0h, l1l, l1h)
+            if min(cr_hi, cl_hi) >= 0.0:
+                lo = min(lo, perp_lo)
+                if sure_front and t1_lo >= 0.0 and t2_lo >= 0.0 and min(cr_lo, cl_lo) >= 0.0:
+                    hi = min(hi, perp_hi)
+        # The hits of the cone's edge rays u: margins det(a - apex, u) and det(u, b - apex).
+        for k in range(2):
+            if k == 0:  # right: det(a, r) = -det(r, a); det(r, b)
+                u0l, u0h, u1l, u1h = r0l, r0h, r1l, r1h
+                m1_lo, m1_hi, m2_lo, m2_hi = -ra_hi, -ra_lo, rb_lo, rb_hi
+            else:  # left: det(a, l); det(l, b) = -det(b, l)
+                u0l, u0h, u1l, u1h = l0l, l0h, l1l, l1h
+                m1_lo, m1_hi, m2_lo, m2_hi = al_lo, al_hi, -bl_hi, -bl_lo
+            if m1_hi >= 0.0 and m2_hi >= 0.0:
+                to_lo, to_hi = _det(u0l, u0h, u1l, u1h, exl, exh, eyl, eyh)
+                if to_hi > 0.0:
+                    q_lo, q_hi = idiv(f_lo, f_hi, to_lo, to_hi)
+                    if q_lo <= q_hi:  # not empty (toward = [0, 0])
+                        lo = min(lo, max(q_lo, perp_lo))
+                        if sure_front and to_lo > 0.0 and m1_lo >= 0.0 and m2_lo >= 0.0:
+                            hi = min(hi, max(q_hi, perp_hi))
+    return lo, hi
+
+
+@njit(cache=True)
+def _ranges(poses, walls, far, out):
+    """Fill ``out`` (m, t, 2) with every box's and sonar's range enclosure."""
+    for k in range(poses.shape[0]):
+        for i in range(poses.shape[1]):
+            out[k, i, 0], out[k, i, 1] = _range(poses[k, i], walls, far, -np.inf, np.inf)
+
+
+@njit(cache=True)
+def _relaxed(poses, walls, far, y_lo, y_hi, q, out):
+    """Fill ``out`` (m,) with the Tri of "at most q sonars inconsistent" per box.
+
+    Sonars are tested in order; a box is decided as soon as ``t - q`` are TRUE (TRUE), more
+    than ``q`` FALSE (FALSE), or neither can happen any more (UNKNOWN), as in
+    :func:`optbound.interval.relaxed._verdict`.
+    """
+    t = poses.shape[1]
+    for k in range(poses.shape[0]):
+        n_true = 0
+        n_false = 0
+        verdict = UNKNOWN
+        for i in range(t):
+            lo, hi = _range(poses[k, i], walls, far, y_lo[i], y_hi[i])
+            if lo >= y_lo[i] and hi <= y_hi[i]:
+                n_true += 1
+            elif hi < y_lo[i] or lo > y_hi[i]:
+                n_false += 1
+            left = t - i - 1
+            if n_true >= t - q:
+                verdict = TRUE
+                break
+            if n_false > q:
+                verdict = FALSE
+                break
+            if n_true + left < t - q and n_false + left <= q:
+                break
+        out[k] = verdict
+
+
+def range_bounds(world_table, params, far, x, y, theta) -> Interval:
+    """(m, t) range enclosures on 1-D coordinate intervals (the compiled ``range_inclusion``)."""
+    poses = pose_table(params, x, y, theta)
+    out = np.empty((*poses.shape[:2], 2))
+    _ranges(poses, world_table, far, out)
+    return Interval._make(out[..., 0], out[..., 1])
+
+
+def relaxed_tri(world_table, params, far, Y, q, x, y, theta) -> np.ndarray:
+    """Tri per box of "at most ``q`` of the t sonars disagree with their reading ``Y``"."""
+    poses = pose_table(params, x, y, theta)
+    out = np.empty(poses.shape[0], dtype=np.int8)
+    _relaxed(poses, world_table, far, Y[:, 0].copy(), Y[:, 1].copy(), q, out)
+    return out
+
+
+__all__ = ["pose_table", "range_bounds", "relaxed_tri", "wall_table"]
