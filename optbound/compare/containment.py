@@ -28,7 +28,31 @@ from optbound.compare._ellipsoid import as_ellipsoid, same_dim
 
 
 def max_level(outer, inner) -> float:
-    """Largest level ``(x - c_o)^T C_o^{-1} (x - c_o)`` over the inner ellipsoid (exact)."""
+    """Compute the largest level ``(x - c_o)^T C_o^{-1} (x - c_o)`` over the inner ellipsoid.
+
+    Parameters
+    ----------
+    outer, inner : Ellipsoid or result
+        Ellipsoids of one dimension, or results holding one (``.ellipsoid``).
+
+    Returns
+    -------
+    float
+        The maximum (in float64) of the outer ellipsoid's level over ``inner``; ``inner`` lies
+        in ``outer`` iff it is at most 1.
+
+    Raises
+    ------
+    ValueError
+        If an argument is not an ellipsoid or the dimensions differ.
+
+    Notes
+    -----
+    With ``L_o`` the Cholesky factor of ``C_o``, ``c = L_o^{-1}(c_i - c_o)`` and
+    ``K = L_o^{-1} L_i``, the maximum of ``|c + K u|^2`` over ``|u| <= 1`` is the trust-region
+    value ``min_{t > 0} t + lambda_max + |c|^2 + sum_j g_j^2 / (t + lambda_max - lambda_j)``
+    over the eigenpairs of ``K^T K`` (``g = V^T K^T c``), solved by Brent's method.
+    """
     outer, inner = as_ellipsoid("outer", outer), as_ellipsoid("inner", inner)
     same_dim(outer, inner)
     c = np.linalg.solve(outer.chol, inner.center - outer.center)
@@ -84,10 +108,28 @@ def contains(outer, inner, tol: float | None = None) -> bool:
         Relative slack on the level, >= 0. Default: ``ROUNDING_TOL`` (1e-9), or the
         ``accuracy`` of a result argument if larger.
 
+    Returns
+    -------
+    bool
+        ``max_level(outer, inner) <= 1 + tol``.
+
     Raises
     ------
     ValueError
-        If ``tol`` is negative or not finite.
+        If ``tol`` is negative or not finite, an argument is not an ellipsoid, or the
+        dimensions differ.
+
+    See Also
+    --------
+    optbound.compare.exact.ellipsoid_in_ellipsoid : the same question decided exactly.
+
+    Examples
+    --------
+    >>> from optbound.sets import Ellipsoid
+    >>> unit = Ellipsoid(np.zeros(2), np.eye(2))
+    >>> twice = Ellipsoid(np.zeros(2), 4 * np.eye(2))
+    >>> contains(twice, unit), contains(unit, twice)
+    (True, False)
     """
     if tol is None:
         tol = max(ROUNDING_TOL, *(getattr(b, "accuracy", 0.0) for b in (outer, inner)))

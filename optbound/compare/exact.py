@@ -22,7 +22,18 @@ _NELDER_MEAD = {"xatol": 1e-15, "fatol": 1e-18, "maxiter": 800}
 
 
 def fractions(values) -> list:
-    """A float array as nested lists of exact ``Fraction`` values."""
+    """Convert a float array to nested lists of exact ``Fraction`` values.
+
+    Parameters
+    ----------
+    values : array_like
+        Floats (any shape).
+
+    Returns
+    -------
+    Fraction or list
+        The exact value of each float, nested as the array (a scalar for 0-d input).
+    """
     arr = np.asarray(values, dtype=float)
     if arr.ndim == 0:
         return Fraction(float(arr))
@@ -30,7 +41,20 @@ def fractions(values) -> list:
 
 
 def solve(A: list[list[Fraction]], b: list[Fraction]) -> list[Fraction]:
-    """``A^{-1} b`` for a non-singular rational matrix (Gaussian elimination, exact)."""
+    """Solve ``A x = b`` for a non-singular rational matrix (Gaussian elimination, exact).
+
+    Parameters
+    ----------
+    A : list of list of Fraction
+        A square rational matrix.
+    b : list of Fraction
+        The right-hand side.
+
+    Returns
+    -------
+    list of Fraction
+        ``A^{-1} b``.
+    """
     n = len(b)
     M = [[*row, rhs] for row, rhs in zip(A, b, strict=True)]
     for k in range(n):
@@ -47,14 +71,36 @@ def solve(A: list[list[Fraction]], b: list[Fraction]) -> list[Fraction]:
 
 
 def inverse(A: list[list[Fraction]]) -> list[list[Fraction]]:
-    """Exact inverse of a non-singular rational matrix."""
+    """Invert a non-singular rational matrix exactly.
+
+    Parameters
+    ----------
+    A : list of list of Fraction
+        A square rational matrix.
+
+    Returns
+    -------
+    list of list of Fraction
+        ``A^{-1}``.
+    """
     n = len(A)
     cols = [solve(A, [Fraction(int(i == j)) for i in range(n)]) for j in range(n)]
     return [[cols[j][i] for j in range(n)] for i in range(n)]
 
 
 def determinant(A: list[list[Fraction]]) -> Fraction:
-    """Exact determinant of a rational matrix."""
+    """Compute the exact determinant of a rational matrix.
+
+    Parameters
+    ----------
+    A : list of list of Fraction
+        A square rational matrix.
+
+    Returns
+    -------
+    Fraction
+        ``det A`` (0 for a singular matrix).
+    """
     M = [list(row) for row in A]
     n, det = len(M), Fraction(1)
     for k in range(n):
@@ -76,6 +122,16 @@ def is_psd(A: list[list[Fraction]]) -> bool:
     """Whether a symmetric rational matrix is positive semidefinite (exact LDL^T).
 
     A zero pivot is allowed only with a zero remaining row (else the matrix is indefinite).
+
+    Parameters
+    ----------
+    A : list of list of Fraction
+        A symmetric rational matrix.
+
+    Returns
+    -------
+    bool
+        True iff ``A`` is positive semidefinite.
     """
     M = [list(row) for row in A]
     n = len(M)
@@ -103,7 +159,19 @@ def _quadratic_level(center, shape, x) -> Fraction:
 
 
 def member(S, x) -> bool:
-    """Exact membership of the float point ``x`` (n,) in an optbound set or a Paving.
+    """Decide exactly whether the float point ``x`` (n,) is in an optbound set or a Paving.
+
+    Parameters
+    ----------
+    S : Box, Ellipsoid, Strip, Halfspace, PseudoEllipsoid or Paving
+        The set (a Paving: its ``inner ∪ boundary``).
+    x : array_like, shape (n,)
+        The point, its floats read as exact numbers.
+
+    Returns
+    -------
+    bool
+        Membership decided in rational arithmetic.
 
     Raises
     ------
@@ -166,6 +234,16 @@ def ellipsoid_in_ellipsoid(outer: Ellipsoid, inner: Ellipsoid) -> bool:
     constraint). ``tau`` is found in floats (the maximiser of the smallest eigenvalue, a
     concave function of tau); the semidefiniteness is then checked in rational arithmetic,
     so True is a proof. False means no proof was found.
+
+    Parameters
+    ----------
+    outer, inner : Ellipsoid
+        The two ellipsoids.
+
+    Returns
+    -------
+    bool
+        True if ``inner ⊂ outer`` is proven.
     """
     if outer.dim != inner.dim:
         return False
@@ -202,6 +280,19 @@ def box_in(outer, inner: Box) -> bool:
 
     A Box: corner comparisons; an Ellipsoid (convex): every corner of ``inner`` has an exact
     level <= 1.
+
+    Parameters
+    ----------
+    outer : Box or Ellipsoid
+        The containing set.
+    inner : Box
+        The contained box.
+
+    Returns
+    -------
+    bool
+        True if ``inner ⊂ outer`` is proven; False for an unbounded box, a dimension mismatch
+        or another ``outer`` type.
     """
     if not inner.is_bounded or inner.dim != outer.dim:
         return False
@@ -217,8 +308,23 @@ def box_in(outer, inner: Box) -> bool:
 
 
 def ellipsoid_in_box(outer: Box, inner: Ellipsoid) -> bool:
-    """Proof of ``inner ⊂ outer``: ``lo_j <= c_j - sqrt(C_jj)`` and ``c_j + sqrt(C_jj) <= hi_j``
-    for every j, squared and checked in exact arithmetic."""
+    """Prove ``inner ⊂ outer`` for an ellipsoid inside a box, in exact arithmetic.
+
+    The test is ``lo_j <= c_j - sqrt(C_jj)`` and ``c_j + sqrt(C_jj) <= hi_j`` for every j,
+    squared.
+
+    Parameters
+    ----------
+    outer : Box
+        The containing box (may be unbounded).
+    inner : Ellipsoid
+        The contained ellipsoid.
+
+    Returns
+    -------
+    bool
+        True iff ``inner ⊂ outer`` (False on a dimension mismatch).
+    """
     if outer.dim != inner.dim:
         return False
     for j in range(inner.dim):
@@ -277,6 +383,25 @@ def ellipsoid_contains_intersection(outer: Ellipsoid, E: Ellipsoid, cuts) -> boo
     eigenvalue, Nelder-Mead on their logarithms) and the semidefiniteness is checked in
     rational arithmetic, so True is a proof; False means no proof was found (a bound that
     touches the set with no margin is usually not proven this way).
+
+    Parameters
+    ----------
+    outer : Ellipsoid
+        The containing ellipsoid.
+    E : Ellipsoid
+        The ellipsoid intersected.
+    cuts : sequence of Strip or Halfspace
+        The strips and half-spaces intersected.
+
+    Returns
+    -------
+    bool
+        True if ``E ∩ cuts ⊂ outer`` is proven.
+
+    References
+    ----------
+    .. [BEFB94] S. Boyd, L. El Ghaoui, E. Feron, V. Balakrishnan, "Linear Matrix Inequalities in
+       System and Control Theory", SIAM, 1994.
     """
     from scipy.optimize import minimize
 
@@ -311,11 +436,24 @@ def ellipsoid_contains_intersection(outer: Ellipsoid, E: Ellipsoid, cuts) -> boo
 
 
 def contains_intersection(outer, parts) -> bool:
-    """Exact proof that the intersection of the optbound sets ``parts`` (one set alone is
-    accepted) lies in ``outer``: some Box / Ellipsoid part inside ``outer``
-    (:func:`contains_set`), or, for an Ellipsoid ``outer`` and parts made of one Ellipsoid
-    and strips / half-spaces, the S-procedure (:func:`ellipsoid_contains_intersection`).
-    False means no proof was found."""
+    """Prove exactly that the intersection of the optbound sets ``parts`` lies in ``outer``.
+
+    Some Box / Ellipsoid part inside ``outer`` (:func:`contains_set`), or, for an Ellipsoid
+    ``outer`` and parts made of one Ellipsoid and strips / half-spaces, the S-procedure
+    (:func:`ellipsoid_contains_intersection`).
+
+    Parameters
+    ----------
+    outer : Box or Ellipsoid
+        The containing set.
+    parts : set or sequence of sets
+        The sets intersected (one set alone is accepted).
+
+    Returns
+    -------
+    bool
+        True if the containment is proven; False means no proof was found.
+    """
     parts = list(parts) if isinstance(parts, (list, tuple)) else [parts]
     if any(contains_set(outer, part) for part in parts):
         return True
@@ -330,6 +468,25 @@ def contains_set(outer, inner) -> bool:
     """Exact closed-form proof that the optbound set ``inner`` lies in ``outer``.
 
     Supported pairs: Ellipsoid/Box inside Ellipsoid/Box; False (no proof) for any other pair.
+
+    Parameters
+    ----------
+    outer : Box or Ellipsoid
+        The containing set.
+    inner : Box or Ellipsoid
+        The contained set.
+
+    Returns
+    -------
+    bool
+        True if ``inner ⊂ outer`` is proven.
+
+    Examples
+    --------
+    >>> from optbound.sets import Box, Ellipsoid
+    >>> disc = Ellipsoid(np.zeros(2), np.eye(2))
+    >>> contains_set(Box([-1, -1], [1, 1]), disc), contains_set(disc, Box([-1, -1], [1, 1]))
+    (True, False)
     """
     if isinstance(inner, Box):
         return box_in(outer, inner)

@@ -48,9 +48,10 @@ STATUSES = ("proven", "refuted", "undecided")
 class Containment:
     """Outcome of :func:`prove_contains`.
 
-    Attributes
+    Parameters
     ----------
     status : {"proven", "refuted", "undecided"}
+        The answer.
     counterexample : np.ndarray or None
         For "refuted": a float point of the set that the bound excludes.
     method : str
@@ -81,6 +82,8 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
     Returns
     -------
     Containment
+        ``"proven"`` (with the floats read as exact numbers), ``"refuted"`` (with a
+        counterexample) or ``"undecided"``, and the method that decided.
 
     Raises
     ------
@@ -89,6 +92,15 @@ def prove_contains(outer, inner, *, member: Callable | None = None) -> Containme
         ``outer`` has neither an interval test nor ``contains``.
     ValueError
         If the dimensions differ.
+
+    Examples
+    --------
+    >>> from optbound.interval import sivia
+    >>> disc = sivia(lambda x, y: (x**2 + y**2,), [[-np.inf, 1]], [[-2, 2], [-2, 2]], 0.05)
+    >>> prove_contains(Box([-1.1, -1.1], [1.1, 1.1]), disc).status
+    'proven'
+    >>> prove_contains(Box([-0.9, -0.9], [0.9, 0.9]), disc).status
+    'refuted'
     """
     outer = bound_set(outer)
     dim = getattr(outer, "dim", None)
@@ -200,7 +212,19 @@ def _excluded(outer, X: np.ndarray, prefilter_only: bool = False) -> np.ndarray:
 
 
 def checked_contains(S, X: np.ndarray) -> np.ndarray:
-    """``S.contains(X)`` for a user object, checked to be one boolean per point.
+    """Call ``S.contains(X)`` for a user object and check it gives one boolean per point.
+
+    Parameters
+    ----------
+    S : object
+        A user set with a vectorized ``contains(X)``.
+    X : numpy.ndarray, shape (m, n)
+        The points.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (m,)
+        ``S.contains(X)``.
 
     Raises
     ------

@@ -51,12 +51,25 @@ def size_bracket(S, *, eps: float | None = None, domain=None) -> tuple[float, fl
         Where to pave a user object (required for it) or a ``PseudoEllipsoid`` (default: its
         bounding box).
 
+    Returns
+    -------
+    lo, hi : float
+        Bounds of the volume of ``S`` (``hi = inf`` when a paved set reaches the domain's
+        border).
+
     Raises
     ------
     TypeError
         If ``S`` has no certified size measure (e.g. only a ``contains`` method).
     ValueError
         If a user object is given without ``domain``, or the domain's dimension differs.
+
+    Examples
+    --------
+    >>> from optbound.sets import Ellipsoid
+    >>> lo, hi = size_bracket(Ellipsoid(np.zeros(2), np.eye(2)))
+    >>> bool(lo < hi), bool(lo <= np.pi <= hi)
+    (True, True)
     """
     S = bound_set(S)
     if isinstance(S, Box):

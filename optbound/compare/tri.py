@@ -34,7 +34,21 @@ _PAIRS = 2_000_000
 
 
 def tri_test(S) -> Test:
-    """The interval membership test of ``S`` on ``Interval`` coordinates (module docstring).
+    """Build the interval membership test of ``S`` on ``Interval`` coordinates.
+
+    See the module docstring for what each type's test proves.
+
+    Parameters
+    ----------
+    S : set
+        An optbound set (``Box``, ``Strip``, ``Halfspace``, ``Ellipsoid``,
+        ``PseudoEllipsoid``), a ``Paving``, or an object with ``tri_contains(boxes)``.
+
+    Returns
+    -------
+    callable
+        ``test(*coords)`` returning a :class:`~optbound.interval.Tri` per box: TRUE if the box
+        is proven inside ``S``, FALSE if proven disjoint, UNKNOWN otherwise.
 
     Raises
     ------
@@ -62,13 +76,53 @@ def tri_test(S) -> Test:
 
 
 def tri_contains(S, boxes: np.ndarray) -> np.ndarray:
-    """``tri_test(S)`` on an ``(m, n, 2)`` array of boxes."""
+    """Evaluate ``tri_test(S)`` on an ``(m, n, 2)`` array of boxes.
+
+    Parameters
+    ----------
+    S : set
+        As in :func:`tri_test`.
+    boxes : array_like, shape (m, n, 2)
+        Rows ``[lo, hi]`` of each box.
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        :class:`~optbound.interval.Tri` per box.
+
+    Raises
+    ------
+    TypeError
+        If ``S`` has no interval membership test.
+
+    Examples
+    --------
+    >>> from optbound.sets import Ellipsoid
+    >>> disc = Ellipsoid(np.zeros(2), np.eye(2))
+    >>> boxes = [[[-0.1, 0.1], [-0.1, 0.1]], [[2, 3], [2, 3]], [[0.5, 1.5], [0, 0.1]]]
+    >>> from optbound.interval import Tri
+    >>> [Tri(t).name for t in tri_contains(disc, boxes)]
+    ['TRUE', 'FALSE', 'UNKNOWN']
+    """
     B = np.asarray(boxes, dtype=float)
     return as_tri(tri_test(S)(*(Interval(B[:, j, 0], B[:, j, 1]) for j in range(B.shape[1]))))
 
 
 def point_test(test: Test, X: np.ndarray) -> np.ndarray:
-    """A box test on the float points ``X`` (m, n), read as degenerate boxes."""
+    """Evaluate a box test on the float points ``X``, read as degenerate boxes.
+
+    Parameters
+    ----------
+    test : callable
+        A three-valued test on ``Interval`` coordinates.
+    X : array_like, shape (m, n)
+        The points.
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        :class:`~optbound.interval.Tri` per point.
+    """
     X = np.asarray(X, dtype=float)
     return as_tri(test(*(Interval(X[:, j]) for j in range(X.shape[1]))))
 
@@ -79,7 +133,18 @@ def _identity(dim: int) -> PolynomialLifting:
 
 
 def as_pseudo_ellipsoid(E: Ellipsoid) -> PseudoEllipsoid:
-    """``E`` as the pseudo-ellipsoid of the identity lifting (the same set)."""
+    """Represent ``E`` as the pseudo-ellipsoid of the identity lifting (the same set).
+
+    Parameters
+    ----------
+    E : Ellipsoid
+        The ellipsoid.
+
+    Returns
+    -------
+    PseudoEllipsoid
+        The same set, with the pseudo-ellipsoid's interval tests.
+    """
     return PseudoEllipsoid.from_ellipsoid(_identity(E.dim), E)
 
 

@@ -53,10 +53,22 @@ def _codac_vector(codac, lo: np.ndarray, hi: np.ndarray):
 
 
 def to_codac(x):
-    """The codac object of an ``Interval``, a ``Box`` or a ``Paving`` (table above).
+    """Convert an ``Interval``, a ``Box`` or a ``Paving`` to its codac object (table above).
+
+    Parameters
+    ----------
+    x : Interval, Box or Paving
+        The optbound object.
+
+    Returns
+    -------
+    codac.Interval, codac.IntervalVector, list or dict
+        The codac object (see the module table).
 
     Raises
     ------
+    ImportError
+        If codac 2 is not installed.
     TypeError
         For any other type, or an ``Interval`` of more than two dimensions.
     """
@@ -86,7 +98,20 @@ def _bounds(interval) -> tuple[float, float]:
 
 
 def codac_boxes(vectors, n: int | None = None) -> np.ndarray:
-    """``(m, n, 2)`` box array of a list of ``codac.IntervalVector`` (``n`` for m = 0)."""
+    """Convert a list of ``codac.IntervalVector`` to an ``(m, n, 2)`` box array.
+
+    Parameters
+    ----------
+    vectors : list of codac.IntervalVector
+        The m boxes.
+    n : int, optional
+        The dimension, used only when the list is empty.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m, n, 2)
+        Rows ``[lo, hi]``; ``[+inf, -inf]`` for empty intervals.
+    """
     rows = [[_bounds(v[i]) for i in range(v.size())] for v in vectors]
     if not rows:
         return np.empty((0, n or 0, 2))
@@ -94,8 +119,7 @@ def codac_boxes(vectors, n: int | None = None) -> np.ndarray:
 
 
 def from_codac(obj, eps: float | None = None):
-    """The optbound object of a codac ``Interval``, ``IntervalVector``, list of them, or
-    ``PavingInOut``.
+    """Convert a codac ``Interval``, ``IntervalVector``, list of them or ``PavingInOut``.
 
     Parameters
     ----------
@@ -105,8 +129,15 @@ def from_codac(obj, eps: float | None = None):
         For a paving: its bisection threshold (codac does not store it). Default: the
         widest side of its largest boundary box.
 
+    Returns
+    -------
+    Interval or Paving
+        An ``Interval`` of shape (), (n,) or (m, n), or a ``Paving``.
+
     Raises
     ------
+    ImportError
+        If codac 2 is not installed.
     TypeError
         For any other type.
     """

@@ -47,12 +47,23 @@ _LIBM = _libm()
 
 
 def get_rounding() -> int | None:
-    """The current rounding mode as ``fegetround`` reports it (None without a C library)."""
+    """Return the current rounding mode as ``fegetround`` reports it.
+
+    Returns
+    -------
+    int or None
+        The mode; None without a C library.
+    """
     return None if _LIBM is None else int(_LIBM.fegetround())
 
 
 def set_rounding(mode: int) -> None:
     """Set the rounding mode (a ``fegetround`` value); a no-op without a C library.
+
+    Parameters
+    ----------
+    mode : int
+        A value of ``fegetround`` (e.g. ``FE_TONEAREST``).
 
     Raises
     ------
@@ -83,7 +94,18 @@ def round_to_nearest() -> Iterator[None]:
 
 
 def nearest(fn: F) -> F:
-    """Decorator: run ``fn`` inside :func:`round_to_nearest`."""
+    """Decorate ``fn`` to run inside :func:`round_to_nearest`.
+
+    Parameters
+    ----------
+    fn : callable
+        The function.
+
+    Returns
+    -------
+    callable
+        ``fn`` wrapped (same signature and metadata).
+    """
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):

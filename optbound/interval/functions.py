@@ -62,22 +62,86 @@ def _partial_of(xs, new):
 
 
 def add(a, b) -> Interval:
-    """``a + b``."""
+    """Compute ``a + b``, rounded outward.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{x + y : x in a, y in b}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.add, a, b)
 
 
 def subtract(a, b) -> Interval:
-    """``a - b``."""
+    """Compute ``a - b``, rounded outward.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{x - y : x in a, y in b}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.sub, a, b)
 
 
 def negative(a) -> Interval:
-    """``-a`` (exact)."""
+    """Compute ``-a`` (exact).
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``[-hi, -lo]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.neg, a)
 
 
 def multiply(a, b) -> Interval:
-    """``a * b``; a scalar factor takes a two-product shortcut."""
+    """Compute ``a * b``, rounded outward; a scalar factor takes a two-product shortcut.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{x y : x in a, y in b}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     if not isinstance(a, Interval) and np.ndim(a) == 0:
         a, b = b, a
     if not isinstance(b, Interval) and np.ndim(b) == 0:
@@ -91,14 +155,47 @@ def _contains_zero(lo, hi):
 
 
 def divide(a, b) -> Interval:
-    """``a / b``; see :func:`optbound.interval._arith.div` for divisors containing 0."""
+    """Compute ``a / b``; see :func:`optbound.interval._arith.div` for divisors containing 0.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of the quotient set (its hull for a divisor containing 0; empty for a
+        divisor ``[0, 0]``).
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(
         _arith.div, a, b, may_empty=True, domain=lambda al, ah, bl, bh: _contains_zero(bl, bh)
     )
 
 
 def sqr(a) -> Interval:
-    """``a**2`` (tight: ``sqr([-1, 2]) = [0, 4]``, unlike ``a * a = [-2, 4]``)."""
+    """Compute ``a**2`` (tight: ``sqr([-1, 2]) = [0, 4]``, unlike ``a * a = [-2, 4]``).
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{x^2 : x in a}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.sqr, a)
 
 
@@ -114,7 +211,25 @@ def _integer_exponent(n) -> int:
 
 
 def power(a, n) -> Interval:
-    """Integer power ``a**n``; negative ``n`` gives ``1 / a**|n|``."""
+    """Compute the integer power ``a**n``; negative ``n`` gives ``1 / a**|n|``.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+    n : int
+        The exponent (an integral float is accepted).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{x^n : x in a}`` (for ``n < 0`` its hull where ``a`` contains 0).
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is not an integer, or an operand holds a non-finite point.
+    """
     k = _integer_exponent(n)
     if k < 0:
         return _lift(_arith.power, a, n=k, may_empty=True, domain=_contains_zero)
@@ -122,46 +237,214 @@ def power(a, n) -> Interval:
 
 
 def sqrt(a) -> Interval:
-    """Square root on its domain: ``sqrt([-1, 4]) = [0, 2]``; empty where ``a < 0``."""
+    """Compute the square root on its domain: ``sqrt([-1, 4]) = [0, 2]``; empty where ``a < 0``.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of sqrt over ``a ∩ [0, inf)``, flagged partial where ``a`` leaves the domain.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.sqrt, a, may_empty=True, domain=lambda lo, hi: lo < 0.0)
 
 
 def exp(a) -> Interval:
+    """Compute the exponential, rounded outward.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{e^x : x in a}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.exp, a)
 
 
 def log(a) -> Interval:
-    """Natural log on its domain: ``log([0, 1]) = [-inf, 0]``; empty where ``a <= 0``."""
+    """Compute the natural log on its domain: ``log([0, 1]) = [-inf, 0]``; empty where ``a <= 0``.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of log over ``a ∩ (0, inf)``, flagged partial where ``a`` leaves the domain.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.log, a, may_empty=True, domain=lambda lo, hi: lo <= 0.0)
 
 
 def sin(a) -> Interval:
+    """Compute the sine, rounded outward.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{sin x : x in a}``, within ``[-1, 1]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.sin, a)
 
 
 def cos(a) -> Interval:
+    """Compute the cosine, rounded outward.
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{cos x : x in a}``, within ``[-1, 1]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.cos, a)
 
 
 def atan2(y, x) -> Interval:
-    """Angle of ``(x, y)`` in ``[-pi, pi]``; boxes meeting the negative x axis give all of it."""
+    """Compute the angle of ``(x, y)`` in ``[-pi, pi]``, rounded outward.
+
+    Boxes meeting the negative x axis give all of ``[-pi, pi]``.
+
+    Parameters
+    ----------
+    y, x : Interval or array_like
+        Coordinates, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        An enclosure of ``{atan2(v, u) : v in y, u in x}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_transcendental.atan2, y, x)
 
 
 def absolute(a) -> Interval:
+    """Compute ``|a|`` (exact).
+
+    Parameters
+    ----------
+    a : Interval or array_like
+        Operand (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``{|x| : x in a}``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.absolute, a)
 
 
 def minimum(a, b) -> Interval:
+    """Compute the elementwise minimum of ``a`` and ``b`` (exact).
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``[min(a.lo, b.lo), min(a.hi, b.hi)]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.minimum, a, b)
 
 
 def maximum(a, b) -> Interval:
+    """Compute the elementwise maximum of ``a`` and ``b`` (exact).
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``[max(a.lo, b.lo), max(a.hi, b.hi)]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _lift(_arith.maximum, a, b)
 
 
 def hull(a, b) -> Interval:
-    """Smallest interval containing both (empty is the neutral element)."""
+    """Compute the smallest interval containing both (empty is the neutral element).
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``[min(a.lo, b.lo), max(a.hi, b.hi)]``.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     a, b = as_interval(a), as_interval(b)
     # The empty encoding (+inf, -inf) makes plain min/max correct without masking.
     return Interval._make(
@@ -173,7 +456,23 @@ def hull(a, b) -> Interval:
 
 
 def intersection(a, b) -> Interval:
-    """Intersection; disjoint pairs give empty entries (see :attr:`Interval.is_empty`)."""
+    """Intersect ``a`` and ``b``; disjoint pairs give empty entries (see :attr:`Interval.is_empty`).
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    Interval
+        ``[max(a.lo, b.lo), min(a.hi, b.hi)]``, empty where that is not an interval.
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     a, b = as_interval(a), as_interval(b)
     lo, hi = np.maximum(a.lo, b.lo), np.minimum(a.hi, b.hi)
     empty = lo > hi
@@ -204,22 +503,86 @@ def _compare(a, b, strict: bool) -> np.ndarray:
 
 
 def less(a, b) -> np.ndarray:
-    """Tri ``a < b``: TRUE if every pair satisfies it, FALSE if none does."""
+    """Compare ``a < b``: TRUE if every pair satisfies it, FALSE if none does.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    numpy.ndarray of int8
+        :class:`Tri` per entry (never TRUE on partial entries, FALSE where either is empty).
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _compare(a, b, strict=True)
 
 
 def less_equal(a, b) -> np.ndarray:
-    """Tri ``a <= b``."""
+    """Compare ``a <= b``: TRUE if every pair satisfies it, FALSE if none does.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    numpy.ndarray of int8
+        :class:`Tri` per entry (never TRUE on partial entries, FALSE where either is empty).
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _compare(a, b, strict=False)
 
 
 def greater(a, b) -> np.ndarray:
-    """Tri ``a > b``."""
+    """Compare ``a > b``: TRUE if every pair satisfies it, FALSE if none does.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    numpy.ndarray of int8
+        :class:`Tri` per entry (never TRUE on partial entries, FALSE where either is empty).
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _compare(b, a, strict=True)
 
 
 def greater_equal(a, b) -> np.ndarray:
-    """Tri ``a >= b``."""
+    """Compare ``a >= b``: TRUE if every pair satisfies it, FALSE if none does.
+
+    Parameters
+    ----------
+    a, b : Interval or array_like
+        Operands, broadcast together (finite points are read as point intervals).
+
+    Returns
+    -------
+    numpy.ndarray of int8
+        :class:`Tri` per entry (never TRUE on partial entries, FALSE where either is empty).
+
+    Raises
+    ------
+    ValueError
+        If an operand holds a non-finite point.
+    """
     return _compare(b, a, strict=False)
 
 

@@ -44,6 +44,18 @@ class Interval:
     ``[1, 2] / [0, 1] = [1, +inf]``, ``[1, 2] / [-1, 1] = [-inf, +inf]``) and is empty for a
     divisor ``[0, 0]``. Comparisons ``<, <=, >, >=`` return :class:`~optbound.interval.Tri`
     arrays (TRUE / FALSE / UNKNOWN); ``==`` is not overloaded.
+
+    Examples
+    --------
+    Bounds are rounded outward, so the exact range is enclosed with a float to spare:
+
+    >>> X = Interval([1.0, -1.0], [2.0, 4.0])
+    >>> Y = X * X
+    >>> Y.lo.tolist(), Y.hi.tolist()
+    ([0.9999999999999998, -4.000000000000001], [4.000000000000001, 16.000000000000004])
+    >>> Z = np.sqrt(Interval(-1.0, 4.0))
+    >>> float(Z.lo), float(Z.hi), bool(Z.partial)
+    (0.0, 2.0000000000000004, True)
     """
 
     __slots__ = ("_maybe_empty", "_partial", "hi", "lo")
@@ -126,7 +138,13 @@ class Interval:
         return np.broadcast_to(flags, self.shape) | self.is_empty
 
     def width(self) -> np.ndarray:
-        """``hi - lo`` rounded up (an upper bound of the true width); 0 for empty entries."""
+        """Return ``hi - lo`` rounded up (an upper bound of the true width).
+
+        Returns
+        -------
+        numpy.ndarray
+            The widths, 0 for empty entries.
+        """
         with np.errstate(invalid="ignore"):
             w = np.nextafter(self.hi - self.lo, INF)
         return np.where(self.is_empty, 0.0, w)
@@ -134,7 +152,16 @@ class Interval:
     def midpoint(self) -> np.ndarray:
         """A point inside each interval near its centre (finite even for unbounded ones).
 
-        Raises ``ValueError`` if any entry is empty: an empty set has no midpoint.
+        Returns
+        -------
+        numpy.ndarray
+            ``(lo + hi) / 2`` clipped to ``[lo, hi]``, infinite bounds replaced by the largest
+            float.
+
+        Raises
+        ------
+        ValueError
+            If any entry is empty: an empty set has no midpoint.
         """
         if np.any(self.is_empty):
             raise ValueError("midpoint of an empty interval is undefined")
@@ -143,11 +170,39 @@ class Interval:
         return np.clip(0.5 * lo + 0.5 * hi, lo, hi)  # halves first: no overflow
 
     def contains(self, x) -> np.ndarray:
-        """Whether each point ``x`` lies in the corresponding interval."""
+        """Test whether each point ``x`` lies in the corresponding interval.
+
+        Parameters
+        ----------
+        x : array_like
+            Points, broadcastable to the interval's shape.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            ``lo <= x <= hi`` elementwise (False on empty entries).
+        """
         return (self.lo <= x) & (x <= self.hi)
 
     def subset_of(self, other) -> np.ndarray:
-        """Whether each interval is included in ``other`` (empty is a subset of everything)."""
+        """Test whether each interval is included in ``other``.
+
+        Parameters
+        ----------
+        other : Interval or array_like
+            Intervals, or finite points read as point intervals.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            ``other.lo <= lo`` and ``hi <= other.hi`` elementwise; True on empty entries (empty
+            is a subset of everything).
+
+        Raises
+        ------
+        ValueError
+            If ``other`` holds non-finite points.
+        """
         other = as_interval(other, "other")
         return self.is_empty | ((other.lo <= self.lo) & (self.hi <= other.hi))
 
@@ -211,6 +266,23 @@ def as_interval(x, name: str = "operand") -> Interval:
     """``x`` itself if it is an ``Interval``, else the point intervals ``[x, x]``.
 
     Points must be finite: ``[inf, inf]`` is not an interval of reals.
+
+    Parameters
+    ----------
+    x : Interval or array_like
+        Intervals, or points.
+    name : str
+        The argument's name in the error message.
+
+    Returns
+    -------
+    Interval
+        ``x`` unchanged, or the point intervals of ``x``.
+
+    Raises
+    ------
+    ValueError
+        If ``x`` holds a non-finite point.
     """
     if isinstance(x, Interval):
         return x

@@ -17,12 +17,36 @@ _PAIR_CHUNK = 4_000_000
 
 
 def box_volumes(boxes: np.ndarray) -> np.ndarray:
-    """Volume of each box of an ``(m, n, 2)`` array."""
+    """Compute the volume of each box of an ``(m, n, 2)`` array.
+
+    Parameters
+    ----------
+    boxes : numpy.ndarray, shape (m, n, 2)
+        Rows ``[lo, hi]`` of each box.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m,)
+        ``prod(hi - lo)`` of each box, in floating point (not rounded outward).
+    """
     return np.prod(boxes[:, :, 1] - boxes[:, :, 0], axis=1)
 
 
 class Paving:
     """Inner, boundary and outside boxes of a set within the initial box ``X0``.
+
+    Parameters
+    ----------
+    inner : numpy.ndarray, shape (m1, n, 2)
+        Boxes proven inside the set.
+    boundary : numpy.ndarray, shape (m2, n, 2)
+        Undetermined boxes (widest side at most ``eps``).
+    outside : numpy.ndarray, shape (m3, n, 2)
+        Boxes proven disjoint from the set.
+    X0 : Box
+        The initial box.
+    eps : float
+        The bisection threshold.
 
     Attributes
     ----------
@@ -32,6 +56,10 @@ class Paving:
         ``inner ∪ boundary``.
     X0
         The initial box; ``eps`` the bisection threshold.
+
+    Notes
+    -----
+    ``inner ⊂ X ⊂ inner ∪ boundary`` [LJMW97, eq. (11)].
     """
 
     def __init__(self, inner, boundary, outside, X0: Box, eps: float):
@@ -48,16 +76,34 @@ class Paving:
         return self.inner.shape[0] == 0 and self.boundary.shape[0] == 0
 
     def outer(self) -> np.ndarray:
-        """``inner ∪ boundary``: boxes whose union contains the set (codac's ``outer``)."""
+        """Return ``inner ∪ boundary``: boxes whose union contains the set (codac's ``outer``).
+
+        Returns
+        -------
+        numpy.ndarray, shape (m, n, 2)
+            The inner boxes followed by the boundary boxes.
+        """
         return np.concatenate([self.inner, self.boundary])
 
     def volume_bounds(self) -> tuple[float, float]:
-        """``(vol(inner), vol(inner) + vol(boundary))``, bracketing the set's volume."""
+        """Bracket the set's volume by ``(vol(inner), vol(inner) + vol(boundary))``.
+
+        Returns
+        -------
+        lower, upper : float
+            Total volume of the inner boxes, and of the inner and boundary boxes.
+        """
         v_in = float(box_volumes(self.inner).sum())
         return v_in, v_in + float(box_volumes(self.boundary).sum())
 
     def hull(self) -> Box | None:
-        """Smallest box containing ``inner ∪ boundary``; ``None`` if the set is proven empty."""
+        """Return the smallest box containing ``inner ∪ boundary``.
+
+        Returns
+        -------
+        Box or None
+            The hull of the outer boxes; ``None`` if the set is proven empty.
+        """
         if self.is_empty:
             return None
         boxes = self.outer()
@@ -69,6 +115,11 @@ class Paving:
         Boxes that touch (share a face, edge or corner) are connected [LJMW97, Sect. 4: the
         components Q1, Q2 are the localization hypotheses]. Each component is a ``Paving``
         with its own inner and boundary boxes (and no outside boxes).
+
+        Returns
+        -------
+        list of Paving
+            One paving per component, sorted by decreasing outer volume.
         """
         boxes = self.outer()
         n_inner = self.inner.shape[0]
@@ -88,7 +139,22 @@ class Paving:
         return sorted(parts, key=lambda p: -p.volume_bounds()[1])
 
     def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
-        """Draw the paving (or its projection on ``dims``); see :func:`plot_paving`."""
+        """Draw the paving (or its projection on ``dims``); see :func:`plot_paving`.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; a new figure if None.
+        dims : tuple of int
+            The two axes drawn.
+        **kwargs
+            Passed to :func:`~optbound.interval.plot.plot_paving` (``show_outside``).
+
+        Returns
+        -------
+        matplotlib.axes.Axes
+            The axes drawn on.
+        """
         from optbound.interval.plot import plot_paving
 
         return plot_paving(self, ax=ax, dims=dims, **kwargs)

@@ -26,7 +26,28 @@ def plot_paving(paving, ax=None, dims: tuple[int, int] = (0, 1), show_outside: b
     """Draw inner (red), boundary (yellow) and, in 2-D, outside (blue) boxes.
 
     For ``n > 2`` the boxes are projected on ``dims``; projected outside boxes may overlap the
-    projection of the set, so they are hidden by default there. Returns the axes.
+    projection of the set, so they are hidden by default there.
+
+    Parameters
+    ----------
+    paving : Paving
+        The paving drawn.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new figure if None.
+    dims : tuple of int
+        The two axes drawn (projection for ``n > 2``).
+    show_outside : bool, optional
+        Draw the outside boxes; default only in 2-D.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes drawn on.
+
+    Raises
+    ------
+    ValueError
+        If ``dims`` is not two distinct axes of the paving.
     """
     import matplotlib.pyplot as plt
     from matplotlib.collections import PolyCollection

@@ -39,6 +39,13 @@ class FusedTests(list):
     SIVIA's case) answering exactly as :func:`relaxed_test` ``(list(tests), q)`` does; a model
     whose tests share most of their work (the sonar belt) provides it, compiled.
     :func:`relaxed_test`, :func:`relaxed_paving` and :func:`min_outliers` use it when given one.
+
+    Parameters
+    ----------
+    tests : sequence of callable
+        The m three-valued tests, kept as the list's items.
+    fused : callable
+        ``fused(q)`` returns the compiled test of the q-relaxed conjunction of ``tests``.
     """
 
     def __init__(self, tests: Sequence[Test], fused: Callable[[int], Test]):
@@ -65,6 +72,30 @@ def relaxed_test(tests: Sequence[Test], q: int) -> Test:
     On a box: TRUE when at least ``m - q`` tests are TRUE (every point then satisfies at
     least ``m - q`` of them); FALSE when more than ``q`` tests are FALSE (every point fails
     more than ``q``); UNKNOWN otherwise. ``q = 0`` is the plain intersection.
+
+    Parameters
+    ----------
+    tests : sequence of callable
+        The m three-valued tests ``t(*coords)``; a :class:`FusedTests` is evaluated by its
+        compiled ``fused(q)`` on SIVIA's boxes.
+    q : int
+        How many tests may fail, in ``[0, m]``.
+
+    Returns
+    -------
+    callable
+        The test ``test(*coords)`` returning TRUE / FALSE / UNKNOWN per box.
+
+    Raises
+    ------
+    ValueError
+        If ``tests`` is empty or holds a non-callable, or ``q`` is not an integer in ``[0, m]``.
+
+    Notes
+    -----
+    With ``n_T`` and ``n_F`` the numbers of tests TRUE and FALSE on a box, the verdict is
+    TRUE if ``n_T >= m - q``, FALSE if ``n_F > q``, UNKNOWN otherwise: the three-valued form of
+    the q-relaxed intersection of [KJWM00, Sect. 4].
     """
     tests = _check_tests(tests)
     m = len(tests)
@@ -141,8 +172,60 @@ def min_outliers(
     true configuration. Only a fixed ``q`` at least the true number of outliers is
     guaranteed to keep it.
 
-    ``prior`` is a test every point must pass, whatever ``q``; ``contractors`` (one per test,
-    or None) are combined by :func:`relaxed_contractor` at each ``q``.
+    Parameters
+    ----------
+    tests : sequence of callable
+        The m three-valued tests (one per measurement).
+    X0 : array_like, shape (n, 2), or Box
+        The bounded initial box.
+    eps : float
+        A box is not split once its widest side is at most ``eps``.
+    q_max : int, optional
+        Largest ``q`` tried, in ``[0, m]``; default ``m``.
+    prior : callable, optional
+        A test every point must pass, whatever ``q`` (tested first).
+    contractors : sequence of callable, optional
+        One contractor per test, combined by :func:`relaxed_contractor` at each ``q``.
+    ratio : float
+        Where the widest side is cut (codac's rule, 0.49).
+    max_boxes : int
+        Refuse to create more boxes than this.
+    defer_below : int
+        Passed to :func:`~optbound.interval.sivia.pave`.
+
+    Returns
+    -------
+    q : int
+        The smallest ``q`` whose relaxed intersection is not proven empty.
+    paving : Paving
+        The paving of that relaxed intersection.
+
+    Raises
+    ------
+    ValueError
+        If the relaxed intersection is proven empty for every ``q <= q_max``, on invalid
+        ``tests``, ``q_max`` or ``contractors``, or on the errors of :func:`relaxed_paving`.
+
+    References
+    ----------
+    .. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+       localization using interval analysis", Reliable Computing, 2000.
+
+    Examples
+    --------
+    Three constraints on ``x`` in ``[0, 10]``: ``x <= 2``, ``x >= 5`` and ``x >= 6``; no
+    point satisfies all three, some satisfy two (``x >= 6``):
+
+    >>> from optbound.interval.sivia import constraint
+    >>> tests = [constraint(lambda x: x, [[-np.inf, 2]]),
+    ...          constraint(lambda x: x, [[5, np.inf]]),
+    ...          constraint(lambda x: x, [[6, np.inf]])]
+    >>> q, paving = min_outliers(tests, [[0, 10]], 0.01)
+    >>> q
+    1
+    >>> hull = paving.hull()
+    >>> bool(hull.lo[0] <= 6 and hull.hi[0] == 10)
+    True
     """
     tests = _check_tests(tests)
     q_max = len(tests) if q_max is None else _check_count("q_max", q_max, len(tests))
@@ -179,6 +262,56 @@ def relaxed_paving(
 
     With ``contractors`` (one per test), every tested box is first contracted by their
     q-relaxed union (:func:`relaxed_contractor`). Other parameters as in :func:`pave`.
+
+    Parameters
+    ----------
+    tests : sequence of callable
+        The m three-valued tests (one per measurement).
+    q : int
+        How many tests may fail, in ``[0, m]``.
+    X0 : array_like, shape (n, 2), or Box
+        The bounded initial box.
+    eps : float
+        A box is not split once its widest side is at most ``eps``.
+    prior : callable, optional
+        A test every point must pass, whatever ``q`` (tested first).
+    contractors : sequence of callable, optional
+        One contractor per test, combined by :func:`relaxed_contractor`.
+    ratio : float
+        Where the widest side is cut (codac's rule, 0.49).
+    max_boxes : int
+        Refuse to create more boxes than this.
+    defer_below : int
+        Passed to :func:`~optbound.interval.sivia.pave`.
+
+    Returns
+    -------
+    Paving
+        Inner, boundary and outside boxes of the set of points of ``X0`` that pass ``prior``
+        and at least ``m - q`` of ``tests``.
+
+    Raises
+    ------
+    ValueError
+        On invalid ``tests`` or ``q``, if ``contractors`` does not hold one per test, or on
+        the errors of :func:`~optbound.interval.sivia.pave` (bad box, ``eps``, too many boxes).
+
+    Notes
+    -----
+    The set paved is ``{x in X0 : prior(x), #{i : t_i(x)} >= m - q}``, the q-relaxed
+    intersection of [KJWM00, Sect. 4].
+
+    Examples
+    --------
+    >>> from optbound.interval.sivia import constraint
+    >>> tests = [constraint(lambda x: x, [[-np.inf, 2]]),
+    ...          constraint(lambda x: x, [[1, np.inf]]),
+    ...          constraint(lambda x: x, [[8, np.inf]])]
+    >>> relaxed_paving(tests, 0, [[0, 10]], 0.01).is_empty
+    True
+    >>> inner, outer = relaxed_paving(tests, 1, [[0, 10]], 0.01).volume_bounds()
+    >>> bool(inner <= 1 + 2 <= outer)
+    True
     """
     tests = _check_tests(tests)
     q = _check_count("q", q, len(tests))
@@ -210,6 +343,29 @@ def relaxed_contractor(contractors: Sequence[Contractor], q: int) -> Contractor:
     lower bounds and at most the ``(m - q)``-th largest of their upper bounds (an emptied box
     counts as ``[+inf, -inf]``). That box is returned: an outer bound of the union, sound for
     any q. ``q = 0`` is the intersection of the contracted boxes.
+
+    Parameters
+    ----------
+    contractors : sequence of callable
+        The m contractors ``c(lo, hi) -> (lo, hi)`` on ``(n, k)`` bound arrays.
+    q : int
+        How many contractors may be wrong, in ``[0, m]``.
+
+    Returns
+    -------
+    callable
+        The contractor ``contract(lo, hi) -> (lo, hi)`` of the q-relaxed union.
+
+    Raises
+    ------
+    ValueError
+        If a contractor is not callable or ``q`` is not an integer in ``[0, m]``.
+
+    Notes
+    -----
+    The q-relaxed union of [KJWM00, Sect. 4]: with ``a_i <= b_i`` the contracted bounds of
+    one axis, the new bounds are the ``(m - q)``-th smallest ``a_i`` and the ``(m - q)``-th
+    largest ``b_i``.
     """
     contractors = list(contractors)
     if not all(callable(c) for c in contractors):

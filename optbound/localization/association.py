@@ -134,7 +134,17 @@ def visibility_matrix(
 
 @dataclass(frozen=True)
 class Association:
-    """One consistent interpretation: ``pairs[i]`` is bearing i's landmark (-1: spurious)."""
+    """One consistent interpretation: ``pairs[i]`` is bearing i's landmark (-1: spurious).
+
+    Parameters
+    ----------
+    pairs : numpy.ndarray of int, shape (N,)
+        Landmark index of each bearing, -1 for a spurious bearing.
+    pose : tuple of float
+        ``(x, y, psi)`` fitted to the paired bearings.
+    max_residual : float
+        Largest bearing residual [rad] of the fitted pose over the paired bearings.
+    """
 
     pairs: np.ndarray
     pose: tuple[float, float, float]
@@ -145,7 +155,7 @@ class Association:
 class AssociationResult:
     """All consistent associations with the fewest spurious bearings, and search statistics.
 
-    Attributes
+    Parameters
     ----------
     associations : list of Association
         Empty when no association fits.
@@ -318,7 +328,7 @@ def associate(
 class AssociationScore:
     """How an association compares with the true one (:func:`score`).
 
-    Attributes
+    Parameters
     ----------
     paired : int
         True bearings paired with their own landmark.

@@ -67,7 +67,7 @@ class Environment:
 
     @classmethod
     def from_polygons(cls, polygons, margin: float) -> Environment:
-        """E⁻ and E⁺ of an exact map of convex polygons, shrunk and grown by ``margin``.
+        """Build E⁻ and E⁺ of an exact map of convex polygons, shrunk and grown by ``margin``.
 
         Each edge line is moved by ``margin`` (outward for E⁺, inward for E⁻) and consecutive
         lines are intersected, so E⁺ contains every point within ``margin`` of E. E⁻ is the
@@ -77,8 +77,25 @@ class Environment:
         is left out of E⁻ (E⁻ may be empty [GLH12, Fig. 2]; a smaller inner set is the safe
         side). The inclusions are then checked exactly.
 
-        Raises ``ValueError`` for a non-positive or non-finite ``margin`` or a non-convex
-        polygon.
+        Parameters
+        ----------
+        polygons : list of array_like
+            The exact obstacles E, convex polygons ((k, 2) vertex arrays, either orientation).
+        margin : float
+            Distance (> 0) by which E is grown into E⁺ and shrunk into E⁻.
+
+        Returns
+        -------
+        Environment
+            ``inner`` = E⁻, ``outer`` = E⁺ and ``exact`` = E (counter-clockwise).
+
+        Raises
+        ------
+        ValueError
+            For a non-positive or non-finite ``margin``, a malformed or non-convex polygon, or
+            an inclusion E⁻ ⊂ E ⊂ E⁺ that cannot be proven.
+        TypeError
+            If ``polygons`` is not a list or tuple.
         """
         if not isinstance(margin, int | float) or not np.isfinite(margin) or margin <= 0:
             raise ValueError(f"margin must be a positive finite number, got {margin!r}")

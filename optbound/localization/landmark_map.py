@@ -50,7 +50,18 @@ class LandmarkMap:
         return np.sqrt(np.maximum(np.linalg.eigvalsh(self.shapes)[:, 1], 0.0))
 
     def visible(self, x, y) -> np.ndarray:
-        """Which landmarks are unoccluded from the points ``(x, y)``: shape ``x.shape + (M,)``."""
+        """Tell which landmarks are unoccluded from the points ``(x, y)``.
+
+        Parameters
+        ----------
+        x, y : array_like
+            Coordinates of the points (broadcast together).
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape ``x.shape + (M,)``
+            True where no wall meets the segment from the point to the landmark.
+        """
         x, y = np.asarray(x, dtype=float)[..., None], np.asarray(y, dtype=float)[..., None]
         if self.walls.shape[0] == 0:
             return np.ones(np.broadcast(x, self.landmarks[:, 0]).shape, dtype=bool)

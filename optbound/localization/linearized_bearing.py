@@ -39,11 +39,19 @@ CRITERIA = ("volume", "trace")
 
 @dataclass(frozen=True)
 class LinearizedResult(BoundResult):
-    """Result of :func:`linearized_localize`: the final ellipse and the measurements whose
-    linearized strip missed the set (rejected and skipped, as [HS96, Fig. 1 d)]).
+    """Result of :func:`linearized_localize`.
 
     As a ``BoundResult``: ``set`` is ``ellipse``, never certified (the strips are linearized,
-    module docstring), no margin."""
+    module docstring), no margin.
+
+    Parameters
+    ----------
+    ellipse : Ellipsoid
+        The final ellipse.
+    rejected : int
+        Number of measurements whose linearized strip missed the set (rejected and skipped,
+        as [HS96, Fig. 1 d)]).
+    """
 
     set_attribute = "ellipse"
     certified = False
@@ -54,13 +62,47 @@ class LinearizedResult(BoundResult):
 
 
 def box_ellipse(box: Box) -> Ellipsoid:
-    """The smallest ellipse through the corners of a 2-D box (axis-aligned, half-axes h sqrt 2)."""
+    """Compute the smallest ellipse through the corners of a 2-D box.
+
+    Parameters
+    ----------
+    box : Box
+        A 2-D box with half-widths h.
+
+    Returns
+    -------
+    Ellipsoid
+        The axis-aligned ellipse centred on the box with half-axes ``h sqrt 2``.
+    """
     half = 0.5 * (box.hi - box.lo)
     return Ellipsoid(0.5 * (box.lo + box.hi), np.diag(2.0 * half * half))
 
 
 def linearized_strip(li, lj, gamma_hat: float, eps: float, about) -> Strip:
-    """The strip of one relative bearing linearized around the point ``about`` [HS96, eq. (23)]."""
+    """Linearize the strip of one relative bearing around the point ``about`` [HS96, eq. (23)].
+
+    Parameters
+    ----------
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+    gamma_hat : float
+        Measured relative bearing [rad].
+    eps : float
+        Noise bound [rad].
+    about : array_like, shape (2,)
+        Linearization point c.
+
+    Returns
+    -------
+    Strip
+        ``|g^T x - b| <= eps`` scaled to half-width 1, with ``g`` the gradient of the bearing
+        at c and ``b = g^T c + wrap(gamma_hat - gamma_ij(c))``.
+
+    Raises
+    ------
+    ValueError
+        If ``about`` is a landmark (the bearing has no gradient there).
+    """
     ax, ay = float(about[0]), float(about[1])
     if any(ax == p[0] and ay == p[1] for p in (li, lj)):
         raise ValueError(f"cannot linearize the bearing at {about!r}: a landmark is there")
@@ -97,6 +139,17 @@ def linearized_localize(
     -------
     LinearizedResult
         Not guaranteed to contain the feasible set (module docstring).
+
+    Examples
+    --------
+    The setting of [BH, Sect. V] (vehicle at the origin, eps = 4 degrees):
+
+    >>> from optbound.localization.relative_bearing import bearings
+    >>> L = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
+    >>> pairs = [(2, 0), (0, 1), (1, 2)]
+    >>> result = linearized_localize(L, pairs, bearings([0.0, 0.0], L, pairs), np.radians(4))
+    >>> result.certified, result.rejected, bool(result.ellipse.contains([0.0, 0.0]))
+    (False, 0, True)
     """
     data = measurements(landmarks, pairs, gammas, eps)
     if int(relinearize) != relinearize or relinearize < 0:

@@ -65,7 +65,19 @@ _PRIOR_MARGIN = 1e-9
 # ----------------------------------------------------------------------------- validation
 @dataclass(frozen=True)
 class Measurements:
-    """Validated relative-bearing data: landmarks (N, 2), pairs (P, 2), gammas (P,), eps (P,)."""
+    """Validated relative-bearing data (built by :func:`measurements`).
+
+    Parameters
+    ----------
+    landmarks : numpy.ndarray, shape (N, 2)
+        Landmark positions.
+    pairs : numpy.ndarray of int64, shape (P, 2)
+        Landmark index pairs ``(i, j)``, one per measurement.
+    gammas : numpy.ndarray, shape (P,)
+        Measured relative bearings, wrapped to ``(-pi, pi]``.
+    eps : numpy.ndarray, shape (P,)
+        Noise bounds, in ``(0, pi/2)``.
+    """
 
     landmarks: np.ndarray
     pairs: np.ndarray
@@ -76,13 +88,43 @@ class Measurements:
         return self.pairs.shape[0]
 
     def pair(self, k: int) -> tuple[np.ndarray, np.ndarray, float, float]:
-        """``(L_i, L_j, gamma_hat, eps)`` of measurement k."""
+        """Return ``(L_i, L_j, gamma_hat, eps)`` of measurement k.
+
+        Parameters
+        ----------
+        k : int
+            Index of the measurement.
+
+        Returns
+        -------
+        L_i, L_j : numpy.ndarray, shape (2,)
+            The two landmarks.
+        gamma_hat, eps : float
+            The measured bearing and its noise bound.
+        """
         i, j = self.pairs[k]
         return self.landmarks[i], self.landmarks[j], float(self.gammas[k]), float(self.eps[k])
 
 
 def measurements(landmarks, pairs, gammas, eps) -> Measurements:
     """Validate the data of :func:`localize` / :func:`exact_paving`.
+
+    Parameters
+    ----------
+    landmarks : array_like, shape (N, 2)
+        Landmark positions (N >= 2).
+    pairs : array_like of int, shape (P, 2)
+        Landmark index pairs ``(i, j)``, ``i != j``.
+    gammas : array_like, shape (P,)
+        Measured relative bearings [rad].
+    eps : float or array_like, shape (P,)
+        Noise bound(s) [rad], in ``(0, pi/2)``.
+
+    Returns
+    -------
+    Measurements
+        The data as float / int64 arrays, bearings wrapped to ``(-pi, pi]``, ``eps`` one per
+        pair.
 
     Raises
     ------
@@ -139,6 +181,16 @@ def exact_tests(data: Measurements) -> list:
     The atan2 form is the constraint of [BH, eq. (2)] itself; :func:`~.geometry.bearing_sides`
     states the same set without a branch cut, so that boxes on the circle's other arc can be
     excluded.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+
+    Returns
+    -------
+    list of callable
+        ``2 P`` three-valued tests ``test(x, y)``.
     """
     tests = []
     for k in range(len(data)):
@@ -156,7 +208,21 @@ def exact_tests(data: Measurements) -> list:
 
 
 def in_exact_set(data: Measurements, X) -> np.ndarray:
-    """Float64 membership of points in the exact feasible set (for plots and samples)."""
+    """Test float64 membership of points in the exact feasible set (for plots and samples).
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+    X : array_like, shape (m, 2) or (2,)
+        Points.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (m,)
+        ``|wrap(gamma_ij(x) - gamma_hat)| <= eps`` for every measurement, in float64 (not
+        certified).
+    """
     pts, _ = v.points("X", X, 2)
     ok = np.ones(pts.shape[0], dtype=bool)
     for k in range(len(data)):
@@ -176,6 +242,17 @@ def exact_paving(landmarks, pairs, gammas, eps, X0, eps_paving: float) -> Paving
         Search box.
     eps_paving : float
         Boxes at most this wide are not bisected.
+
+    Returns
+    -------
+    Paving
+        Inner, boundary and outside boxes of ``{x in X0 : |wrap(gamma_ij(x) - gamma_hat)| <=
+        eps for every pair}``.
+
+    Raises
+    ------
+    ValueError, TypeError
+        Bad input (see :func:`measurements` and :func:`~optbound.interval.sivia.pave`).
     """
     data = measurements(landmarks, pairs, gammas, eps)
     return pave(exact_tests(data), X0, eps_paving)
@@ -183,7 +260,22 @@ def exact_paving(landmarks, pairs, gammas, eps, X0, eps_paving: float) -> Paving
 
 # ----------------------------------------------------------------------- circles and rings
 def circle(li, lj, gamma: float) -> tuple[np.ndarray, float]:
-    """Centre and radius of the circle of constant bearing ``gamma`` [BH, eqs. (18)-(19)]."""
+    """Compute the circle of constant bearing ``gamma`` [BH, eqs. (18)-(19)].
+
+    Parameters
+    ----------
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+    gamma : float
+        The relative bearing [rad], not 0 or pi.
+
+    Returns
+    -------
+    center : numpy.ndarray, shape (2,)
+        ``M = (L_i + L_j) / 2 - cot(gamma) Delta_perp / 2``.
+    radius : float
+        ``|L_j - L_i| / (2 |sin gamma|)``.
+    """
     li, lj = np.asarray(li, dtype=float), np.asarray(lj, dtype=float)
     delta = lj - li
     perp = np.array([-delta[1], delta[0]])  # counter-clockwise rotation
@@ -193,7 +285,17 @@ def circle(li, lj, gamma: float) -> tuple[np.ndarray, float]:
 
 @dataclass(frozen=True)
 class Ring:
-    """``lo <= |x - center| <= hi`` and the nominal squared radius ``z_hat`` [BH, eq. (21)]."""
+    """A ring ``lo <= |x - center| <= hi`` and its nominal squared radius [BH, eq. (21)].
+
+    Parameters
+    ----------
+    center : numpy.ndarray, shape (2,)
+        The ring's centre M.
+    lo, hi : float
+        Inner and outer radius.
+    z_hat : float
+        The nominal squared radius ``z_hat`` of the pseudo-linear measurement.
+    """
 
     center: np.ndarray
     lo: float
@@ -201,7 +303,13 @@ class Ring:
     z_hat: float
 
     def quadratics(self) -> list[QuadraticSet]:
-        """The ring as QuadraticSets: ``|x - M|^2 <= hi^2`` and, if lo > 0, ``>= lo^2``."""
+        """Return the ring as QuadraticSets: ``|x - M|^2 <= hi^2`` and, if lo > 0, ``>= lo^2``.
+
+        Returns
+        -------
+        list of QuadraticSet
+            One or two quadratic constraints.
+        """
         M = self.center
         out = [QuadraticSet.from_parts(np.eye(2), -M, M @ M - self.hi**2)]
         if self.lo > 0:
@@ -209,13 +317,29 @@ class Ring:
         return out
 
     def noise_interval(self) -> tuple[float, float]:
-        """Range of ``v = z_hat - |x - M|^2`` over the ring ([BH, eq. (11)] sign convention)."""
+        """Return the range of ``v = z_hat - |x - M|^2`` over the ring.
+
+        Returns
+        -------
+        lo, hi : float
+            ``z_hat - hi^2`` and ``z_hat - lo^2`` ([BH, eq. (11)] sign convention).
+        """
         return self.z_hat - self.hi**2, self.z_hat - self.lo**2
 
 
 @dataclass(frozen=True)
 class Rings:
-    """The two rings of one relative bearing [BH, eqs. (20)-(21), Fig. 3] and thickness d."""
+    """The two rings of one relative bearing [BH, eqs. (20)-(21), Fig. 3] and thickness d.
+
+    Parameters
+    ----------
+    outer : Ring
+        Ring 1, ``r1 <= |x - M1| <= r1 + d`` (the crescent is outside circle 1).
+    inner : Ring
+        Ring 2, ``max(r2 - d, 0) <= |x - M2| <= r2`` (the crescent is inside circle 2).
+    d : float
+        Ring thickness ``a [cot((g - eps) / 2) - cot((g + eps) / 2)]``.
+    """
 
     outer: Ring  # ring 1: r1 <= |x - M1| <= r1 + d (the crescent is outside circle 1)
     inner: Ring  # ring 2: max(r2 - d, 0) <= |x - M2| <= r2 (the crescent is inside circle 2)
@@ -226,7 +350,22 @@ class Rings:
 
 
 def rings(li, lj, gamma_hat: float, eps: float) -> Rings:
-    """The rings whose intersection is the crescent ``M_ij`` (module docstring).
+    """Compute the rings whose intersection is the crescent ``M_ij`` (module docstring).
+
+    Parameters
+    ----------
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+    gamma_hat : float
+        Measured relative bearing [rad].
+    eps : float
+        Noise bound [rad], in ``(0, pi/2)``.
+
+    Returns
+    -------
+    Rings
+        Ring 1 of bearing ``|gamma_hat| + eps``, ring 2 of ``|gamma_hat| - eps`` and their
+        thickness.
 
     Raises
     ------
@@ -252,13 +391,49 @@ def rings(li, lj, gamma_hat: float, eps: float) -> Rings:
 
 
 def all_rings(data: Measurements) -> list[Rings]:
-    """The rings of every measurement, in order."""
+    """Compute the rings of every measurement, in order.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+
+    Returns
+    -------
+    list of Rings
+        One per measurement.
+
+    Raises
+    ------
+    ValueError
+        If a bearing gives no crescent (see :func:`rings`).
+    """
     return [rings(*data.pair(k)) for k in range(len(data))]
 
 
 # -------------------------------------------------------------------------- lifted rows
 def lifting(order: int, offset, scale: float) -> PolynomialLifting:
-    """The L = 4 (order 1, [BH, eq. (22)]) or L = 8 (order 2, [BH, eq. (23)]) lifting."""
+    """Build the L = 4 (order 1, [BH, eq. (22)]) or L = 8 (order 2, [BH, eq. (23)]) lifting.
+
+    Parameters
+    ----------
+    order : {1, 2}
+        The lifting order.
+    offset : array_like, shape (2,)
+        Origin o of the filter's frame ``u = (x - o) / s``.
+    scale : float
+        Scale s of the filter's frame.
+
+    Returns
+    -------
+    PolynomialLifting
+        The L = 4 or L = 8 lifting in that frame.
+
+    Raises
+    ------
+    ValueError
+        If ``order`` is not 1 or 2.
+    """
     if order not in ORDERS:
         raise ValueError(f"order must be 1 (L = 4) or 2 (L = 8), got {order!r}")
     return (
@@ -279,6 +454,28 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
     ``pi - eps``, where circle 1 becomes a line, or a prior box small against the ring) it is
     singular in float64. Such a ring contributes only its first row with the strip noise: the
     same row as order 1, a valid and weaker constraint, so the bound stays guaranteed.
+
+    Parameters
+    ----------
+    ring : Ring
+        The ring.
+    order : {1, 2}
+        The lifting order.
+    offset : array_like, shape (2,)
+        Origin of the filter's frame.
+    scale : float
+        Scale of the filter's frame.
+
+    Returns
+    -------
+    H : numpy.ndarray, shape (k, L)
+        Measurement rows in the lifted coordinates.
+    z : array_like, shape (k,)
+        Pseudo-measurement.
+    V : array_like, shape (k, k)
+        Shape of the noise ellipsoid (a strip's half-width squared when k = 1).
+    v_center : array_like, shape (k,)
+        Centre of the noise set.
     """
     xm, ym = (ring.center - offset) / scale
     m2 = xm * xm + ym * ym
@@ -316,7 +513,25 @@ def ring_rows(ring: Ring, order: int, offset, scale: float):
 
 # ----------------------------------------------------------------------------- the filter
 def prior_box(data: Measurements, ring_list: Sequence[Rings] | None = None) -> Box:
-    """A box containing the feasible set: the intersection of the bounding boxes of discs 2."""
+    """Bound the feasible set by the intersection of the bounding boxes of discs 2.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+    ring_list : sequence of Rings, optional
+        The rings of ``data`` if already computed.
+
+    Returns
+    -------
+    Box
+        The box, widened by a relative margin of 1e-9 to cover rounding.
+
+    Raises
+    ------
+    ValueError
+        If the discs do not intersect (inconsistent measurements).
+    """
     ring_list = all_rings(data) if ring_list is None else ring_list
     lo = np.max([r.inner.center - r.inner.hi for r in ring_list], axis=0)
     hi = np.min([r.inner.center + r.inner.hi for r in ring_list], axis=0)
@@ -331,6 +546,18 @@ def lifted_prior(lift: PolynomialLifting, box: Box) -> PseudoEllipsoid:
 
     ``T(box)`` lies in the image box ``[c - h, c + h]`` (interval arithmetic), and that box
     lies in ``{sum_k (x*_k - c_k)^2 / (L h_k^2) <= 1}`` (its corners are on the boundary).
+
+    Parameters
+    ----------
+    lift : PolynomialLifting
+        The lifting T.
+    box : Box
+        The prior box of positions.
+
+    Returns
+    -------
+    PseudoEllipsoid
+        A lifted ellipsoid containing ``T(box)``.
     """
     img = lift.box_image(np.stack([box.lo, box.hi], axis=-1)[None])[0]
     c = 0.5 * (img[:, 0] + img[:, 1])
@@ -340,12 +567,24 @@ def lifted_prior(lift: PolynomialLifting, box: Box) -> PseudoEllipsoid:
 
 @dataclass(frozen=True)
 class BearingResult(BoundResult):
-    """Result of :func:`localize`: the final ``bound`` (None if proven empty), ``steps`` (the
-    bound after each pair), the ``prior``, the ``lams`` and certified ``margins`` of the ring
-    updates.
+    """Result of :func:`localize`.
 
     As a ``BoundResult``: ``set`` is ``bound``, certified; ``margin`` is the largest relative
-    inflation any ring update applied (``analytic.lifted_update``)."""
+    inflation any ring update applied (``analytic.lifted_update``).
+
+    Parameters
+    ----------
+    bound : PseudoEllipsoid or None
+        The final bound (None if proven empty).
+    steps : list of PseudoEllipsoid
+        The bound after each pair.
+    prior : PseudoEllipsoid
+        The lifted prior.
+    lams : list of float
+        The lambda of each ring update.
+    margins : list of float
+        The certified relative inflation of each ring update.
+    """
 
     set_attribute = "bound"
     certified = True
@@ -400,6 +639,32 @@ def localize(
     ------
     ValueError, TypeError
         Bad input (see :func:`measurements` and :func:`rings`).
+
+    Notes
+    -----
+    Each ring ``lo <= |x - M| <= hi`` is the pseudo-linear measurement ``z_hat = |x - M|^2 +
+    v`` [BH, eq. (21)], linear in the lifted coordinates ``[x, y, x^2, y^2]`` [BH, eq. (22)]
+    (order 1) or, with ``eta(w) = [w, w^2]``, in the L = 8 lifting [BH, eqs. (23)-(26)]
+    (order 2); each is fused with the current pseudo-ellipsoid by the certified update of
+    ``analytic.lifted_update``.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+
+    Examples
+    --------
+    The setting of [BH, Sect. V]: vehicle at the origin, three landmarks, eps = 4 degrees:
+
+    >>> L = np.array([[0.0, 1.0], [1.0, 1.0], [-1.0, 0.0]])
+    >>> pairs = [(2, 0), (0, 1), (1, 2)]
+    >>> gammas = bearings([0.0, 0.0], L, pairs)
+    >>> np.degrees(gammas).round(9).tolist()
+    [90.0, 45.0, -135.0]
+    >>> result = localize(L, pairs, gammas, np.radians(4))
+    >>> len(result.steps), bool(result.bound.contains([0.0, 0.0]))
+    (3, True)
     """
     data = measurements(landmarks, pairs, gammas, eps)
     ring_list = all_rings(data)
@@ -426,7 +691,18 @@ def localize(
 
 # ---------------------------------------------------------------------- containment proof
 def exact_test(data: Measurements):
-    """The conjunction of :func:`exact_tests`: one Tri test of the exact set on boxes."""
+    """Build the conjunction of :func:`exact_tests`: one Tri test of the exact set on boxes.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+
+    Returns
+    -------
+    callable
+        ``test(x, y)``: TRUE / FALSE / UNKNOWN per box.
+    """
     tests = exact_tests(data)
 
     def test(*coords):
@@ -440,7 +716,26 @@ def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving)
 
     Boxes not proven inside at once (boundary boxes stick out of the exact set by up to their
     width) are bisected, and sub-boxes the exact tests prove disjoint from the set are dropped
-    (``PseudoEllipsoid.prove_covers``). Raises ``TypeError`` naming an argument of another type.
+    (``PseudoEllipsoid.prove_covers``).
+
+    Parameters
+    ----------
+    bound : PseudoEllipsoid
+        The bound to certify.
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+    paving : Paving
+        A paving of the exact set (:func:`exact_paving`).
+
+    Returns
+    -------
+    CoverProof
+        The outcome of ``PseudoEllipsoid.prove_covers``.
+
+    Raises
+    ------
+    TypeError
+        Naming an argument of another type.
     """
     for name, value, kind in (
         ("bound", bound, PseudoEllipsoid),
@@ -453,7 +748,18 @@ def certify_contains(bound: PseudoEllipsoid, data: Measurements, paving: Paving)
 
 
 def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
-    """Every ring of every measurement as QuadraticSets (input of ``optimal.outer_ellipsoid``)."""
+    """List every ring of every measurement as QuadraticSets.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+
+    Returns
+    -------
+    list of QuadraticSet
+        The input of ``optimal.outer_ellipsoid``.
+    """
     return [q for pair_rings in all_rings(data) for ring in pair_rings for q in ring.quadratics()]
 
 
@@ -461,9 +767,16 @@ def bound_ellipse_quadratics(data: Measurements) -> list[QuadraticSet]:
 class EllipseBracket:
     """Bracket of the smallest ellipse containing the exact set (:func:`best_ellipse`).
 
-    ``sdp``: the S-procedure SDP ellipse; ``boxes``: the MVEE of the paving's box corners;
-    ``best``: the smaller of the two (both certified outer ellipses); ``lower``: an area no
-    outer ellipse of the exact set can beat (weak duality, ``optimal.lower``).
+    Parameters
+    ----------
+    sdp : Ellipsoid
+        The S-procedure SDP ellipse.
+    boxes : Ellipsoid
+        The MVEE of the paving's box corners.
+    best : Ellipsoid
+        The smaller of the two (both certified outer ellipses).
+    lower : float
+        An area no outer ellipse of the exact set can beat (weak duality, ``optimal.lower``).
     """
 
     sdp: Ellipsoid
@@ -485,6 +798,18 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
       contain them, hence (being convex) every box and the exact set.
 
     Cost: one SDP with ``lower_bound=True`` plus one MVEE over the corners.
+
+    Parameters
+    ----------
+    data : Measurements
+        Validated measurements (:func:`measurements`).
+    paving : Paving
+        A paving of the exact set (:func:`exact_paving`).
+
+    Returns
+    -------
+    EllipseBracket
+        The two outer ellipses, the smaller one and the lower bound on the optimal area.
     """
     from optbound import optimal  # cvxpy is imported only when a reference is asked for
 
@@ -502,7 +827,23 @@ def best_ellipse(data: Measurements, paving: Paving) -> EllipseBracket:
 
 # ------------------------------------------------------------------------------ measurement
 def bearings(x, landmarks, pairs) -> np.ndarray:
-    """Noise-free relative bearings [BH, eq. (2)] of the landmark ``pairs`` seen from ``x``."""
+    """Compute noise-free relative bearings [BH, eq. (2)] of landmark pairs seen from ``x``.
+
+    Parameters
+    ----------
+    x : array_like, shape (2,)
+        Position of the vehicle.
+    landmarks : array_like, shape (N, 2)
+        Landmark positions.
+    pairs : sequence of (i, j)
+        Landmark index pairs.
+
+    Returns
+    -------
+    numpy.ndarray, shape (P,)
+        ``wrap(atan2(y - y_Li, x - x_Li) - atan2(y - y_Lj, x - x_Lj))`` per pair, in
+        ``(-pi, pi]``.
+    """
     L = np.asarray(landmarks, dtype=float)
     ang = np.arctan2(x[1] - L[:, 1], x[0] - L[:, 0])
     return wrap_angle([ang[i] - ang[j] for i, j in pairs])

@@ -177,6 +177,29 @@ def range_inclusion(world, sonars, boxes, d_max: float = D_MAX) -> Interval:
     :func:`geometry.nearest_in_cone` on intervals, minimised over the segments, evaluated by
     the compiled loop of :mod:`optbound.localization._sonar_kernel` (the same bounds, bit for
     bit).
+
+    Parameters
+    ----------
+    world : array_like, shape (s, 2, 2)
+        Oriented segments ``[a, b]``, reflecting face on the left.
+    sonars : Sonar or sequence of Sonar
+        The belt of t sonars.
+    boxes : array_like, shape (m, 3, 2)
+        Pose boxes, rows ``[lo, hi]`` of x, y, theta.
+    d_max : float
+        Range returned when no reflecting face is in the cone.
+
+    Returns
+    -------
+    Interval, shape (m, t)
+        Entry ``[k, i]`` encloses the range of sonar i at every pose of box k.
+
+    Raises
+    ------
+    ValueError
+        On a malformed world, boxes or ``d_max``.
+    TypeError
+        If ``sonars`` holds something other than :class:`Sonar`.
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
@@ -190,7 +213,29 @@ def _param_table(belt: list[Sonar]) -> np.ndarray:
 
 
 def measurement_box(sonars, ranges) -> np.ndarray:
-    """(t, 2) rows ``[d (1 - alpha), d (1 + alpha)]`` rounded outward [LJMW97, eq. (3)]."""
+    """Bound each true range by ``[d (1 - alpha), d (1 + alpha)]``, rounded outward.
+
+    Parameters
+    ----------
+    sonars : Sonar or sequence of Sonar
+        The belt of t sonars (their ``rel_accuracy`` alpha).
+    ranges : array_like, shape (t,)
+        Positive measured ranges d, one per sonar.
+
+    Returns
+    -------
+    numpy.ndarray, shape (t, 2)
+        Rows ``[lo, hi]`` of the measurement box D.
+
+    Raises
+    ------
+    ValueError
+        If ``ranges`` is not one positive finite range per sonar.
+
+    Notes
+    -----
+    The box ``D`` of [LJMW97, eq. (3)], from the sensor model of [LJMW97, eq. (1)].
+    """
     belt = _belt(sonars)
     d = v.finite_array("ranges", ranges)
     if d.shape != (len(belt),):
@@ -228,6 +273,29 @@ def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
     FusedTests`), which :func:`~optbound.interval.relaxed_test` uses on SIVIA's boxes: one
     compiled pass over the boxes that stops, per box, at the first sonar that decides it
     [KJWM00]. ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
+
+    Parameters
+    ----------
+    world : array_like, shape (s, 2, 2)
+        Oriented segments ``[a, b]``, reflecting face on the left.
+    sonars : Sonar or sequence of Sonar
+        The belt of t sonars.
+    ranges : array_like, shape (t,)
+        Positive measured ranges, one per sonar.
+    d_max : float
+        Range returned when no reflecting face is in the cone.
+
+    Returns
+    -------
+    FusedTests
+        The t tests ``test(x, y, theta)`` with their compiled q-relaxed conjunction.
+
+    Raises
+    ------
+    ValueError
+        On a malformed world, ranges or ``d_max``.
+    TypeError
+        If ``sonars`` holds something other than :class:`Sonar`.
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
@@ -261,6 +329,29 @@ def sonar_contractors(world, sonars, ranges, d_max: float = D_MAX) -> list:
     A sonar whose upper range bound is below ``d_max`` contracts ``(x, y)`` by
     :func:`~optbound.localization._sonar_contractor.upper_range_contractor`; one that may read
     ``d_max`` ("no face") removes nothing.
+
+    Parameters
+    ----------
+    world : array_like, shape (s, 2, 2)
+        Oriented segments ``[a, b]``, reflecting face on the left.
+    sonars : Sonar or sequence of Sonar
+        The belt of t sonars.
+    ranges : array_like, shape (t,)
+        Positive measured ranges, one per sonar.
+    d_max : float
+        Range returned when no reflecting face is in the cone.
+
+    Returns
+    -------
+    list of callable
+        One contractor ``c(lo, hi) -> (lo, hi)`` per sonar.
+
+    Raises
+    ------
+    ValueError
+        On a malformed world, ranges or ``d_max``.
+    TypeError
+        If ``sonars`` holds something other than :class:`Sonar`.
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
@@ -274,6 +365,21 @@ def sonar_contractors(world, sonars, ranges, d_max: float = D_MAX) -> list:
 
 class SonarPaving(Paving):
     """A :class:`Paving` of poses with the sonar problem it solves.
+
+    Parameters
+    ----------
+    paving : Paving
+        The paving of poses (x, y, theta).
+    problem : dict
+        The problem solved: ``world``, ``sonars``, ``Y`` (measurement box), ``d_max``,
+        ``tests`` and ``prior``.
+    q : int
+        Number of sonars allowed to be inconsistent.
+    wraps : bool
+        Whether the heading range covers a whole turn (components are then merged across
+        the seam).
+    hypothesis : tuple of tuple of int, optional
+        The association hypothesis of a component (see below).
 
     Attributes
     ----------
@@ -291,7 +397,24 @@ class SonarPaving(Paving):
         self.problem, self.q, self.wraps, self.hypothesis = problem, q, wraps, hypothesis
 
     def contains(self, pose) -> bool:
-        """Whether the pose ``(x, y, theta)``, theta read modulo 2 pi, is in inner ∪ boundary."""
+        """Test whether the pose ``(x, y, theta)``, theta read modulo 2 pi, is in inner ∪ boundary.
+
+        Parameters
+        ----------
+        pose : array_like, shape (3,)
+            ``(x, y, theta)``.
+
+        Returns
+        -------
+        bool
+            True if a box of ``inner ∪ boundary`` holds the pose (theta shifted by -2 pi, 0
+            or 2 pi).
+
+        Raises
+        ------
+        ValueError
+            If ``pose`` is not three finite numbers.
+        """
         p = v.finite_array("pose", pose)
         if p.shape != (3,):
             raise ValueError(f"pose must be (x, y, theta), got shape {p.shape}")
@@ -306,6 +429,11 @@ class SonarPaving(Paving):
         When the heading covers the whole circle, components touching at ``theta = lo`` and
         ``theta = lo + 2 pi`` with overlapping (x, y) are one component; its boxes on the low
         side are shifted by 2 pi so that its hull is an ordinary box (theta may exceed pi).
+
+        Returns
+        -------
+        list of SonarPaving
+            One paving per component, with its ``hypothesis``, by decreasing outer volume.
         """
         parts = Paving.components(self)
         if self.wraps:
@@ -323,6 +451,21 @@ class SonarPaving(Paving):
         at least ``t - q`` readings are shown, in interval arithmetic, to contain the ranges
         of that exact float pose. A component with a witness holds a point of the true set
         [LJMW97, eq. (3)]; one without may be an artefact of the paving.
+
+        Parameters
+        ----------
+        per_side : int
+            Grid points per axis tried in each box (>= 1).
+
+        Returns
+        -------
+        numpy.ndarray, shape (3,), or None
+            The first proven pose, ``None`` if none is found.
+
+        Raises
+        ------
+        ValueError
+            If ``per_side`` is not a positive integer.
         """
         if not isinstance(per_side, (int, np.integer)) or per_side < 1:
             raise ValueError(f"per_side must be a positive integer, got {per_side!r}")
@@ -417,7 +560,7 @@ def localize(
     contract: bool = False,
     max_boxes: int = 20_000_000,
 ) -> SonarPaving:
-    """The poses consistent with the sonar ranges, as a paving of (x, y, theta).
+    """Pave the poses consistent with the sonar ranges, in (x, y, theta).
 
     [LJMW97, eq. (3)]: ``Q = {q in X0 : f(q) in D}`` with ``D`` the product of
     ``[d_i (1 - alpha_i), d_i (1 + alpha_i)]``; with ``q > 0`` the poses where at most ``q``
@@ -452,12 +595,44 @@ def localize(
         ``False`` (default) is plain SIVIA. Both are guaranteed. The contractors act on
         ``(x, y)`` only and, measured in :mod:`optbound.bench.sonar_codac`, do not pay for
         themselves on our rooms; they are kept as a sound option.
+    max_boxes : int
+        Refuse to create more boxes than this.
 
     Returns
     -------
     SonarPaving
         ``inner ⊂ Q ⊂ inner ∪ boundary``; ``.components()`` gives the connected components
         with their association hypotheses [LJMW97, Sect. 4].
+
+    Raises
+    ------
+    ValueError
+        On a malformed world, ranges, ``X0``, ``eps``, ``d_max`` or ``q``, too many boxes,
+        or (``q="auto"``) a set proven empty for every ``q``.
+    TypeError
+        If ``sonars`` holds something other than :class:`Sonar`, or ``prior`` is not
+        callable.
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    .. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+       localization using interval analysis", Reliable Computing, 2000.
+
+    Examples
+    --------
+    A 4 m x 3 m room and four sonars looking ahead, left, behind and right:
+
+    >>> room = polygon_walls([[0, 0], [4, 0], [4, 3], [0, 3]])
+    >>> belt = [Sonar((0.0, 0.0), a, 0.2, 0.02) for a in (0.0, np.pi / 2, np.pi, -np.pi / 2)]
+    >>> truth = np.array([1.0, 1.0, 0.1])
+    >>> ranges = simulate_ranges(room, belt, truth)
+    >>> ranges.tolist()
+    [3.0, 2.0, 1.0, 1.0]
+    >>> Q = localize(room, belt, ranges, [[0.5, 1.5], [0.5, 1.5], [-0.2, 0.4]], 0.05)
+    >>> Q.contains(truth), Q.q
+    (True, 0)
     """
     world = g.as_segments(world)
     belt = _belt(sonars)
@@ -496,6 +671,21 @@ def polygon_walls(vertices) -> np.ndarray:
 
     Going counter-clockwise the interior is on the left, which is the reflecting face
     [KJWM00, eq. (2)].
+
+    Parameters
+    ----------
+    vertices : array_like, shape (s, 2)
+        The polygon's vertices, counter-clockwise.
+
+    Returns
+    -------
+    numpy.ndarray, shape (s, 2, 2)
+        Segments ``[v_k, v_{k+1}]`` (the last one closing the polygon).
+
+    Raises
+    ------
+    ValueError
+        If ``vertices`` is not a finite (s, 2) array.
     """
     vertices = np.asarray(vertices, dtype=float)
     return g.as_segments(np.stack([vertices, np.roll(vertices, -1, axis=0)], axis=1), "vertices")
@@ -507,6 +697,23 @@ def clearance_test(world, clearance: float):
     For a convex room whose walls face inward this is ``front_distance >= clearance`` for
     every wall (:func:`geometry.front_distance`): prior knowledge of the robot's body
     [KJWM00, Sect. 2.2]. Pass it as ``prior`` to :func:`localize`.
+
+    Parameters
+    ----------
+    world : array_like, shape (s, 2, 2)
+        Walls of a convex room, facing inward (e.g. :func:`polygon_walls`).
+    clearance : float
+        Least distance [m] of the centre from every wall, >= 0.
+
+    Returns
+    -------
+    callable
+        The three-valued test ``test(x, y, theta)``.
+
+    Raises
+    ------
+    ValueError
+        On a malformed world or a negative or non-finite ``clearance``.
     """
     world = g.as_segments(world)
     if not np.isfinite(clearance) or clearance < 0:

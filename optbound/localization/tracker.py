@@ -37,7 +37,18 @@ XY = (0, 1)
 
 @dataclass(frozen=True)
 class UpdateInfo:
-    """Outcome of one :meth:`SetTracker.update`: the fusion case, consistency and lambda."""
+    """Outcome of one :meth:`SetTracker.update`: the fusion case, consistency and lambda.
+
+    Parameters
+    ----------
+    case : str
+        The configuration of strip and ellipsoid [HS96, Fig. 1] (``"inconsistent"`` when the
+        measurement was rejected).
+    consistency : float
+        The consistency measure of the measurement [HS96, eq. (29)].
+    lam : float
+        The lambda of [HS96, eq. (24)] chosen by the criterion.
+    """
 
     case: str
     consistency: float
@@ -69,6 +80,27 @@ class SetTracker:
     The strip half-width of eq. (20) is taken as ``sqrt(d^T C d) + |c3| delta_alpha``: the
     printed eq. (20) puts ``|c3| delta_alpha`` under the square root, which is not a bound of
     ``|e_k|`` (the two error terms add).
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+
+    Examples
+    --------
+    One dead-reckoning step of 0.5 m, then the bearing of landmark 1:
+
+    >>> from optbound.localization.landmark_map import LandmarkMap
+    >>> L = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]])
+    >>> start = np.array([1.0, 1.0, 0.2])
+    >>> tracker = SetTracker(Ellipsoid(start, np.diag([0.01, 0.01, 0.001])), LandmarkMap(L), 0.01)
+    >>> _ = tracker.predict([0.5, 0.0, 0.0], np.diag([1e-3, 1e-3, 1e-4]))
+    >>> truth = start + [0.5 * np.cos(0.2), 0.5 * np.sin(0.2), 0.0]
+    >>> alpha = np.arctan2(L[1, 1] - truth[1], L[1, 0] - truth[0]) - truth[2]
+    >>> tracker.update(alpha, 1).case
+    'consistent'
+    >>> bool(pose_level(tracker.set, truth) <= 1)
+    True
     """
 
     def __init__(
@@ -134,6 +166,30 @@ class SetTracker:
         ``|D^T z - r| <= e_max`` with ``c1 = sin(alpha + psi)``, ``c2 = cos(alpha + psi)``,
         ``c3 = c2 (x_LM - x) + c1 (y_LM - y)`` at the linearization point ``about`` (default
         the current centre), ``D = (c1, -c2, -c3)``, ``r = c1 x_LM - c2 y_LM - c3 psi``.
+
+        Parameters
+        ----------
+        alpha : float
+            Measured bearing [rad], relative to the robot's heading.
+        landmark : int
+            Index of the landmark in the map.
+        about : array_like, shape (3,), optional
+            Linearization point ``(x, y, psi)``; default the current centre.
+
+        Returns
+        -------
+        Strip
+            The strip ``|D^T z - r| <= e_max``, normalized to half-width 1.
+
+        Raises
+        ------
+        ValueError
+            If the strip has zero width (``delta_alpha = 0`` and a point landmark).
+
+        Notes
+        -----
+        The half-width is ``e_max = sqrt(d^T C_LM d) + |c3| delta_alpha`` with
+        ``d = (-c1, c2)`` (eq. (20) with the two error terms added, see the class Notes).
         """
         # Python floats: scalar arithmetic on numpy scalars costs several times more.
         x, y, psi = (self.set.center if about is None else np.asarray(about, float)).tolist()
@@ -154,6 +210,32 @@ class SetTracker:
         The set becomes the member of [HS96, eq. (24)] chosen by the criterion; if the strip
         misses the set ("inconsistent", [HS96, Fig. 1 d)]) the measurement is rejected and the
         set is kept.
+
+        Parameters
+        ----------
+        alpha : float
+            Measured bearing [rad], relative to the robot's heading.
+        landmark : int
+            Index of the landmark in the map.
+
+        Returns
+        -------
+        UpdateInfo
+            The fusion case, consistency measure and lambda of this update.
+
+        Raises
+        ------
+        TypeError
+            If ``landmark`` is not an integer index.
+        ValueError
+            If ``alpha`` is not finite or ``landmark`` is out of range.
+
+        Notes
+        -----
+        The fused set is the member ``{z : (z - c)^T C^{-1} (z - c) + lam (D^T z - r)^2 /
+        e_max^2 <= 1 + lam}`` of [HS96, eqs. (24)-(25)] (computed with a certified margin by
+        :func:`optbound.analytic.intersect_strip`), lam from eq. (26) (volume), eqs. (27)-(28)
+        (projection) or eqs. (29)-(30) (robust).
         """
         alpha = v.finite_scalar("alpha", alpha)
         if isinstance(landmark, bool) or not isinstance(landmark, numbers.Real):
@@ -182,6 +264,23 @@ def pose_level(E: Ellipsoid, pose) -> float:
 
     ``<= 1`` means the pose is in the posture set ``E`` of ``(x, y, psi)``: the test of
     whether a tracked set still holds the true pose.
+
+    Parameters
+    ----------
+    E : Ellipsoid
+        Posture set of ``(x, y, psi)``.
+    pose : array_like, shape (3,)
+        ``(x, y, psi)``.
+
+    Returns
+    -------
+    float
+        ``(p - c)^T C^{-1} (p - c)`` with the heading difference wrapped to ``[-pi, pi)``.
+
+    Raises
+    ------
+    ValueError
+        If ``pose`` is not three finite numbers.
     """
     pose = v.finite_vector("pose", pose, 3)
     d = np.array([pose[0], pose[1], float(wrap_angle(pose[2] - E.center[2]))])
@@ -192,8 +291,24 @@ def pose_level(E: Ellipsoid, pose) -> float:
 def nearest_landmark(tracker: SetTracker, alpha: float, gate: float, seen: np.ndarray):
     """Association during tracking: the landmark of ``seen`` whose predicted bearing is nearest.
 
-    The predicted bearing is taken from the centre of ``tracker.set``. Returns ``None`` when no
-    landmark is within ``gate`` or the runner-up is within twice the gate (ambiguous).
+    The predicted bearing is taken from the centre of ``tracker.set``.
+
+    Parameters
+    ----------
+    tracker : SetTracker
+        The tracker whose set centre predicts the bearings.
+    alpha : float
+        Measured bearing [rad], relative to the robot's heading.
+    gate : float
+        Largest accepted difference [rad] between predicted and measured bearing.
+    seen : numpy.ndarray of int
+        Indices of the candidate landmarks.
+
+    Returns
+    -------
+    int or None
+        The landmark index; ``None`` when no landmark is within ``gate`` or the runner-up is
+        within twice the gate (ambiguous).
     """
     x, y, psi = tracker.set.center
     lm = tracker.map.landmarks

@@ -247,10 +247,30 @@ def _travel(distance, shape: tuple[int, ...], allowed: str) -> np.ndarray:
 def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     """Interval odometry with a compass [GLH12, Alg. 1, l. 3]: ``x + d (cos θ, sin θ)``.
 
-    ``boxes`` (m, 2, 2); ``distance`` (m, 2) interval ``0 <= d_lo <= d_hi`` travelled by each
-    robot (or one (2,) interval for all); ``heading`` (m,) compass readings (radians) with error at
-    most ``heading_error``. Outward-rounded: the result contains every position reachable by
-    a travel in ``[d]`` along a heading in ``[θ - δ, θ + δ]``.
+    Outward-rounded: the result contains every position reachable by a travel in ``[d]``
+    along a heading in ``[θ - δ, θ + δ]``.
+
+    Parameters
+    ----------
+    boxes : array_like, shape (m, 2, 2)
+        Position boxes of the m robots.
+    distance : array_like, shape (m, 2) or (2,)
+        Interval ``0 <= d_lo <= d_hi`` travelled by each robot (or one for all).
+    heading : array_like, shape (m,)
+        Compass readings (radians).
+    heading_error : float
+        Compass error bound δ (radians), >= 0.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m, 2, 2)
+        The boxes after the step.
+
+    Raises
+    ------
+    ValueError
+        On malformed boxes, a negative or malformed ``distance``, non-finite headings or a
+        negative ``heading_error``.
     """
     b = box_array("boxes", boxes, 2)
     m = len(b)
@@ -316,9 +336,38 @@ def track(
     (K + 1, m, 2, 2) array
         The boxes after each step (index 0 is ``boxes0``). Robots are contracted in order,
         each with the others' latest boxes (every contraction is guaranteed, so the order
-        changes tightness only). Raises ``ValueError`` if LUVIA refutes a whole box, or if a
-        box misses ``region`` (the measurements are inconsistent with E⁻, E⁺, the odometry
-        and the region).
+        changes tightness only).
+
+    Raises
+    ------
+    ValueError
+        If LUVIA refutes a whole box, or if a box misses ``region`` (the measurements are
+        inconsistent with E⁻, E⁺, the odometry and the region); on malformed arguments.
+    TypeError
+        If ``visibility`` is not boolean.
+
+    References
+    ----------
+    .. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+       set-membership approach using a visibility information", ICINCO, 2012.
+
+    Examples
+    --------
+    Three robots around a square obstacle move one step north; robots 0 and 1 are hidden
+    from each other by it:
+
+    >>> env = Environment.from_polygons([[[4, 4], [6, 4], [6, 6], [4, 6]]], 0.05)
+    >>> start = np.array([[1.0, 5.0], [9.0, 5.0], [5.0, 1.0]])
+    >>> after = start + [0.0, 1.0]
+    >>> y = measure(after, env.exact)
+    >>> y.astype(int).tolist()
+    [[1, 0, 1], [0, 1, 1], [1, 1, 1]]
+    >>> boxes0 = np.stack([start - 0.5, start + 0.5], axis=-1)
+    >>> boxes = track(boxes0, [0.9, 1.1], [[np.pi / 2] * 3], 0.01, y[None], env, 0.05)
+    >>> boxes.shape
+    (2, 3, 2, 2)
+    >>> bool(np.all((boxes[1, :, :, 0] <= after) & (after <= boxes[1, :, :, 1])))
+    True
     """
     b = box_array("boxes0", boxes0, 2, volume=True)
     m = len(b)

@@ -47,20 +47,52 @@ _FAMILIES = {
 
 
 def families() -> list[str]:
-    """Names of the problem families, in suite order."""
+    """List the names of the problem families, in suite order.
+
+    Returns
+    -------
+    list of str
+        The family names, each also a module ``optbound.problems.<name>``.
+
+    Examples
+    --------
+    >>> from optbound import problems
+    >>> problems.families()[:3]
+    ['strip', 'minkowski', 'recursive']
+    """
     return list(_FAMILIES)
 
 
 def suite(name: str, families: list[str] | None = None, seed: int = 0) -> list[Problem]:
-    """The problems of suite ``name`` ("tiny", "quick", "full"), every family or ``families``.
+    """Build the problems of suite ``name``, of every family or of ``families``.
 
-    ``seed`` is the suite seed of ``optbound bench --seed`` (default 0): the same seed gives
-    the same instances as the benchmark.
+    Parameters
+    ----------
+    name : {"tiny", "quick", "full"}
+        The suite size, as in ``optbound bench --suite``.
+    families : list of str, optional
+        Family names (see :func:`families`); every family if None.
+    seed : int, default 0
+        The suite seed of ``optbound bench --seed``: the same seed gives the same instances
+        as the benchmark.
+
+    Returns
+    -------
+    list of Problem
+        The problems, family by family in the order of ``families``.
 
     Raises
     ------
     ValueError
         For an unknown suite or family name.
+
+    Examples
+    --------
+    >>> from optbound import problems
+    >>> suite = problems.suite("tiny", families=["strip"])
+    >>> p = suite[0]
+    >>> (p.family, p.dim)
+    ('strip', 2)
     """
     if name not in SUITES:
         raise ValueError(f"name must be one of {SUITES}, got {name!r}")

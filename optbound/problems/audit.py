@@ -15,6 +15,11 @@ audited against the exact set of the problem:
   by interval arithmetic), ``"refuted"`` with a counterexample (a float point ``x`` with
   ``p.member(x) == TRUE`` that the set excludes, exactly for optbound's set types, by the
   set's own ``contains`` otherwise) or ``"undecided"``. Never "proven" on samples.
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 """
 
 from __future__ import annotations

@@ -15,6 +15,11 @@ benchmark's: a coarse paving of the prior box (1/40 of its widest side) gives a 
 to contain the set, paved at 1/``relative`` of the hull's widest side. The reference ellipse
 is the benchmark's: the smaller of the rings' S-procedure SDP and the MVEE of the exact
 paving's boxes (``relative_bearing.best_ellipse``, both certified).
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -38,7 +43,33 @@ COARSE = 40
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instances of a suite: the [BH, Sect. V] geometry, then the random ones."""
+    """List the instance cells of a suite: the [BH, Sect. V] geometry, then the random ones.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``variant`` ("BH geometry" or "random"),
+        ``relative`` (the paving's resolution, 1/``relative`` of the domain's widest side)
+        and ``index``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     count, relative = SIZES[suite]
@@ -51,7 +82,27 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(seed: int, variant: str) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
-    """``(landmarks, pairs, gammas, eps, truth)`` of one instance, rebuilt from its seed."""
+    """Rebuild the measurements and vehicle position of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed, unused for the BH geometry (``np.random.default_rng(seed)``).
+    variant : {"BH geometry", "random"}
+        The geometry of [BH, Sect. V], or a random one
+        (:func:`~optbound.scenarios.bh_geometry.random_instance`).
+
+    Returns
+    -------
+    tuple
+        ``(landmarks, pairs, gammas, eps, truth)``: landmarks (N, 2), landmark pairs,
+        relative bearings (P,), their error bounds and the vehicle's position (2,).
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    """
     if variant == "BH geometry":
         return bh.sect5_instance()
     return bh.random_instance(np.random.default_rng(seed))
@@ -62,7 +113,18 @@ def _best_ellipse(p: Problem) -> Ellipsoid:
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     landmarks, pairs, gammas, eps, truth = instance(task["seed"], task["variant"])
     data = rb.measurements(landmarks, pairs, gammas, eps)
     test = rb.exact_test(data)
@@ -89,5 +151,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

@@ -6,6 +6,11 @@ the way an installed package registers its own (:mod:`optbound.problems.registry
 Each applies one fusion criterion of [HS96, eq. (24)] (:func:`optbound.analytic.intersect_strip`)
 to the prior ellipsoid and the strip of a ``strip`` problem; on a problem of another family it
 raises a TypeError, which :func:`optbound.evaluate` reports as that row's error.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -15,12 +20,60 @@ from optbound.sets import Ellipsoid
 
 
 def analytic_volume(problem: Problem) -> Ellipsoid | None:
-    """The volume-optimal member of the ellipsoid ∩ strip family [HS96, eq. (26)]."""
+    """Bound a ``strip`` problem by the volume-optimal member of the ellipsoid ∩ strip family.
+
+    [HS96, eq. (26)], by :func:`optbound.analytic.intersect_strip` with
+    ``criterion="volume"``.
+
+    Parameters
+    ----------
+    problem : Problem
+        A problem whose ``data`` has an ``"ellipsoid"`` and a ``"strip"``.
+
+    Returns
+    -------
+    Ellipsoid or None
+        The fused ellipsoid; None if the strip misses the ellipsoid.
+
+    Raises
+    ------
+    TypeError
+        If ``problem.data`` lacks ``"ellipsoid"`` or ``"strip"``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+    """
     return _intersect_strip(problem, "volume")
 
 
 def analytic_trace(problem: Problem) -> Ellipsoid | None:
-    """The trace-minimising member of the ellipsoid ∩ strip family [HS96, eq. (24)]."""
+    """Bound a ``strip`` problem by the trace-minimising member of the ellipsoid ∩ strip family.
+
+    [HS96, eq. (24)], by :func:`optbound.analytic.intersect_strip` with
+    ``criterion="trace"``.
+
+    Parameters
+    ----------
+    problem : Problem
+        A problem whose ``data`` has an ``"ellipsoid"`` and a ``"strip"``.
+
+    Returns
+    -------
+    Ellipsoid or None
+        The fused ellipsoid; None if the strip misses the ellipsoid.
+
+    Raises
+    ------
+    TypeError
+        If ``problem.data`` lacks ``"ellipsoid"`` or ``"strip"``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+    """
     return _intersect_strip(problem, "trace")
 
 

@@ -50,7 +50,9 @@ COLUMNS = (
 class Evaluation:
     """The outcome of one estimator on a list of problems.
 
-    Attributes
+    Built by :func:`optbound.evaluate`; each argument is kept as the attribute of that name.
+
+    Parameters
     ----------
     estimator : str
         The estimator's name.
@@ -58,6 +60,7 @@ class Evaluation:
         One per problem, keys :data:`COLUMNS`. Numbers are None where they do not apply
         (error rows; sizes of sets known only by ``contains``).
     problems : list of Problem
+        The problems, in the order of ``rows``.
     sets : list
         The set each call returned (None on error rows), for figures.
     """
@@ -70,7 +73,13 @@ class Evaluation:
         return f"Evaluation({self.estimator!r}, {len(self.rows)} rows, {counts})"
 
     def counts(self) -> dict[str, int]:
-        """Rows per outcome: "proven", "refuted", "undecided" and "error"."""
+        """Count the rows per outcome.
+
+        Returns
+        -------
+        dict of str to int
+            Keys "proven", "refuted", "undecided" and "error", in that order.
+        """
         out = dict.fromkeys(("proven", "refuted", "undecided", "error"), 0)
         for row in self.rows:
             out["error" if row["error"] else row["soundness"]] += 1
@@ -78,7 +87,13 @@ class Evaluation:
 
     # ------------------------------------------------------------------ renderings
     def to_markdown(self) -> str:
-        """A Markdown table, one line per problem (brackets as ``[lo, hi]``)."""
+        """Render the rows as a Markdown table, one line per problem.
+
+        Returns
+        -------
+        str
+            The counts line, then the table (brackets as ``[lo, hi]``).
+        """
         head = [
             "family",
             "problem",
@@ -116,12 +131,26 @@ class Evaluation:
         return "\n".join(lines) + "\n"
 
     def to_json(self) -> str:
-        """``{"estimator": name, "rows": [...]}`` (non-finite floats as null)."""
+        """Render the rows as JSON.
+
+        Returns
+        -------
+        str
+            ``{"estimator": name, "rows": [...]}``, floats written with ``repr`` (a
+            counterexample read back is the same float point), non-finite floats as null.
+        """
         rows = [{k: _jsonable(r[k]) for k in COLUMNS} for r in self.rows]
         return json.dumps({"estimator": self.estimator, "rows": rows}, indent=1)
 
     def to_csv(self) -> str:
-        """CSV with a header of :data:`COLUMNS`; a counterexample is a JSON list in its cell."""
+        """Render the rows as CSV.
+
+        Returns
+        -------
+        str
+            A header of :data:`COLUMNS`, then one line per row; a counterexample is a JSON
+            list in its cell, None an empty cell.
+        """
         buf = io.StringIO()
         writer = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
         writer.writeheader()
@@ -133,9 +162,20 @@ class Evaluation:
         return buf.getvalue()
 
     def figure(self, max_panels: int = 4):
-        """A matplotlib figure: up to ``max_panels`` 2-D problems (the exact paving, the
-        references and the user's set, with any counterexample), then the ratio brackets to
-        the exact set over the suite (one segment per problem, log scale)."""
+        """Draw the 2-D problems and the ratio brackets with matplotlib.
+
+        Parameters
+        ----------
+        max_panels : int, default 4
+            At most this many 2-D problems are drawn (the exact paving, the references and
+            the user's set, with any counterexample).
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            The problem panels, then the ratio brackets to the exact set over the suite (one
+            segment per problem, log scale).
+        """
         import matplotlib.pyplot as plt
 
         shown = [i for i, p in enumerate(self.problems) if p.dim == 2 and self.sets[i] is not None][

@@ -16,6 +16,11 @@ bearing is consistent with some landmark in its ellipse and some error within
 domain is the hull of that paving's adaptive refinement from the office box times every
 heading (guaranteed, and defined also where HS96's linear position bound is not), paved at
 1/RELATIVE of the hull's widest side.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -43,7 +48,26 @@ RELATIVE = 120
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: seed, landmark count, error bound (degrees), repetition."""
+    """List the instance cells of a suite: seed, landmark count, error bound (degrees), repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``count`` (landmarks), ``delta_deg`` and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     counts, deltas, reps = SIZES[suite]
@@ -55,7 +79,28 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(seed: int, count: int, delta_alpha: float) -> dict:
-    """Landmarks, shapes, bearings and the true pose of one instance, rebuilt from its seed."""
+    """Rebuild the landmarks, shapes, bearings and true pose of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (``np.random.default_rng(seed)``).
+    count : int
+        Landmarks in the scan, drawn among those in sight (at most their number).
+    delta_alpha : float
+        The bearing error bound [rad] [HS96, eq. (2)].
+
+    Returns
+    -------
+    dict
+        ``"landmarks"`` (count, 2), ``"landmark_shapes"`` (count, 2, 2), ``"alphas"``
+        (count,) in [0, 2 pi) and ``"truth"``, the pose (x, y, psi).
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
+    """
     rng = np.random.default_rng(seed)
     omap = office.office_map()
     pose = office.course_pose(rng.uniform(0.0, office.lap_length()))[0]
@@ -73,7 +118,18 @@ def instance(seed: int, count: int, delta_alpha: float) -> dict:
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     delta = math.radians(task["delta_deg"])
     inst = instance(task["seed"], task["count"], delta)
     L, C, alphas = inst["landmarks"], inst["landmark_shapes"], inst["alphas"]
@@ -95,5 +151,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

@@ -49,10 +49,29 @@ RELATIVE_EPS = 1 / 128
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: Alamo's example per step, then random systems per step.
+    """List the instance cells of a suite: Alamo's example per step, then random systems.
 
     Alamo's cells carry the seed of their position (the data are fixed; the seed only names
     the cell), the random systems their own instance seed.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``system`` ("alamo" or "random"), ``k`` (the
+        step) and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
     """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
@@ -67,7 +86,30 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(system: str, seed: int, k: int) -> tuple[dict, np.ndarray | None]:
-    """The estimator's data (system, X0, ys[:k]) and the simulated x_k (or None)."""
+    """Build the estimator's data of one instance and the simulated state.
+
+    Parameters
+    ----------
+    system : {"alamo", "random"}
+        Alamo's example (:mod:`optbound.scenarios.alamo2005`) or a random 2-D system
+        (:func:`~optbound.scenarios.linear_systems.random_system`).
+    seed : int
+        The instance seed (unused for Alamo's example).
+    k : int
+        The number of steps (measurements).
+
+    Returns
+    -------
+    data : dict
+        ``"system"``, ``"X0"`` and ``"ys"`` (the first ``k`` measurements).
+    truth : np.ndarray or None
+        The simulated state ``x_k``; None for Alamo's example (no recorded states).
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``system``.
+    """
     if system == "alamo":
         data = {"system": alamo2005.system(), "X0": alamo2005.X0, "ys": alamo2005.MEASUREMENTS[:k]}
         return data, None
@@ -78,8 +120,24 @@ def instance(system: str, seed: int, k: int) -> tuple[dict, np.ndarray | None]:
 
 
 def polygon_test(P: list[Point]):
-    """The exact three-valued box test of the convex polygon ``P`` (module docstring) as the
-    ``test(x, y)`` of a Problem (``constrained_zonotope_polygon.polygon_box_test``)."""
+    """Build the exact three-valued box test of the convex polygon ``P`` (module docstring).
+
+    Parameters
+    ----------
+    P : list of Point
+        The rational vertices of a convex polygon, at least 3.
+
+    Returns
+    -------
+    callable
+        The ``test(x, y) -> Tri array`` of a Problem, on ``Interval`` coordinates
+        (``constrained_zonotope_polygon.polygon_box_test``).
+
+    Raises
+    ------
+    ValueError
+        If ``P`` has fewer than 3 vertices (the exact set is flat or empty).
+    """
     if len(P) < 3:
         raise ValueError("the exact set is flat or empty: it has no polygon test")
     boxes = polygon_box_test(P)
@@ -103,7 +161,18 @@ def polygon_test(P: list[Point]):
 
 
 def outward_hull(P: list[Point]) -> Box:
-    """The float box proven to contain the rational polygon ``P`` (bounds rounded outward)."""
+    """Bound the rational polygon ``P`` by a float box, its bounds rounded outward.
+
+    Parameters
+    ----------
+    P : list of Point
+        Rational vertices (``Fraction`` coordinates).
+
+    Returns
+    -------
+    Box
+        The smallest float box proven to contain ``P``.
+    """
 
     def down(q: Fraction) -> float:
         f = float(q)
@@ -118,7 +187,18 @@ def outward_hull(P: list[Point]) -> Box:
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     data, truth = instance(task["system"], task["seed"], task["k"])
     P = exact_polygons(data["system"], data["X0"], data["ys"])[-1]
     domain = outward_hull(P)
@@ -144,5 +224,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

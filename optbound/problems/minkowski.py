@@ -24,6 +24,11 @@ The direction and the split point of a box come from the κ family (HS96's outer
 summands' gauges at the optimal κ; the share ``a`` is ``E1``'s part of the support in
 direction ``d``, ``h1 / (h1 + h2)``. Both are floating-point guesses; only the interval checks
 decide, so a poor guess costs tightness, never soundness.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -53,7 +58,26 @@ KAPPAS = 1.0 / (1.0 + np.exp(-np.linspace(-14.0, 14.0, 401)))
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: seed, dimension, condition number, scale, repetition."""
+    """List the instance cells of a suite: seed, dimension, condition number, scale, repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``dim``, ``cond``, ``scale`` and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     dims, conds, scales, reps = SIZES[suite]
@@ -67,7 +91,26 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(seed: int, dim: int, cond: float, scale: float) -> tuple[Ellipsoid, Ellipsoid]:
-    """The two summands of one instance, rebuilt from its seed."""
+    """Rebuild the two summands of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (``np.random.default_rng(seed)``).
+    dim : int
+        The dimension.
+    cond : float
+        Condition number of both shape matrices.
+    scale : float
+        The largest semi-axis of the second summand (the first's is 1).
+
+    Returns
+    -------
+    E1 : Ellipsoid
+        The first summand (largest semi-axis 1).
+    E2 : Ellipsoid
+        The second summand (largest semi-axis ``scale``).
+    """
     rng = np.random.default_rng(seed)
     E1 = random_ellipsoid(rng, dim, cond)
     return E1, random_ellipsoid(rng, dim, cond, scale=scale)
@@ -80,7 +123,19 @@ def _quadratic(d: list, C: np.ndarray) -> Interval:
 
 
 def sum_test(E1: Ellipsoid, E2: Ellipsoid):
-    """Three-valued interval test of ``E1 ⊕ E2`` on boxes (module docstring)."""
+    """Build the three-valued interval test of ``E1 ⊕ E2`` on boxes (module docstring).
+
+    Parameters
+    ----------
+    E1, E2 : Ellipsoid
+        The summands.
+
+    Returns
+    -------
+    callable
+        ``test(*coords) -> Tri array`` on ``Interval`` coordinates: TRUE only for boxes
+        proven inside the sum, FALSE only for boxes proven outside.
+    """
     C1, C2 = E1.shape, E2.shape
     c1, c2 = E1.center, E2.center
     Qinv = np.linalg.inv(
@@ -132,7 +187,18 @@ def _sdp(p: Problem) -> Ellipsoid:
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     E1, E2 = instance(task["seed"], task["dim"], task["cond"], task["scale"])
     domain = _hull(E1, E2)
     return Problem(
@@ -150,5 +216,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

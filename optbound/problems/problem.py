@@ -4,6 +4,11 @@ A problem is described once, by the three-valued interval test of its true set (
 built from the ``tri_test`` of its constituent sets). Both :meth:`Problem.member` (points)
 and :meth:`Problem.exact` (a SIVIA paving [LJMW97, Sect. 3.2]) evaluate that one test, so the
 membership of a point and the paving can never disagree.
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 """
 
 from __future__ import annotations
@@ -26,7 +31,7 @@ from optbound.sets import Box
 class Problem:
     """A set-membership problem: what an estimator sees, and the exact set it must bound.
 
-    Attributes
+    Parameters
     ----------
     family, name : str
         Family (e.g. ``"strip"``) and instance name, unique within the family and suite.
@@ -55,6 +60,19 @@ class Problem:
         ``optimal(problem) -> Ellipsoid``: the family's certified optimal outer ellipsoid,
         where it is not the S-procedure SDP of :attr:`intersection` (e.g. the SDP of a
         Minkowski sum, or the best of an SDP and the MVEE of the exact paving's boxes).
+
+    Examples
+    --------
+    >>> from optbound import problems
+    >>> p = problems.suite("tiny", families=["recursive"])[0]
+    >>> (p.family, p.dim, sorted(p.data))
+    ('recursive', 2, ['prior', 'strips'])
+    >>> from optbound.interval import Tri
+    >>> bool(p.member(p.truth)[0] == Tri.TRUE)
+    True
+    >>> lo, hi = p.volume_bracket()
+    >>> bool(0 < lo <= hi)
+    True
     """
 
     family: str
@@ -69,22 +87,58 @@ class Problem:
     intersection: tuple = field(default=(), repr=False)
     volume: Callable[[], tuple[float, float]] | None = field(default=None, repr=False)
     optimal: Callable[[Problem], Any] | None = field(default=None, repr=False)
-    _cache: dict = field(default_factory=dict, repr=False)
+    _cache: dict = field(default_factory=dict, repr=False, init=False)
 
     def member(self, X) -> np.ndarray:
-        """Membership of the float points ``X`` (m, n) in the true set, as Tri values.
+        """Decide the membership of the float points ``X`` in the true set, as Tri values.
 
         TRUE only if the point is proven in the set, FALSE only if proven outside (outward-
         rounded interval arithmetic on degenerate boxes); a point on the boundary may be
-        UNKNOWN. A single point (n,) gives a length-1 array.
+        UNKNOWN.
+
+        Parameters
+        ----------
+        X : array_like, shape (m, n) or (n,)
+            Float points, ``n`` = :attr:`dim`; a single point (n,) gives a length-1 array.
+
+        Returns
+        -------
+        np.ndarray of Tri, shape (m,)
+            The three-valued membership of each point.
+
+        Raises
+        ------
+        ValueError
+            If ``X`` is not real and finite or its shape is neither (m, :attr:`dim`) nor
+            (:attr:`dim`,).
         """
         pts, _ = v.points("X", X, self.dim)
         return point_test(self.test, pts)
 
     def exact(self, eps: float | None = None) -> Paving:
-        """The paving ``inner ⊂ true set ⊂ inner ∪ boundary`` of the true set in ``domain``.
+        """Pave the true set in :attr:`domain`: ``inner ⊂ true set ⊂ inner ∪ boundary``.
 
-        ``eps`` (default :attr:`eps`) is the box width where bisection stops. Cached per eps.
+        The SIVIA paving [LJMW97, Sect. 3.2] of :attr:`test`; cached per ``eps``.
+
+        Parameters
+        ----------
+        eps : float, optional
+            The box width where bisection stops; :attr:`eps` if None.
+
+        Returns
+        -------
+        Paving
+            The inner and boundary boxes of the true set.
+
+        Raises
+        ------
+        ValueError
+            If ``eps`` is not a real, finite, positive number.
+
+        References
+        ----------
+        .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+           inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
         """
         eps = self.eps if eps is None else v.finite_scalar("eps", eps)
         if eps <= 0:
@@ -95,22 +149,36 @@ class Problem:
         return self._cache[key]
 
     def volume_bracket(self) -> tuple[float, float]:
-        """Certified ``(lo, hi)`` bracket of the true set's volume: the family's closed form,
-        else the exact paving's inner and outer volumes (rounded outward)."""
+        """Bracket the true set's volume, certified.
+
+        Returns
+        -------
+        tuple of float
+            ``(lo, hi)`` with ``lo <= volume <= hi``: the family's closed form
+            (:attr:`volume`), else the exact paving's inner and outer volumes (rounded
+            outward).
+        """
         if self.volume is not None:
             return self.volume()
         return paving_volume_bracket(self.exact())
 
     def references(self) -> dict[str, Any]:
-        """Reference bounds of the true set, all certified to contain it.
+        """Compute the reference bounds of the true set, all certified to contain it.
 
-        - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has one,
-          else the S-procedure SDP optimum of :attr:`intersection`
-          (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
-          intersection) the certified MVEE of the exact paving's box corners
-          (``optimal.mvee``, which contains every box);
-        - ``"best_box"``: the hull of the exact paving's inner and boundary boxes (floats,
-          hence exact), the smallest box the paving can prove.
+        Cached: the second call costs nothing.
+
+        Returns
+        -------
+        dict of str to set
+            A copy of the cached references.
+
+            - ``"optimal_ellipsoid"``: the family's :attr:`optimal` reference where it has
+              one, else the S-procedure SDP optimum of :attr:`intersection`
+              (``optimal.outer_ellipsoid``, certified and inflated if needed), else (no
+              intersection) the certified MVEE of the exact paving's box corners
+              (``optimal.mvee``, which contains every box);
+            - ``"best_box"``: the hull of the exact paving's inner and boundary boxes
+              (floats, hence exact), the smallest box the paving can prove.
         """
         if "references" not in self._cache:
             self._cache["references"] = {
@@ -130,10 +198,20 @@ class Problem:
 
 
 def paving_corners(paving: Paving) -> np.ndarray:
-    """The vertices of the convex hull of the corners of a paving's inner and boundary boxes.
+    """Find the convex-hull vertices of the corners of a paving's inner and boundary boxes.
 
     An ellipsoid containing them contains every box, hence the paved set: the input of the
     MVEE reference (the hull's vertices alone give the same MVEE, far fewer points).
+
+    Parameters
+    ----------
+    paving : Paving
+        A paving with at least ``n + 1`` affinely independent box corners.
+
+    Returns
+    -------
+    np.ndarray, shape (k, n)
+        The hull's vertices.
     """
     from scipy.spatial import ConvexHull
 

@@ -8,6 +8,11 @@ estimator gets ``data = {"prior": E0, "strips": (S_1, ..., S_k)}`` (to fuse in t
 recursively or at once) and ``truth`` is the point. The true set is the intersection,
 described once by the conjunction of the sets' interval tests; its reference ellipsoid is
 the S-procedure SDP over all k strips at once (the benchmark's "batch SDP").
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -35,7 +40,27 @@ RELATIVE_EPS = {2: 1 / 128, 3: 1 / 32, 4: 1 / 12, 5: 1 / 8, 6: 1 / 6}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: seed, dimension, strip width, depths, repetition."""
+    """List the instance cells of a suite: seed, dimension, strip width, depths, repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem sequence (one problem per depth of ``ks``), keys ``seed``,
+        ``dim``, ``width``, ``ks`` (the depths) and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     dims, widths, ks, reps = SIZES[suite]
@@ -49,7 +74,28 @@ def tasks(suite: str, seed: int) -> list[dict]:
 def instance(
     seed: int, dim: int, width: float, k: int
 ) -> tuple[Ellipsoid, np.ndarray, list[Strip]]:
-    """Prior ellipsoid, true point and ``k`` strips of one instance, rebuilt from its seed."""
+    """Rebuild the prior ellipsoid, true point and ``k`` strips of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (``np.random.default_rng(seed)``).
+    dim : int
+        The dimension.
+    width : float
+        Normalised strip width (:func:`~optbound.problems.generators.strips_around`).
+    k : int
+        The number of strips.
+
+    Returns
+    -------
+    E0 : Ellipsoid
+        The prior.
+    point : np.ndarray, shape (dim,)
+        The true state, drawn in ``E0``.
+    strips : list of Strip
+        ``k`` strips, each containing ``point``.
+    """
     rng = np.random.default_rng(seed)
     E0 = random_ellipsoid(rng, dim, PRIOR_COND)
     point = E0.sample(1, rng)[0]
@@ -57,13 +103,35 @@ def instance(
 
 
 def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]:
-    """Boxes proven to contain ``E0 ∩ S_1 ∩ ... ∩ S_k``, one per depth ``k`` of ``ks``.
+    """Bound ``E0 ∩ S_1 ∩ ... ∩ S_k`` by a proven box, for each depth ``k`` of ``ks``.
 
     ``E0``'s box contracted by one pass over the strips in order, the box of a depth carried
-    to the next: each strip ``|a^T x - b| <= 1`` gives, for every coordinate ``i`` with
-    ``a_i != 0``, ``x_i ∈ (b + [-1, 1] - sum_{j != i} a_j X_j) / a_i`` in outward-rounded
-    interval arithmetic (forward-backward propagation, all coordinates at once), intersected
-    with ``X_i``.
+    to the next (see Notes).
+
+    Parameters
+    ----------
+    E0 : Ellipsoid
+        The prior.
+    strips : list of Strip
+        The measurement sequence.
+    ks : list of int
+        Increasing depths, each at most ``len(strips)``.
+
+    Returns
+    -------
+    list of Box
+        One box per depth, each proven to contain the intersection of ``E0`` and the first
+        ``k`` strips.
+
+    Notes
+    -----
+    Each strip ``|a^T x - b| <= 1`` contracts the box ``X`` coordinate by coordinate: for
+    every ``i`` with ``a_i != 0``::
+
+        x_i ∈ X_i ∩ (b + [-1, 1] - sum_{j != i} a_j X_j) / a_i
+
+    in outward-rounded interval arithmetic (forward-backward propagation, all coordinates at
+    once from the same ``X``).
     """
     prior = as_pseudo_ellipsoid(E0).bounding_box()  # outward-rounded: contains E0
     X, n, done, out = Interval(prior.lo, prior.hi), E0.dim, 0, []
@@ -86,8 +154,28 @@ def domain_boxes(E0: Ellipsoid, strips: list[Strip], ks: list[int]) -> list[Box]
 def problem(
     task: dict, k: int, E0: Ellipsoid, point: np.ndarray, strips: list[Strip], domain: Box
 ) -> Problem:
-    """The :class:`Problem` of depth ``k`` of one task (the first ``k`` strips), paved in
-    ``domain`` (a box proven to contain the true set, from :func:`domain_boxes`)."""
+    """Build the :class:`Problem` of depth ``k`` of one task: ``E0`` and the first ``k`` strips.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+    k : int
+        The depth: how many of ``strips`` the problem has.
+    E0 : Ellipsoid
+        The prior, from :func:`instance`.
+    point : np.ndarray
+        The true state, from :func:`instance`.
+    strips : list of Strip
+        The task's strips, from :func:`instance` (at least ``k``).
+    domain : Box
+        A box proven to contain the true set, from :func:`domain_boxes`: where it is paved.
+
+    Returns
+    -------
+    Problem
+        The problem of depth ``k``.
+    """
     sets = (E0, *strips[:k])
     tests = tuple(tri_test(S) for S in sets)
 
@@ -109,7 +197,25 @@ def problem(
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`, one per depth of its ``ks``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     out = []
     for task in tasks(suite, seed):
         E0, point, strips = instance(task["seed"], task["dim"], task["width"], max(task["ks"]))

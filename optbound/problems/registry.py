@@ -25,14 +25,32 @@ ALL_REGISTERED = "all-registered"
 
 
 def load(spec: str) -> Callable[[Any], Any]:
-    """The callable named by ``spec`` = ``"pkg.module:callable"`` (``callable`` may be dotted).
+    """Import the callable named by ``spec``.
+
+    Parameters
+    ----------
+    spec : str
+        ``"pkg.module:callable"``; ``callable`` may be dotted (``"pkg.module:Class.method"``).
+
+    Returns
+    -------
+    callable
+        The named object.
 
     Raises
     ------
+    TypeError
+        If ``spec`` is not a str.
     ValueError
         If ``spec`` is not of that form, the module cannot be imported (or raises while
-        importing), it has no such
-        attribute, or the attribute is not callable; the message names ``spec``.
+        importing), it has no such attribute, or the attribute is not callable; the message
+        names ``spec``.
+
+    Examples
+    --------
+    >>> from optbound.problems.registry import load
+    >>> load("optbound.problems.estimators:analytic_trace").__name__
+    'analytic_trace'
     """
     if not isinstance(spec, str):
         raise TypeError(f"spec must be a str 'pkg.module:callable', got {type(spec).__name__}")
@@ -58,16 +76,39 @@ def load(spec: str) -> Callable[[Any], Any]:
 
 
 def registered() -> dict[str, str]:
-    """Name -> ``"pkg.module:callable"`` of every estimator registered under :data:`GROUP`,
-    sorted by name (the entry points of every installed distribution)."""
+    """List the estimators registered under :data:`GROUP` by installed distributions.
+
+    Returns
+    -------
+    dict of str to str
+        Entry-point name -> ``"pkg.module:callable"``, sorted by name (the entry points of
+        every installed distribution).
+    """
     return {ep.name: ep.value for ep in sorted(entry_points(group=GROUP), key=lambda e: e.name)}
 
 
 def resolve(specs: list[str]) -> dict[str, Callable[[Any], Any]]:
-    """Name -> callable for ``--estimator`` values, each a ``"pkg.module:callable"`` spec (named
-    by itself), the name of a registered estimator, or :data:`ALL_REGISTERED` (every one of
-    :func:`registered`, by its entry-point name). Every callable is loaded here, so a bad spec
-    fails before any work (ValueError from :func:`load`).
+    """Load the estimators named by ``--estimator`` values.
+
+    Every callable is loaded here, so a bad spec fails before any work.
+
+    Parameters
+    ----------
+    specs : list of str
+        Each a ``"pkg.module:callable"`` spec (named by itself), the name of a registered
+        estimator, or :data:`ALL_REGISTERED` (every one of :func:`registered`, by its
+        entry-point name).
+
+    Returns
+    -------
+    dict of str to callable
+        Name -> estimator, in the order of ``specs``.
+
+    Raises
+    ------
+    ValueError
+        If a spec is neither ``"pkg.module:callable"`` nor a registered name, or :func:`load`
+        rejects it.
     """
     named: dict[str, str] = {}
     for spec in specs:

@@ -14,6 +14,13 @@ The true set is ``{q ∈ X0 : f(q) ∈ D}`` [LJMW97, eq. (3)], described once by
 own tests (:func:`optbound.localization.sonar.sonar_tests`, the ones ``sonar.localize``
 paves) and ``X0``'s. Its domain is the hull of a coarse paving of ``X0`` (1/COARSE of its
 widest side), paved at 1/RELATIVE of the hull's widest side.
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+   localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -40,7 +47,32 @@ CLEARANCE, BELT_SONARS = 0.6, 8
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instances of a suite: ``q*`` of [LJMW97, Sect. 4], then random poses per room."""
+    """List the instance cells of a suite: ``q*`` of [LJMW97, Sect. 4], then random poses per room.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``room`` ("triangle" or "belt"), ``paper_pose``
+        and ``index``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     n_triangle, n_belt = SIZES[suite]
@@ -70,7 +102,29 @@ def _random_pose(rng: np.random.Generator, world: np.ndarray) -> np.ndarray:
 
 
 def instance(seed: int, room: str, paper_pose: bool) -> dict:
-    """World, sonars, ranges, prior box and true pose of one instance, rebuilt from its seed."""
+    """Rebuild the world, sonars, ranges, prior box and true pose of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (``np.random.default_rng(seed)``).
+    room : {"triangle", "belt"}
+        The room (:mod:`optbound.scenarios.rooms`).
+    paper_pose : bool
+        True for the pose ``q*`` of [LJMW97, Sect. 4] with noise-free ranges, False for a
+        random pose with ranges drawn within the sonars' relative accuracy.
+
+    Returns
+    -------
+    dict
+        ``"world"`` (s, 2, 2) walls, ``"sonars"``, ``"ranges"`` (t,), ``"prior_box"`` and
+        ``"truth"``, the pose (x, y, theta).
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    """
     rng = np.random.default_rng(seed)
     world, belt = _room(room)
     pose = np.array(rooms.TRIANGLE_POSE) if paper_pose else _random_pose(rng, world)
@@ -89,7 +143,23 @@ def instance(seed: int, room: str, paper_pose: bool) -> dict:
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+
+    Raises
+    ------
+    RuntimeError
+        If the true set is proven empty (a simulation bug: the truth is in it).
+    """
     inst = instance(task["seed"], task["room"], task["paper_pose"])
     tests = (
         *sonar.sonar_tests(inst["world"], inst["sonars"], inst["ranges"]),
@@ -124,5 +194,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

@@ -6,6 +6,11 @@ partial (only one plane cuts: in effect a half-space) [HS96, Sect. 4]. The estim
 ``data = {"ellipsoid": E, "strip": S}``: the prior set and the measurement. The true set is
 ``E ∩ S``, described once by the conjunction of the two sets' interval tests; its volume
 has a closed form (:func:`~optbound.compare.size.ellipsoid_strip_volume_bracket`).
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -35,7 +40,26 @@ RELATIVE_EPS = {2: 1 / 128, 3: 1 / 32, 4: 1 / 12, 5: 1 / 8, 6: 1 / 6}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: seed, dimension, condition number, strip kind, repetition."""
+    """List the instance cells of a suite: seed, dimension, condition, strip kind, repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``dim``, ``cond``, ``kind`` and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     dims, conds, reps = SIZES[suite]
@@ -47,14 +71,44 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(seed: int, dim: int, cond: float, kind: str) -> tuple[Ellipsoid, Strip]:
-    """The ellipsoid and strip of one instance, rebuilt from its seed."""
+    """Rebuild the ellipsoid and strip of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (``np.random.default_rng(seed)``).
+    dim : int
+        The dimension.
+    cond : float
+        Condition number of the ellipsoid's shape matrix.
+    kind : {"narrow", "wide", "off-centre", "partial"}
+        Where the strip cuts (:func:`~optbound.problems.generators.strip_bounds`).
+
+    Returns
+    -------
+    E : Ellipsoid
+        The prior.
+    S : Strip
+        The measurement.
+    """
     rng = np.random.default_rng(seed)
     E = random_ellipsoid(rng, dim, cond)
     return E, random_strip(rng, E, kind)
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     E, S = instance(task["seed"], task["dim"], task["cond"], task["kind"])
     tests = (tri_test(E), tri_test(S))
 
@@ -78,5 +132,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

@@ -17,6 +17,11 @@ built on the model's three-valued segment test
 LUVIA use): a measurement is refuted on a box when the whole team-mate box refutes it, and
 proven when one of WITNESSES × WITNESSES witness points of the team-mate box proves it for
 every point of the box. The truth lies in the set, since E⁻ ⊂ E ⊂ E⁺.
+
+References
+----------
+.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+   set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations
@@ -48,7 +53,26 @@ RELATIVE = 64
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
-    """The instance cells of a suite: seed, robots, obstacles, repetition."""
+    """List the instance cells of a suite: seed, robots, obstacles, repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int
+        The suite seed (``optbound bench --seed``); the instance seeds come from
+        :func:`~optbound.problems.generators.task_seeds`.
+
+    Returns
+    -------
+    list of dict
+        One cell per problem, keys ``seed``, ``robots``, ``obstacles`` and ``rep``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
     cells, reps = SIZES[suite]
@@ -60,7 +84,24 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(seed: int, robots: int, obstacles: int) -> dict:
-    """Environment, boxes, measurements and truth of one instance, rebuilt from its seed."""
+    """Rebuild the environment, boxes, measurements and truth of one instance from its seed.
+
+    Parameters
+    ----------
+    seed : int
+        The instance seed (of the simulation and of the boxes).
+    robots : int
+        Robots in the team.
+    obstacles : int
+        Obstacles in the room.
+
+    Returns
+    -------
+    dict
+        ``"robot"`` (the one whose position is sought), ``"boxes"`` (robots, 2, 2) position
+        boxes of the team, ``"visibility"`` (the robot's row of the visibility matrix),
+        ``"environment"`` and ``"truth"`` (the robot's position).
+    """
     run = arena.simulate(robots, obstacles, STEPS, seed)
     rng = np.random.default_rng(seed)
     robot = int(rng.integers(robots))
@@ -83,7 +124,26 @@ def _pairs(boxes: np.ndarray, others: np.ndarray) -> tuple[np.ndarray, np.ndarra
 
 
 def visibility_set_test(robot: int, boxes: np.ndarray, y: np.ndarray, env) -> callable:
-    """Three-valued test of the true set on boxes of the robot's position (module docstring)."""
+    """Build the three-valued test of the true set on boxes of the robot's position.
+
+    See the module docstring for the set and its proofs.
+
+    Parameters
+    ----------
+    robot : int
+        The index of the robot whose position is sought.
+    boxes : np.ndarray, shape (m, 2, 2)
+        The team's position boxes (``[lo, hi]`` per coordinate).
+    y : np.ndarray, shape (m,)
+        The robot's visibility measurements: ``y[j]`` whether it sees robot ``j``.
+    env : Environment
+        The room, with its inner and outer obstacle polygons.
+
+    Returns
+    -------
+    callable
+        ``test(x, y) -> Tri array`` on ``Interval`` coordinates.
+    """
     inner, outer = as_polygons(env.inner), as_polygons(env.outer)
     own = tri_test(Box(boxes[robot, :, 0], boxes[robot, :, 1]))
     u = (np.arange(WITNESSES) + 0.5) / WITNESSES
@@ -127,7 +187,18 @@ def visibility_set_test(robot: int, boxes: np.ndarray, y: np.ndarray, env) -> ca
 
 
 def problem(task: dict) -> Problem:
-    """The :class:`Problem` of one task of :func:`tasks`."""
+    """Build the :class:`Problem` of one task of :func:`tasks`.
+
+    Parameters
+    ----------
+    task : dict
+        A cell of :func:`tasks`.
+
+    Returns
+    -------
+    Problem
+        The problem, its data rebuilt from the task's seed.
+    """
     inst = instance(task["seed"], task["robots"], task["obstacles"])
     robot, boxes = inst["robot"], inst["boxes"]
     domain = Box(boxes[robot, :, 0], boxes[robot, :, 1])
@@ -150,5 +221,23 @@ def problem(task: dict) -> Problem:
 
 
 def problems(suite: str, seed: int = 0) -> list[Problem]:
-    """Every problem of the family in a suite, seeded like ``optbound bench``."""
+    """Build every problem of the family in a suite, seeded like ``optbound bench``.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        The suite size.
+    seed : int, default 0
+        The suite seed (``optbound bench --seed``).
+
+    Returns
+    -------
+    list of Problem
+        One problem per cell of :func:`tasks`.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     return [problem(task) for task in tasks(suite, seed)]

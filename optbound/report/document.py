@@ -60,7 +60,31 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
     """Write report.md, the PNG figures and the CSV files of ``results`` into ``out_dir``.
 
     Only the results dict is read, so ``optbound report DIR`` can rebuild everything from
-    ``DIR/results.json``. Returns the path of report.md.
+    ``DIR/results.json``.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`~optbound.report.load_results`).
+    out_dir : str or Path
+        The output directory, created if needed.
+
+    Returns
+    -------
+    Path
+        The path of report.md.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from optbound.report import write_report
+    >>> meta = {"suite": "tiny", "seed": 0, "jobs": 1, "started": "2026-01-01T00:00",
+    ...         "wall_time_s": 1.0, "optbound": "0.1", "python": "3.12", "numpy": "2.1",
+    ...         "machine": "Linux x86_64"}
+    >>> with tempfile.TemporaryDirectory() as out:
+    ...     path = write_report({"schema": 1, "meta": meta, "families": {}}, out)
+    ...     path.name, path.read_text().splitlines()[0]
+    ('report.md', '# optbound benchmark report')
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -291,7 +315,22 @@ PAPERS_NOTE = (
 
 
 def papers_section(records: list[dict], level: int = 3) -> list[str]:
-    """Each script's Markdown, its headings moved to ``level``, then its figures."""
+    """Render the paper reproductions: each script's Markdown, then its figures.
+
+    Parameters
+    ----------
+    records : list of dict
+        The records of the ``papers`` family, one per script: ``"paper"``, ``"script"``,
+        ``"quick"``, ``"markdown"`` and ``"figures"`` (paths relative to the report).
+    level : int, default 3
+        The heading level the top headings of each script's Markdown are moved to.
+
+    Returns
+    -------
+    list of str
+        Markdown parts: :data:`PAPERS_NOTE`, then per script a line naming it, its Markdown
+        and its figures.
+    """
     parts = [PAPERS_NOTE]
     for rec in records:
         variant = " (quick variant)" if rec["quick"] else ""

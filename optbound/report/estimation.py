@@ -36,8 +36,19 @@ def _measure(rec: dict) -> str:
 
 
 def estimation_section(records: list[dict]) -> list[str]:
-    """The INTRO, then per system a table: method, the ratio at three steps, the MVEE ratio
-    and proven containments (2-D), ms per step."""
+    """Render the report's section on the observers of linear systems.
+
+    Parameters
+    ----------
+    records : list of dict
+        The records of the ``estimation`` family, one per system, method and step.
+
+    Returns
+    -------
+    list of str
+        Markdown parts: :data:`INTRO`, then per system a title and a table: method, the
+        ratio at three steps, the MVEE ratio and proven containments (2-D), ms per step.
+    """
     parts = [INTRO]
     for (system,), recs in group(records, ("system",)).items():
         done = [r for r in recs if r["error"] is None]
@@ -72,7 +83,19 @@ def estimation_section(records: list[dict]) -> list[str]:
 
 
 def estimation_rows(records: list[dict]) -> list[tuple[str, str]]:
-    """Headline: each method's ratio at the last step of each 2-D system with an exact area."""
+    """Summarise the observers for the headline.
+
+    Parameters
+    ----------
+    records : list of dict
+        The records of the ``estimation`` family.
+
+    Returns
+    -------
+    list of tuple of (str, str)
+        One ``(measure, value)`` row per 2-D system with an exact area: each method's ratio
+        at the last step.
+    """
     rows = []
     for (system,), recs in group(records, ("system",)).items():
         done = [r for r in recs if r["error"] is None and r.get("measure") == "area"]

@@ -15,7 +15,20 @@ NOTE = (
 
 
 def estimators_section(results: dict) -> list[str]:
-    """Markdown parts of the section (empty when the run had no ``--estimator``)."""
+    """Render the section "Your estimators".
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves; its ``"estimators"`` entries hold
+        the rows of :func:`optbound.evaluate` per estimator.
+
+    Returns
+    -------
+    list of str
+        Markdown parts: the title, :data:`NOTE` and one table per estimator; empty when the
+        run had no ``--estimator``.
+    """
     entries = results.get("estimators") or []
     if not entries:
         return []

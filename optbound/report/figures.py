@@ -38,7 +38,13 @@ ZOOM_BELOW = 0.3
 
 
 def pyplot():
-    """matplotlib.pyplot with the non-interactive Agg backend (works without a display)."""
+    """Import matplotlib.pyplot with the non-interactive Agg backend (works without a display).
+
+    Returns
+    -------
+    module
+        ``matplotlib.pyplot``.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -62,7 +68,23 @@ def _gap_bins(gaps: np.ndarray) -> np.ndarray:
 
 
 def ratio_histograms(records: list[dict], path: Path, title: str) -> Path:
-    """One panel per criterion: histogram of ``ratio - 1`` (symlog axis), stacked by variant."""
+    """Plot one panel per criterion: histogram of ``ratio - 1`` (symlog axis), stacked by variant.
+
+    Parameters
+    ----------
+    records : list of dict
+        Tightness records with ``"criterion"``, ``"reference"``, ``"variant"`` and
+        ``"ratio"`` (records with a None ratio are left out).
+    path : Path
+        The PNG file to write.
+    title : str
+        The figure's title.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     plt = pyplot()
     panels = group([r for r in records if r["ratio"] is not None], ("criterion", "reference"))
     ncols = min(3, len(panels))
@@ -113,8 +135,25 @@ def _gap_panel(ax, records: list[dict], criterion: str, reference: str) -> None:
 
 
 def recursive_plot(records: list[dict], path: Path) -> Path:
-    """Ratio of the recursive filter to the batch SDP vs k (median line, min-max band per
-    dimension), and its median ratio to the lower bound on the optimum (dotted)."""
+    """Plot the ratio of the recursive filter to the batch SDP against the depth k.
+
+    One panel per strip width: per dimension the median line and the min-max band, and the
+    median ratio to the lower bound on the optimum (dotted; degenerate lower bounds left
+    out, :func:`~optbound.report.summary.without_degenerate_lower`).
+
+    Parameters
+    ----------
+    records : list of dict
+        Records of the ``recursive`` family, with ``"variant"``, ``"dim"``, ``"k"``,
+        ``"ratio"`` and ``"lower_ratio"``.
+    path : Path
+        The PNG file to write.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     plt = pyplot()
     cleaned, flagged = without_degenerate_lower(records)
     by_variant = group([r for r in cleaned if r["ratio"] is not None], ("variant",))
@@ -323,7 +362,22 @@ def _draw_strip(ax, S: Strip, lo: np.ndarray, hi: np.ndarray) -> None:
 
 
 def instance_pictures(figures: list[dict], path: Path) -> Path:
-    """Each 2-D instance: the exact set shaded on a fine grid, every bound drawn over it."""
+    """Draw each 2-D instance: the exact set shaded on a fine grid, every bound drawn over it.
+
+    Parameters
+    ----------
+    figures : list of dict
+        Instance specs as the tightness families record them: ``"title"``, ``"seed"``,
+        ``"bounds"`` (label, centre and shape of each ellipse) and either ``"summands"`` (a
+        Minkowski sum) or ``"ellipsoid"`` and ``"strips"`` (a prior cut by strips).
+    path : Path
+        The PNG file to write.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     plt = pyplot()
     from matplotlib.patches import Patch
 

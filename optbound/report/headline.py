@@ -14,7 +14,23 @@ HEADERS = ("measure", "value")
 
 
 def headline_rows(results: dict) -> list[tuple[str, str]]:
-    """``(measure, value)`` rows summarising ``results``."""
+    """Summarise ``results`` as ``(measure, value)`` rows.
+
+    One or more rows per family: the ratio statistics per criterion and reference of a
+    tightness family, three depths of the recursive family, one row per paper, the
+    estimation rows (:func:`~optbound.report.estimation.estimation_rows`), the speed ratios;
+    a skipped family gives its reason.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`~optbound.report.load_results`).
+
+    Returns
+    -------
+    list of tuple of (str, str)
+        The rows, family by family.
+    """
     rows = []
     for name, fam in results["families"].items():
         if fam["status"] != "ok":
@@ -68,7 +84,24 @@ def _paper_rows(records: list[dict]) -> list[tuple[str, str]]:
 
 
 def stats_text(s: dict) -> str:
-    """``median …, max … (n=…)`` plus the number of refused SDP references, if any."""
+    """Format ratio statistics as ``median …, max … (n=…)``.
+
+    Parameters
+    ----------
+    s : dict
+        Statistics from :func:`~optbound.report.summary.ratio_stats`.
+
+    Returns
+    -------
+    str
+        The median and max, plus the number of refused SDP references, if any.
+
+    Examples
+    --------
+    >>> from optbound.report.headline import stats_text
+    >>> stats_text({"n": 3, "missing": 1, "median": 1.25, "max": 2.0})
+    'median 1.25, max 2 (n=3); 1 SDP solves refused'
+    """
     if not s["n"]:
         return f"no reference: all {s['missing']} SDP solves refused"
     text = f"median {fmt_ratio(s['median'])}, max {fmt_ratio(s['max'])} (n={s['n']})"
@@ -85,4 +118,16 @@ def _speed_rows(fam: dict) -> list[tuple[str, str]]:
 
 
 def note_title(fam: dict) -> str:
+    """Title a speed family's notes: its title without the ``"Speed: "`` prefix.
+
+    Parameters
+    ----------
+    fam : dict
+        A family entry of the results dict, with a ``"title"``.
+
+    Returns
+    -------
+    str
+        The shortened title.
+    """
     return fam["title"].removeprefix("Speed: ")

@@ -21,8 +21,19 @@ DEFAULT_SUITE = {"suite": "quick", "seed": 0}
 
 
 def headline_markdown(results: dict) -> str:
-    """The block placed between the markers: where, when and on what the numbers were
-    measured, then the table."""
+    """Render the block placed between the markers.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`~optbound.report.load_results`).
+
+    Returns
+    -------
+    str
+        Where, when and on what the numbers were measured, then the headline table
+        (:func:`~optbound.report.headline.headline_rows`).
+    """
     m = results["meta"]
     return (
         f"Last `optbound bench --suite {m['suite']} --seed {m['seed']}` run, written by "
@@ -33,7 +44,26 @@ def headline_markdown(results: dict) -> str:
 
 
 def machine_text(meta: dict) -> str:
-    """``Linux x86_64, <CPU model>, 2 CPUs, load average 1.2 / 0.9 / 0.5 at the end``."""
+    """Describe the machine a run was measured on.
+
+    Parameters
+    ----------
+    meta : dict
+        The results' ``"meta"``: ``"machine"``, and optionally ``"processor"``, ``"cpus"``
+        and ``"load_average"``.
+
+    Returns
+    -------
+    str
+        E.g. ``Linux x86_64, <CPU model>, 2 CPUs, 1/5/15-min load average 1.20 / 0.90 /
+        0.50 at the end of the run``.
+
+    Examples
+    --------
+    >>> from optbound.report.readme import machine_text
+    >>> machine_text({"machine": "Linux x86_64", "cpus": 2, "load_average": [1.2, 0.9, 0.5]})
+    'Linux x86_64, 2 CPUs, 1/5/15-min load average 1.20 / 0.90 / 0.50 at the end of the run'
+    """
     parts = [meta["machine"]]
     if meta.get("processor"):
         parts.append(meta["processor"])
@@ -46,7 +76,28 @@ def machine_text(meta: dict) -> str:
 
 
 def headline_refusal(meta: dict) -> str | None:
-    """Why a run with this ``meta`` may not write the bench headline, or None if it may."""
+    """Explain why a run with this ``meta`` may not write the bench headline.
+
+    Only a complete run of the default suite (:data:`DEFAULT_SUITE`) may.
+
+    Parameters
+    ----------
+    meta : dict
+        The results' ``"meta"``: ``"suite"``, ``"seed"`` and ``"complete"``.
+
+    Returns
+    -------
+    str or None
+        The reason, or None if the run may write it.
+
+    Examples
+    --------
+    >>> from optbound.report import headline_refusal
+    >>> headline_refusal({"suite": "quick", "seed": 0, "complete": True}) is None
+    True
+    >>> headline_refusal({"suite": "tiny", "seed": 0, "complete": True})
+    'the bench headline comes from the default suite only, not --suite tiny'
+    """
     differs = [f"--{k} {meta.get(k)}" for k, v in DEFAULT_SUITE.items() if meta.get(k) != v]
     if differs:
         return f"the bench headline comes from the default suite only, not {' '.join(differs)}"
@@ -56,7 +107,19 @@ def headline_refusal(meta: dict) -> str | None:
 
 
 def update_readme(path: str | Path, results: dict) -> bool:
-    """Replace the text between the headline markers of ``path``; False if it has no markers.
+    """Replace the text between the headline markers of ``path`` by the run's headline.
+
+    Parameters
+    ----------
+    path : str or Path
+        The page holding the markers :data:`BEGIN` and :data:`END`.
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`~optbound.report.load_results`).
+
+    Returns
+    -------
+    bool
+        True if the page was rewritten; False if it has no markers.
 
     Raises
     ------
@@ -77,8 +140,14 @@ def update_readme(path: str | Path, results: dict) -> bool:
 
 
 def source_readme() -> Path | None:
-    """The page holding the headline markers, ``docs/benchmarks.md`` of the source checkout
-    this package runs from (editable install), if any."""
+    """Find the page holding the headline markers in the source checkout, if any.
+
+    Returns
+    -------
+    Path or None
+        ``docs/benchmarks.md`` of the source checkout this package runs from (editable
+        install) if it holds :data:`BEGIN`; None otherwise.
+    """
     import optbound
 
     candidate = Path(optbound.__file__).resolve().parents[1] / "docs" / "benchmarks.md"

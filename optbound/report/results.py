@@ -18,6 +18,33 @@ def save_results(results: dict, out_dir: str | Path) -> Path:
 
     A family's ``attachments`` (``{relative path: base64 bytes}``, e.g. the figures of the
     papers' scripts) are written as files under ``out_dir``; the JSON keeps their names.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`load_results`).
+    out_dir : str or Path
+        The output directory, created if needed.
+
+    Returns
+    -------
+    Path
+        The path of ``results.json``.
+
+    Raises
+    ------
+    ValueError
+        If ``results`` holds a NaN or infinite float (strict JSON).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from optbound.report import load_results, save_results
+    >>> results = {"schema": 1, "meta": {"suite": "tiny"}, "families": {}}
+    >>> with tempfile.TemporaryDirectory() as out:
+    ...     path = save_results(results, out)
+    ...     load_results(out) == results, path.name
+    (True, 'results.json')
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -39,6 +66,16 @@ def save_results(results: dict, out_dir: str | Path) -> Path:
 
 def load_results(directory: str | Path) -> dict:
     """Load ``directory/results.json`` written by ``optbound bench``.
+
+    Parameters
+    ----------
+    directory : str or Path
+        The output directory of a run.
+
+    Returns
+    -------
+    dict
+        The results, with their ``"schema"``, ``"meta"`` and ``"families"``.
 
     Raises
     ------
@@ -65,7 +102,20 @@ def load_results(directory: str | Path) -> dict:
 
 
 def records_of(results: dict, kinds: tuple[str, ...]) -> list[dict]:
-    """All records of the families whose kind is in ``kinds``, in report order."""
+    """Collect the records of the families whose kind is in ``kinds``, in report order.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`load_results`).
+    kinds : tuple of str
+        Family kinds, e.g. ``("tightness", "recursive")``.
+
+    Returns
+    -------
+    list of dict
+        The records, family by family.
+    """
     return [
         rec
         for fam in results["families"].values()
@@ -75,8 +125,24 @@ def records_of(results: dict, kinds: tuple[str, ...]) -> list[dict]:
 
 
 def write_csv(results: dict, out_dir: str | Path) -> list[Path]:
-    """Write ``tightness.csv`` (tightness and recursive records), ``speed.csv`` and
-    ``estimation.csv`` (observers of linear systems, per step)."""
+    """Write the records as CSV sheets, one row per record.
+
+    ``tightness.csv`` (tightness and recursive records), ``speed.csv`` and
+    ``estimation.csv`` (observers of linear systems, per step); a sheet without records is
+    not written. Columns: :data:`CSV_FIRST` present, then the other keys alphabetically.
+
+    Parameters
+    ----------
+    results : dict
+        The results dict that ``optbound bench`` saves (:func:`load_results`).
+    out_dir : str or Path
+        An existing output directory.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
     written = []
     sheets = (
         ("tightness", ("tightness", "recursive")),

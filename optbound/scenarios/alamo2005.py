@@ -34,5 +34,24 @@ REFERENCE = (
 
 
 def system() -> LinearSystem:
-    """The example's system."""
+    """Build the example's system ``(A, C, W, V)`` [ABC05, Sect. 7.1].
+
+    Returns
+    -------
+    LinearSystem
+        ``x_{k+1} = A x_k + w_k``, ``y_k = C x_k + v_k`` with ``w_k`` in :data:`W` and
+        ``v_k`` in :data:`V`.
+
+    References
+    ----------
+    .. [ABC05] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by
+       zonotopes", Automatica 41(6):1035-1043, 2005.
+
+    Examples
+    --------
+    >>> from optbound.scenarios import alamo2005
+    >>> sys = alamo2005.system()
+    >>> sys.A.tolist(), len(alamo2005.MEASUREMENTS)
+    ([[0.0, -0.5], [1.0, 1.0]], 20)
+    """
     return LinearSystem(A, C, W, V)

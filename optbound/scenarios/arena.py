@@ -16,6 +16,11 @@ one at a time, each with stated alternatives: ``layout="random"`` draws 11 conve
 and 11 start positions from the run's seed (a different room per seed, same rules as the
 designed one), ``turn`` the motion (0: straight lines, a new random heading when blocked),
 ``heading_error`` the compass bound and ``box_offset`` where the truth sits in its initial box.
+
+References
+----------
+.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+   set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations
@@ -66,18 +71,24 @@ STARTS = np.array(
 class Setting:
     """The factors of a simulated run; the defaults are the designed room and the paper's sensing.
 
-    Attributes
+    Parameters
     ----------
-    layout
+    layout : {"designed", "random"}, default "designed"
         ``"designed"`` (:data:`OBSTACLES`, :data:`STARTS`) or ``"random"`` (drawn from the
         seed by :func:`random_layout`).
-    turn
+    turn : float, default TURN
         Standard deviation (radians) of the heading's random walk per step; 0 gives straight
         lines with a new random heading when blocked.
-    heading_error
+    heading_error : float, default HEADING_ERROR
         Compass error bound (radians); the paper's is 2.5°.
-    box_offset
+    box_offset : {"random", "centre"}, default "random"
         ``"random"`` (the truth anywhere at least 5 cm inside its 1 m box) or ``"centre"``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``layout`` or ``box_offset``, or a negative or non-finite ``turn`` or
+        ``heading_error``.
     """
 
     layout: str = "designed"
@@ -98,7 +109,25 @@ class Setting:
 
 @dataclass(frozen=True)
 class Run:
-    """One simulated run: the truth and what the robots measure."""
+    """One simulated run of ``m`` robots over ``K`` steps: the truth and what the robots measure.
+
+    Parameters
+    ----------
+    env : Environment
+        The room: E⁻ ⊂ E ⊂ E⁺ of the obstacles in use.
+    truth : np.ndarray, shape (K + 1, m, 2)
+        True positions.
+    boxes0 : np.ndarray, shape (m, 2, 2)
+        Initial 1 m boxes containing ``truth[0]``.
+    distance : np.ndarray, shape (2,)
+        Known interval of each step's travel.
+    headings : np.ndarray, shape (K, m)
+        Compass readings.
+    visibility : np.ndarray, shape (K, m, m)
+        Measurements ``y_il`` after each step (whether robot ``i`` sees robot ``l``).
+    heading_error : float, default HEADING_ERROR
+        The compass bound of ``headings`` (radians).
+    """
 
     env: Environment
     truth: np.ndarray  # (K + 1, m, 2) true positions
@@ -110,9 +139,25 @@ class Run:
 
 
 def environment(n_obstacles: int, obstacles=OBSTACLES) -> Environment:
-    """E⁻ ⊂ E ⊂ E⁺ made of the first ``n_obstacles`` obstacles (margin 5 cm).
+    """Build E⁻ ⊂ E ⊂ E⁺ made of the first ``n_obstacles`` obstacles (margin 5 cm).
 
-    ``obstacles``: the designed :data:`OBSTACLES` (default) or a :func:`random_layout`'s.
+    Parameters
+    ----------
+    n_obstacles : int
+        How many of ``obstacles`` are in the room, from 0 to ``len(obstacles)``.
+    obstacles : sequence of np.ndarray, default OBSTACLES
+        Convex polygons (counter-clockwise vertices): the designed :data:`OBSTACLES` or a
+        :func:`random_layout`'s.
+
+    Returns
+    -------
+    Environment
+        The exact obstacles and their shrunk and grown versions (by :data:`MARGIN`).
+
+    Raises
+    ------
+    ValueError
+        If ``n_obstacles`` is out of range.
     """
     if not 0 <= n_obstacles <= len(obstacles):
         raise ValueError(f"n_obstacles must be in [0, {len(obstacles)}], got {n_obstacles}")
@@ -141,6 +186,18 @@ def random_layout(seed: int) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
     them, inside ``[0.4, 9.6]²`` and with bounding boxes at least 0.6 m apart (robots pass
     between any two); starts at least 0.3 m (sup norm) from every obstacle and the walls.
     The stream is independent of the one :func:`simulate` draws the paths from.
+
+    Parameters
+    ----------
+    seed : int
+        The run's seed.
+
+    Returns
+    -------
+    obstacles : tuple of np.ndarray
+        11 convex polygons (counter-clockwise vertices).
+    starts : np.ndarray, shape (11, 2)
+        Start positions in free space.
     """
     rng = np.random.default_rng([seed, 1])
     placed: list[np.ndarray] = []
@@ -169,10 +226,47 @@ def _free(points: np.ndarray, obstacles, clearance: float = CLEARANCE) -> np.nda
 def simulate(
     n_robots: int, n_obstacles: int, steps: int, seed: int, setting: Setting | None = None
 ) -> Run:
-    """Seeded run of ``n_robots`` robots among the first ``n_obstacles`` obstacles.
+    """Simulate a seeded run of ``n_robots`` robots among the first ``n_obstacles`` obstacles.
 
-    ``setting`` (default :class:`Setting()`: the designed room, the paper's sensing) chooses
-    the factors; with ``layout="random"`` the room itself is drawn from ``seed``.
+    Parameters
+    ----------
+    n_robots : int
+        Robots in the team, from 1 to 11 (each starts at one of the layout's starts).
+    n_obstacles : int
+        Obstacles in use, from 0 to 11.
+    steps : int
+        Simulated steps (>= 0).
+    seed : int
+        Fixes the paths, the measurement noise and the initial boxes (and the room, with
+        ``layout="random"``).
+    setting : Setting, optional
+        The factors; default ``Setting()``: the designed room, the paper's sensing.
+
+    Returns
+    -------
+    Run
+        The truth and the measurements.
+
+    Raises
+    ------
+    TypeError
+        If ``setting`` is not a :class:`Setting`.
+    ValueError
+        If ``n_robots``, ``n_obstacles`` or ``steps`` is out of range.
+    RuntimeError
+        If a robot finds no free heading in 50 draws.
+
+    References
+    ----------
+    .. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+       set-membership approach using a visibility information", ICINCO, 2012.
+
+    Examples
+    --------
+    >>> from optbound.scenarios import arena
+    >>> run = arena.simulate(n_robots=3, n_obstacles=6, steps=4, seed=0)
+    >>> run.truth.shape, run.visibility.shape
+    ((5, 3, 2), (4, 3, 3))
     """
     setting = Setting() if setting is None else setting
     if not isinstance(setting, Setting):

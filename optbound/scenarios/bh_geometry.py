@@ -6,6 +6,11 @@
 restate it. The paper's figures are lost, so nothing beyond these numbers is reproduced.
 :func:`random_instance` is **our design**: random landmark triples and vehicles with the
 same pairs, for sweeps. The model they feed is :mod:`optbound.localization.relative_bearing`.
+
+References
+----------
+.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -26,7 +31,34 @@ EPS_DEG = 4.0
 
 
 def sect5_instance() -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
-    """The noise-free instance of [BH, Sect. V]: ``(landmarks, pairs, gammas, eps, vehicle)``."""
+    """Build the noise-free instance of [BH, Sect. V].
+
+    Returns
+    -------
+    landmarks : np.ndarray, shape (3, 2)
+        :data:`LANDMARKS`.
+    pairs : list of tuple of int
+        :data:`PAIRS` (0-based landmark indices).
+    gammas : np.ndarray, shape (3,)
+        The noise-free relative bearings of the pairs [rad] (90°, 45°, -135°).
+    eps : float
+        The noise bound [rad] (:data:`EPS_DEG`).
+    vehicle : np.ndarray, shape (2,)
+        :data:`VEHICLE`.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound.scenarios import bh_geometry
+    >>> landmarks, pairs, gammas, eps, vehicle = bh_geometry.sect5_instance()
+    >>> np.degrees(gammas).round(6).tolist()
+    [90.0, 45.0, -135.0]
+    """
     gammas = bearings(VEHICLE, LANDMARKS, PAIRS)
     return LANDMARKS.copy(), list(PAIRS), gammas, float(np.radians(EPS_DEG)), VEHICLE.copy()
 
@@ -34,12 +66,36 @@ def sect5_instance() -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
 def random_instance(
     rng: np.random.Generator, pairs=PAIRS
 ) -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
-    """Random landmark triple and vehicle, eps in [1°, 8°], uniform noise in [-eps, eps].
+    """Draw a random landmark triple and vehicle, eps in [1°, 8°], noise uniform in [-eps, eps].
 
-    Returns ``(landmarks, pairs, gammas, eps, vehicle)``. Geometries are redrawn until every
-    measured bearing is a crescent with some margin (``eps + 3° < |gamma| < 180° - eps - 3°``)
-    and no landmark is within 0.3 of another or of the vehicle: the rings of [BH, Sect. IV]
-    need the crescent shape.
+    Geometries are redrawn until every measured bearing is a crescent with some margin
+    (``eps + 3° < |gamma| < 180° - eps - 3°``) and no landmark is within 0.3 of another or of
+    the vehicle: the rings of [BH, Sect. IV] need the crescent shape.
+
+    Parameters
+    ----------
+    rng : np.random.Generator
+        The instance's generator.
+    pairs : sequence of (int, int), default PAIRS
+        The measured landmark pairs (0-based indices into the triple).
+
+    Returns
+    -------
+    landmarks : np.ndarray, shape (3, 2)
+        Landmarks uniform in ``[-3, 3]^2``.
+    pairs : list of tuple of int
+        ``pairs``, as tuples.
+    gammas : np.ndarray, shape (len(pairs),)
+        The measured relative bearings [rad], wrapped to ``(-pi, pi]``.
+    eps : float
+        The noise bound [rad].
+    vehicle : np.ndarray, shape (2,)
+        The vehicle, uniform in ``[-1, 1]^2``.
+
+    References
+    ----------
+    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     pairs = [tuple(p) for p in pairs]
     margin = np.radians(3.0)

@@ -26,8 +26,19 @@ NOISES = ("box", "ellipsoid")
 
 @dataclass(frozen=True)
 class LinearScenario:
-    """A system, the set of ``x_0``, the measurements ``ys`` (N, p) and the true states
-    ``states`` (N, n), ``states[k-1]`` = x_k measured by ``ys[k-1]``."""
+    """A simulated linear system: what an estimator gets, and the true states.
+
+    Parameters
+    ----------
+    system : LinearSystem
+        ``(A, C, W, V)``.
+    X0 : Box
+        The set of ``x_0``.
+    ys : np.ndarray, shape (N, p)
+        The measurements; ``ys[k-1]`` measures ``x_k``.
+    states : np.ndarray, shape (N, n)
+        The true states, ``states[k-1]`` = ``x_k``.
+    """
 
     system: LinearSystem
     X0: Box
@@ -48,12 +59,35 @@ def _draw(S: Box | Ellipsoid, rng: np.random.Generator) -> np.ndarray:
 
 
 def random_system(n: int, seed: int, noise: str = "box", steps: int = 100) -> LinearScenario:
-    """A seeded random stable system of dimension ``n`` and its simulation (module docstring).
+    """Draw a seeded random stable system of dimension ``n`` and simulate it (module docstring).
+
+    Parameters
+    ----------
+    n : int
+        The state dimension (>= 1); there are ``max(1, n // 2)`` outputs.
+    seed : int
+        Fixes the system, the noise sets and the simulation.
+    noise : {"box", "ellipsoid"}, default "box"
+        The shape of ``W`` and ``V``.
+    steps : int, default 100
+        Simulated steps (>= 1): the number of measurements.
+
+    Returns
+    -------
+    LinearScenario
+        The system, ``X0 = [-1, 1]^n``, the measurements and the true states.
 
     Raises
     ------
     ValueError
         For ``n < 1``, ``steps < 1`` or an unknown ``noise`` (one of :data:`NOISES`).
+
+    Examples
+    --------
+    >>> from optbound.scenarios.linear_systems import random_system
+    >>> run = random_system(3, seed=0, steps=5)
+    >>> run.system.A.shape, run.ys.shape, run.states.shape
+    ((3, 3), (5, 1), (5, 3))
     """
     if int(n) != n or n < 1:
         raise ValueError(f"n must be a positive integer, got {n}")

@@ -17,6 +17,11 @@ Nothing here was tuned to reach the paper's numbers. The models it drives are
 :class:`optbound.localization.tracker.SetTracker` (with its association gate
 :func:`~optbound.localization.tracker.nearest_landmark`) and the association search of
 :mod:`optbound.localization.association`.
+
+References
+----------
+.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+   on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -53,6 +58,15 @@ class OdometryBounds:
     """Amplitude bounds of the dead-reckoning errors per step.
 
     ``e_x, e_y <= along * d`` (d the travelled distance), ``e_psi <= drift * d + turn * |dpsi|``.
+
+    Parameters
+    ----------
+    along : float, default 0.02
+        Position error per metre travelled.
+    drift : float, default 0.3° in radians
+        Heading drift per metre travelled [rad/m].
+    turn : float, default 0.02
+        Heading error per radian turned.
     """
 
     along: float = 0.02
@@ -60,19 +74,67 @@ class OdometryBounds:
     turn: float = 0.02
 
     def half_widths(self, step: np.ndarray) -> np.ndarray:
-        """Error box half-widths for a reported step ``(dx, dy, dpsi)`` (1 % margin)."""
+        """Bound the error box of a reported step ``(dx, dy, dpsi)``, with a 1 % margin.
+
+        The true distance and turn are bounded from the reported ones (the errors are
+        proportional to the true motion), then the class's bounds applied.
+
+        Parameters
+        ----------
+        step : np.ndarray, shape (3,)
+            The reported motion ``(dx, dy, dpsi)`` in the robot's frame.
+
+        Returns
+        -------
+        np.ndarray, shape (3,)
+            Half-widths of the error box in x, y and psi.
+        """
         d = 1.01 * math.hypot(step[0], step[1]) / (1.0 - math.sqrt(2.0) * self.along)
         turn = 1.01 * (abs(step[2]) + self.drift * d) / (1.0 - self.turn)
         return np.array([self.along * d, self.along * d, self.drift * d + self.turn * turn])
 
     def shape(self, step: np.ndarray, floor: float = 1e-7) -> np.ndarray:
-        """``C^Delta`` of an ellipsoid containing the error box: ``3 diag(h^2)`` (+ a floor)."""
+        """Build ``C^Delta``, the shape of an ellipsoid containing the error box.
+
+        Parameters
+        ----------
+        step : np.ndarray, shape (3,)
+            The reported motion ``(dx, dy, dpsi)``.
+        floor : float, default 1e-7
+            Added to every half-width, so the shape stays positive definite at rest.
+
+        Returns
+        -------
+        np.ndarray, shape (3, 3)
+            The diagonal shape matrix.
+
+        Notes
+        -----
+        With ``h`` the :meth:`half_widths` plus ``floor``, ``C = 3 diag(h^2)``: the
+        ellipsoid ``e^T C^{-1} e <= 1`` passes through the box's corners, since
+        ``sum_i h_i^2 / (3 h_i^2) = 1`` in 3-D, so by convexity it contains the box.
+        """
         h = self.half_widths(step) + floor
         return np.diag(3.0 * h**2)
 
 
 def office_map() -> LandmarkMap:
-    """The 22 landmarks (counter-clockwise along the walls), their ellipses and the walls."""
+    """Build the office's map: 22 landmarks, their error ellipses and the walls.
+
+    Returns
+    -------
+    LandmarkMap
+        Landmarks numbered counter-clockwise along the walls, :data:`WALL_INSET` in front
+        of them, with error ellipses of semi-axes :data:`LANDMARK_SIGMA` (along, across the
+        wall); walls: the outer ones and :data:`WALLS`.
+
+    Examples
+    --------
+    >>> from optbound.scenarios import office
+    >>> omap = office.office_map()
+    >>> omap.size, omap.landmarks.shape, omap.shapes.shape
+    (22, (22, 2), (22, 2, 2))
+    """
     w, h = ROOM
     perimeter = 2.0 * (w + h)
     s = (np.arange(N_LANDMARKS) + 0.37) * perimeter / N_LANDMARKS  # off the corners
@@ -98,8 +160,20 @@ def office_map() -> LandmarkMap:
     return LandmarkMap(np.array(pts), np.concatenate([outer, WALLS]), np.array(shapes))
 
 
-def course_pose(s) -> np.ndarray:
-    """Pose ``(x, y, psi)`` at arc length ``s`` along the course (laps repeat; psi unwrapped)."""
+def course_pose(s: float | np.ndarray) -> np.ndarray:
+    """Find the pose ``(x, y, psi)`` at arc length ``s`` along the course.
+
+    Parameters
+    ----------
+    s : float or array_like, shape (m,)
+        Arc lengths [m]; laps repeat.
+
+    Returns
+    -------
+    np.ndarray, shape (m, 3)
+        The poses, heading along the path, psi unwrapped (it grows by 2 pi per lap); a
+        scalar ``s`` gives one row.
+    """
     x0, y0, x1, y1, r = COURSE
     legs = np.array([x1 - x0 - 2 * r, y1 - y0 - 2 * r] * 2)
     arc = np.pi * r / 2
@@ -131,7 +205,13 @@ def course_pose(s) -> np.ndarray:
 
 
 def lap_length() -> float:
-    """Length of one lap of the course (m)."""
+    """Compute the length of one lap of the course.
+
+    Returns
+    -------
+    float
+        The rounded rectangle's perimeter [m].
+    """
     x0, y0, x1, y1, r = COURSE
     return 2 * (x1 - x0 - 2 * r) + 2 * (y1 - y0 - 2 * r) + 2 * np.pi * r
 
@@ -152,7 +232,26 @@ def _correlated(rng: np.random.Generator, bound: float, t: np.ndarray) -> np.nda
 
 @dataclass
 class OfficeData:
-    """One simulated experiment: true poses, odometry, scans, the true landmark positions."""
+    """One simulated experiment: true poses, odometry, scans, the true landmark positions.
+
+    Parameters
+    ----------
+    landmark_map : LandmarkMap
+        The nominal map (:func:`office_map`) the robot knows.
+    true_landmarks : np.ndarray, shape (N, 2)
+        The landmarks' true (biased) positions.
+    times : np.ndarray, shape (K + 1,)
+        Scan times [s].
+    poses : np.ndarray, shape (K + 1, 3)
+        True poses; scan ``k`` is taken at ``poses[k]``.
+    odometry : np.ndarray, shape (K, 3)
+        Reported motion from ``poses[k]`` to ``poses[k + 1]``, in the robot's frame.
+    odometry_shapes : np.ndarray, shape (K, 3, 3)
+        Shapes of ellipsoids containing each step's odometry error
+        (:meth:`OdometryBounds.shape`).
+    scans : list of tuple, optional
+        ``(alphas, true landmark indices)`` per pose.
+    """
 
     landmark_map: LandmarkMap
     true_landmarks: np.ndarray
@@ -163,8 +262,30 @@ class OfficeData:
     scans: list = field(default_factory=list)  # (alphas, true landmark indices) per pose
 
 
-def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = None):
-    """Simulate ``laps`` of the course: returns an :class:`OfficeData`."""
+def simulate(laps: float = 10.0, seed: int = 0, bounds: OdometryBounds | None = None) -> OfficeData:
+    """Simulate ``laps`` of the course: landmark biases, odometry and scans.
+
+    Parameters
+    ----------
+    laps : float, default 10.0
+        Laps driven at :data:`SPEED`, scanned at :data:`SCAN_RATE`.
+    seed : int, default 0
+        Fixes the landmark biases, the odometry error factors and the bearing noise.
+    bounds : OdometryBounds, optional
+        The odometry error bounds; ``OdometryBounds()`` if None.
+
+    Returns
+    -------
+    OfficeData
+        The experiment.
+
+    Examples
+    --------
+    >>> from optbound.scenarios import office
+    >>> data = office.simulate(laps=0.05, seed=0)
+    >>> data.poses.shape, data.odometry.shape, len(data.scans)
+    ((13, 3), (12, 3), 13)
+    """
     rng = np.random.default_rng(seed)
     bounds = OdometryBounds() if bounds is None else bounds
     omap = office_map()
@@ -217,12 +338,26 @@ def corrupt_scan(
     spurious_rate, missing_rate : float
         Rates in ``[0, 1]``.
     rng : numpy.random.Generator
+        Draws the dropped and the spurious bearings.
 
     Returns
     -------
-    (alphas, labels) : ndarray (m,), ndarray of int (m,)
-        The corrupted scan (kept true bearings first, spurious ones after) and each bearing's
-        landmark index, ``-1`` for a spurious bearing (``association.SPURIOUS``).
+    alphas : np.ndarray, shape (m,)
+        The corrupted scan: kept true bearings first, spurious ones after.
+    labels : np.ndarray of int, shape (m,)
+        Each bearing's landmark index, ``-1`` for a spurious bearing
+        (``association.SPURIOUS``).
+
+    Raises
+    ------
+    ValueError
+        If ``alphas`` and ``truth`` are not 1-D of equal length, or a rate is outside
+        ``[0, 1]``.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     alphas = np.asarray(alphas, dtype=float)
     truth = np.asarray(truth, dtype=int)
@@ -241,7 +376,27 @@ def corrupt_scan(
 
 @dataclass
 class TrackResult:
-    """Per-scan outputs of :func:`track` (after the scan's updates)."""
+    """Per-scan outputs of :func:`track` (after the scan's updates), over ``K`` scans.
+
+    Parameters
+    ----------
+    centers : np.ndarray, shape (K + 1, 3)
+        Centres of the pose ellipsoids.
+    shapes : np.ndarray, shape (K + 1, 3, 3)
+        Their shape matrices.
+    levels : np.ndarray, shape (K + 1,)
+        Level of the true pose in each ellipsoid; <= 1 means contained.
+    updates : int
+        Bearing updates made.
+    inconsistent : int
+        Updates whose bearing was inconsistent with the set.
+    wrong_associations : int
+        Bearings the gate paired with the wrong landmark (injected faults not counted).
+    injected : int
+        Outliers injected (``fault_rate``).
+    seconds : float
+        Wall time of the tracking loop.
+    """
 
     centers: np.ndarray  # (K + 1, 3)
     shapes: np.ndarray  # (K + 1, 3, 3)
@@ -272,6 +427,38 @@ def track(
     wrong (next visible) landmark or, with ``phantom`` (metres), the bearing of a reflector
     that distance from the true landmark in a random direction, paired with that landmark.
     ``on_update(k, tracker, alpha, j)`` is called before each update (for sampled comparisons).
+
+    Parameters
+    ----------
+    data : OfficeData
+        The simulated experiment.
+    initial : Ellipsoid
+        The pose set after scan 0, in (x, y, psi).
+    criterion : str, default "projection"
+        The tracker's fusion criterion (:class:`SetTracker`).
+    fault_rate : float, default 0.0
+        Probability that a scan has one injected outlier.
+    seed : int, default 0
+        Draws the injected outliers.
+    gate : float, default 1° in radians
+        The association gate of :func:`nearest_landmark` [rad].
+    steps : int, optional
+        Track only the first ``steps`` scans after scan 0; all of them if None.
+    on_update : callable, optional
+        ``on_update(k, tracker, alpha, j)``, called before each update.
+    phantom : float, optional
+        With faults: the distance [m] of a phantom reflector from the true landmark; None
+        pairs a bearing with the wrong landmark instead.
+
+    Returns
+    -------
+    TrackResult
+        The per-scan sets, the true pose's levels and the counts.
+
+    References
+    ----------
+    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+       on an angle measurement technique", IFAC, 1996.
     """
     import time
 
@@ -318,7 +505,20 @@ def track(
 
 
 def dead_reckoning(data: OfficeData, start: np.ndarray) -> np.ndarray:
-    """Poses integrated from the odometry alone, from ``start`` (K + 1, 3)."""
+    """Integrate the odometry alone from ``start``.
+
+    Parameters
+    ----------
+    data : OfficeData
+        The simulated experiment.
+    start : np.ndarray, shape (3,)
+        The initial pose ``(x, y, psi)``.
+
+    Returns
+    -------
+    np.ndarray, shape (K + 1, 3)
+        The dead-reckoned poses, ``start`` first.
+    """
     out = np.empty((len(data.odometry) + 1, 3))
     out[0] = start
     for k, step in enumerate(data.odometry):

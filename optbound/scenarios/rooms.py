@@ -6,6 +6,13 @@ and four sonars; a room with a belt of sonars), not reconstructions of the paper
 The model they feed is :mod:`optbound.localization.sonar` (which also holds the wall builder
 :func:`~optbound.localization.sonar.polygon_walls` and the "robot inside the room" prior
 :func:`~optbound.localization.sonar.clearance_test`).
+
+References
+----------
+.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+   localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -28,7 +35,25 @@ HALF_APERTURE, REL_ACCURACY = np.deg2rad(12.0), 0.02
 def triangle_sonars(
     half_aperture: float = HALF_APERTURE, rel_accuracy: float = REL_ACCURACY
 ) -> list[Sonar]:
-    """Four sonars on a 0.2 m radius belt pointing forward, left, backward and right (ours)."""
+    """Build four sonars on a 0.2 m radius belt pointing forward, left, backward and right (ours).
+
+    Parameters
+    ----------
+    half_aperture : float, default HALF_APERTURE
+        Half-angle of each sonar's emission cone [rad] (12° [LJMW97, Sect. 4]).
+    rel_accuracy : float, default REL_ACCURACY
+        Relative range accuracy (2 % [LJMW97, Sect. 4]).
+
+    Returns
+    -------
+    list of Sonar
+        The four sonars, in the robot's frame.
+
+    References
+    ----------
+    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    """
     return [
         Sonar((0.2 * np.cos(a), 0.2 * np.sin(a)), a, half_aperture, rel_accuracy)
         for a in np.deg2rad([0.0, 90.0, 180.0, -90.0])
@@ -45,7 +70,29 @@ def belt_sonars(
     half_aperture: float = HALF_APERTURE,
     rel_accuracy: float = REL_ACCURACY,
 ) -> list[Sonar]:
-    """``n`` sonars evenly spread on a circular belt, each pointing outward [KJWM00, Fig. 1]."""
+    """Build ``n`` sonars evenly spread on a circular belt, each pointing outward [KJWM00, Fig. 1].
+
+    Parameters
+    ----------
+    n : int, default 16
+        The number of sonars; the first points forward.
+    radius : float, default 0.3
+        The belt's radius [m].
+    half_aperture : float, default HALF_APERTURE
+        Half-angle of each sonar's emission cone [rad].
+    rel_accuracy : float, default REL_ACCURACY
+        Relative range accuracy.
+
+    Returns
+    -------
+    list of Sonar
+        The sonars, in the robot's frame.
+
+    References
+    ----------
+    .. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+       localization using interval analysis", Reliable Computing, 2000.
+    """
     angles = 2 * np.pi * np.arange(n) / n
     return [
         Sonar((radius * np.cos(a), radius * np.sin(a)), a, half_aperture, rel_accuracy)

@@ -49,8 +49,20 @@ REFERENCE = (
 
 @dataclass(frozen=True)
 class TankScenario:
-    """The shifted system (module docstring), ``X0``, the measurements ``ys`` (234, 21),
-    the input response ``offsets`` (234, 30): ``x_k in Z_k + offsets[k-1]``."""
+    """CORA's tank as an ``optbound.estimation`` problem, with the input response removed.
+
+    Parameters
+    ----------
+    system : LinearSystem
+        The shifted system (module docstring), ``W`` and ``V`` widened by the rounding.
+    X0 : Box
+        The set of ``x_0``, ``[-4, 4]^30``.
+    ys : np.ndarray, shape (234, 21)
+        The shifted measurements; ``ys[k-1]`` measures ``z_k``.
+    offsets : np.ndarray, shape (234, 30)
+        The input response ``s_k``: ``x_k in Z_k + offsets[k-1]`` for a set ``Z_k``
+        guaranteed for ``z_k``.
+    """
 
     system: LinearSystem
     X0: Box
@@ -60,7 +72,15 @@ class TankScenario:
 
 @cache
 def data() -> dict:
-    """CORA's numbers as stored in ``_data/tank30.json`` (lists; see the module docstring)."""
+    """Read CORA's numbers as stored in ``_data/tank30.json`` (cached).
+
+    Returns
+    -------
+    dict
+        CORA's matrices ``"A"``, ``"B"``, ``"C"``, ``"c"``, inputs ``"u"``, measurements
+        ``"y"``, noise and initial zonotopes ``"W"``, ``"V"``, ``"R0"``, time step ``"dt"``
+        (lists and numbers; see the module docstring), ``"reference"`` and ``"source"``.
+    """
     text = resources.files("optbound.scenarios").joinpath("_data/tank30.json").read_text()
     return json.loads(text)
 
@@ -87,7 +107,18 @@ def _box_noise(Z: dict) -> np.ndarray:
 
 @cache
 def scenario() -> TankScenario:
-    """The tank as an ``optbound.estimation`` problem (module docstring)."""
+    """Build the tank as an ``optbound.estimation`` problem (module docstring; cached).
+
+    Returns
+    -------
+    TankScenario
+        The shifted system, ``X0``, the measurements and the input response.
+
+    Raises
+    ------
+    ValueError
+        If the stored noise sets are not centred axis-aligned boxes.
+    """
     d = data()
     A, B, C = (np.array(d[k]) for k in ("A", "B", "C"))
     u, y = np.array(d["u"]).T, np.array(d["y"]).T  # (235, 15), (235, 21)

@@ -11,7 +11,18 @@ from optbound.interval import Interval
 
 
 def wrap_angle(a):
-    """Angles wrapped to (-pi, pi]."""
+    """Wrap angles to (-pi, pi].
+
+    Parameters
+    ----------
+    a : array_like
+        Angles [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        ``a`` modulo 2 pi, in (-pi, pi].
+    """
     w = np.mod(np.asarray(a, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
     return np.where(w == -np.pi, np.pi, w)
 
@@ -24,6 +35,20 @@ def bearing_residual(x, y, li, lj, gamma):
     gives the wrapped residual, with the branch cut at residual ``±pi``, far from the
     constraint ``|residual| <= eps < pi/2``. For intervals ``cos gamma``, ``sin gamma`` are
     enclosed too, so the residual's enclosure is guaranteed.
+
+    Parameters
+    ----------
+    x, y : array_like or Interval
+        Coordinates of the points (or boxes).
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+    gamma : float
+        Measured relative bearing [rad].
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The wrapped residual, in (-pi, pi].
     """
     ux, uy = x - lj[0], y - lj[1]
     wx, wy = x - li[0], y - li[1]
@@ -42,6 +67,22 @@ def bearing_sides(x, y, li, lj, gamma, eps):
     vectors, polynomial in x and free of atan2's branch cut (where the residual is near
     ±pi, on the other arc of the circle, interval atan2 cannot exclude a box). Float arrays or
     ``Interval`` boxes, from one formula; at the landmarks both vanish.
+
+    Parameters
+    ----------
+    x, y : array_like or Interval
+        Coordinates of the points (or boxes).
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+    gamma : float
+        Measured relative bearing [rad].
+    eps : float
+        Noise bound [rad], below pi/2.
+
+    Returns
+    -------
+    tuple
+        The two cross products, both >= 0 exactly on the feasible set.
     """
     ux, uy = x - lj[0], y - lj[1]
     wx, wy = x - li[0], y - li[1]
@@ -58,6 +99,18 @@ def bearing_gradient(x, y, li, lj):
     ``d angle(x - L) = (-(y - y_L), x - x_L) / |x - L|^2``, the difference of the two
     landmarks' terms. Float arrays only: it serves linearization (HS96-style strips), not
     guaranteed tests.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Coordinates of the points (not at a landmark).
+    li, lj : array_like, shape (2,)
+        The two landmarks.
+
+    Returns
+    -------
+    gx, gy : numpy.ndarray
+        The partial derivatives of ``gamma_ij``.
     """
     gx, gy = 0.0, 0.0
     for (lx, ly), sign in ((li, 1.0), (lj, -1.0)):

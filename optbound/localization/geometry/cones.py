@@ -14,17 +14,50 @@ from optbound.localization.geometry.primitives import Point, det, exact, side
 
 
 def unit(angle) -> Point:
-    """Unit vector ``(cos angle, sin angle)`` (floats or intervals)."""
+    """Build the unit vector ``(cos angle, sin angle)`` (floats or intervals).
+
+    Parameters
+    ----------
+    angle : array_like or Interval
+        Angles [rad].
+
+    Returns
+    -------
+    tuple
+        ``(cos angle, sin angle)``.
+    """
     return np.cos(angle), np.sin(angle)
 
 
 def dot(ux, uy, vx, vy):
-    """Scalar product ``ux * vx + uy * vy``."""
+    """Compute the scalar product ``ux * vx + uy * vy``.
+
+    Parameters
+    ----------
+    ux, uy, vx, vy : array_like or Interval
+        Coordinates of ``u`` and ``v`` (broadcast together).
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The scalar product.
+    """
     return ux * vx + uy * vy
 
 
 def distance(p: Point, q: Point):
-    """Euclidean distance ``|p - q|`` (``sqrt`` of a sum of squares: tight on intervals)."""
+    """Compute the Euclidean distance ``|p - q|`` (a square root of a sum of squares).
+
+    Parameters
+    ----------
+    p, q : tuple of (float array or Interval)
+        The two points.
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The distance (tight on intervals: each coordinate appears in one square).
+    """
     return np.sqrt((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
 
 
@@ -34,6 +67,18 @@ def in_cone(direction: Point, right: Point, left: Point):
     ``min(det(right, direction), det(direction, left))``: >= 0 iff ``direction`` lies in the
     closed cone turning counter-clockwise from ``right`` to ``left``, a cone narrower than a
     half-turn (an emission cone of half-aperture below 90 degrees [KJWM00, Fig. 3]).
+
+    Parameters
+    ----------
+    direction : tuple of (float array or Interval)
+        The direction tested.
+    right, left : tuple of (float array or Interval)
+        Unit vectors of the cone's edges.
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The margin, >= 0 inside the closed cone.
     """
     return np.minimum(
         det(right[0], right[1], direction[0], direction[1]),
@@ -49,6 +94,15 @@ def cone_candidates(apex: Point, right: Point, left: Point, a: Point, b: Point) 
     of the sub-segment: an end point of ``Seg(a, b)`` or the hit of a cone edge ray
     [LJMW97, Fig. 3: the detected point P*]. Only the reflecting face counts: ``apex`` must be
     strictly on the left of ``a -> b`` [KJWM00, eq. (2)].
+
+    Parameters
+    ----------
+    apex : tuple of (float array or Interval)
+        The cone's vertex.
+    right, left : tuple of (float array or Interval)
+        Unit vectors of the cone's edges.
+    a, b : tuple of (float array or Interval)
+        End points of the segment.
 
     Returns
     -------
@@ -93,6 +147,24 @@ def nearest_in_cone(apex: Point, heading, half_aperture, a: Point, b: Point, far
     enclosing it over the boxes: its lower bound is the nearest candidate that may be valid,
     its upper bound the nearest candidate that is valid everywhere on the box
     (see :func:`cone_candidates`).
+
+    Parameters
+    ----------
+    apex : tuple of (float array or Interval)
+        The cone's vertex.
+    heading : array_like or Interval
+        Angle of the cone's axis [rad].
+    half_aperture : float
+        Half-angle of the cone [rad], below pi/2.
+    a, b : tuple of (float array or Interval)
+        End points of the segment (floats; made exact on boxes).
+    far : float
+        The range returned when no point of the front face is in the cone (``d_max``).
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        ``min(far, d)`` on points; on boxes an ``Interval`` enclosing it.
     """
     boxes = any(isinstance(v, Interval) for v in (*apex, heading))
     if boxes:
@@ -125,6 +197,18 @@ def front_distance(p: Point, a: Point, b: Point):
 
     ``-side(p, a, b) / |b - a|`` [KJWM00, eq. (2)]: a point of a convex room whose walls all
     face inward is at least ``r`` from every wall iff this is ``>= r`` for every wall.
+
+    Parameters
+    ----------
+    p : tuple of (float array or Interval)
+        The point.
+    a, b : tuple of (float array or Interval)
+        End points of the segment.
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The signed distance.
     """
     return -side(p, a, b) / distance(b, a)
 

@@ -23,11 +23,29 @@ from optbound.localization.geometry.primitives import intersect, side
 def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
     """Validate a list of polygons, each a (k, 2) array of k >= 3 finite real vertices.
 
-    Raises ``TypeError`` if ``polygons`` is not a list/tuple, ``ValueError`` naming ``name``
-    for a wrong shape, non-finite or complex coordinates, repeated consecutive vertices, or a
-    polygon that is not simple (:func:`_check_simple`): a solid obstacle needs a boundary
-    that does not cross itself and encloses some area. An empty list is valid (an
-    environment without obstacles).
+    A solid obstacle needs a boundary that does not cross itself and encloses some area. An
+    empty list is valid (an environment without obstacles).
+
+    Parameters
+    ----------
+    polygons : list or tuple of array_like
+        The polygons, each (k, 2).
+    name : str
+        The argument's name in error messages.
+
+    Returns
+    -------
+    list of numpy.ndarray
+        The validated (k, 2) float arrays.
+
+    Raises
+    ------
+    TypeError
+        If ``polygons`` is not a list or tuple.
+    ValueError
+        Naming ``name``, for a wrong shape, non-finite or complex coordinates, repeated
+        consecutive vertices, or a polygon that is not simple (self-intersecting or of zero
+        area, decided exactly).
     """
     if isinstance(polygons, np.ndarray) or not isinstance(polygons, list | tuple):
         raise TypeError(f"{name} must be a list of (k, 2) vertex arrays, got {type(polygons)}")
@@ -83,9 +101,19 @@ def _segments_meet(p1, p2, p3, p4) -> bool:
 def pack_polygons(polygons: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Flatten validated polygons for the compiled predicates.
 
-    Returns ``(vertices, starts, bboxes)``: all vertices stacked (V, 2), the index of each
-    polygon's first vertex with a final sentinel (n + 1,), and each polygon's bounding box
-    ``[[x_lo, x_hi], [y_lo, y_hi]]`` (n, 2, 2).
+    Parameters
+    ----------
+    polygons : list of numpy.ndarray
+        Validated polygons (:func:`as_polygons`).
+
+    Returns
+    -------
+    vertices : numpy.ndarray, shape (V, 2)
+        All vertices stacked.
+    starts : numpy.ndarray of int64, shape (n + 1,)
+        The index of each polygon's first vertex, with a final sentinel.
+    bboxes : numpy.ndarray, shape (n, 2, 2)
+        Each polygon's bounding box ``[[x_lo, x_hi], [y_lo, y_hi]]``.
     """
     n = len(polygons)
     starts = np.zeros(n + 1, dtype=np.int64)
@@ -285,13 +313,23 @@ def _intersect_boxes(boxes1, boxes2, a, b, lo, hi):
 
 
 def intersect_boxes(boxes1: np.ndarray, boxes2: np.ndarray, a: np.ndarray, b: np.ndarray):
-    """Compiled interval ``intersect`` [GLH12, eq. (19)] of box segments against box segments.
+    """Evaluate the interval ``intersect`` [GLH12, eq. (19)] of box segments, compiled.
 
-    ``boxes1``, ``boxes2`` (m, 2, 2) and ``a``, ``b`` (s, 2, 2) are boxes
-    ``[[x_lo, x_hi], [y_lo, y_hi]]``; returns the (m, s) bound arrays ``(lo, hi)`` enclosing
-    ``Intersect(Seg(x1, x2), Seg(x3, x4))`` over all points of the boxes. Inside the enclosure
-    of :func:`intersect` on ``Interval`` arrays (``side`` is evaluated in two equal forms and
-    intersected, which removes most of the dependency effect), without per-operation overhead.
+    Inside the enclosure of :func:`intersect` on ``Interval`` arrays (``side`` is evaluated in
+    two equal forms and intersected, which removes most of the dependency effect), without
+    per-operation overhead.
+
+    Parameters
+    ----------
+    boxes1, boxes2 : numpy.ndarray, shape (m, 2, 2)
+        End-point boxes ``[[x_lo, x_hi], [y_lo, y_hi]]`` of the first segments.
+    a, b : numpy.ndarray, shape (s, 2, 2)
+        End-point boxes of the second segments.
+
+    Returns
+    -------
+    lo, hi : numpy.ndarray, shape (m, s)
+        Bounds enclosing ``Intersect(Seg(x1, x2), Seg(x3, x4))`` over all points of the boxes.
     """
     m, s = len(boxes1), len(a)
     lo, hi = np.empty((m, s)), np.empty((m, s))
@@ -302,13 +340,25 @@ def intersect_boxes(boxes1: np.ndarray, boxes2: np.ndarray, a: np.ndarray, b: np
 
 
 def segments_meet_polygons(boxes1: np.ndarray, boxes2: np.ndarray, polygons: list[np.ndarray]):
-    """Tri per box pair: does some polygon meet ``Seg([b1], [b2])`` [GLH12, Def. 7, eq. (5)]?
+    """Decide, per box pair, whether some polygon meets ``Seg([b1], [b2])`` [GLH12, Def. 7].
 
     TRUE: for every ``x1`` in ``boxes1[i]`` and ``x2`` in ``boxes2[i]`` the closed segment meets
     a (solid, closed) polygon; FALSE: no segment meets any polygon; UNKNOWN otherwise. Touching
     counts as meeting; a segment lying inside an obstacle meets it. ``boxes1``, ``boxes2`` are
     validated (m, 2, 2) float arrays, ``polygons`` the output of :func:`as_polygons`.
     Degenerate boxes (``lo == hi``) give the answer for points, certified against rounding.
+
+    Parameters
+    ----------
+    boxes1, boxes2 : numpy.ndarray, shape (m, 2, 2)
+        Validated end-point boxes.
+    polygons : list of numpy.ndarray
+        The obstacles (:func:`as_polygons`).
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        :class:`~optbound.interval.Tri` values [GLH12, eq. (5)].
     """
     out = np.zeros(len(boxes1), dtype=np.int8)
     verts, starts, bboxes = pack_polygons(polygons)
@@ -323,6 +373,18 @@ def point_in_polygon(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
     """Certified Tri per point of an (m, 2) array: TRUE inside, FALSE outside the polygon.
 
     UNKNOWN only where rounding cannot decide (points on or within a few ulps of an edge).
+
+    Parameters
+    ----------
+    points : array_like, shape (m, 2)
+        The points.
+    polygon : numpy.ndarray, shape (k, 2)
+        A validated polygon.
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        :class:`~optbound.interval.Tri` values.
     """
     verts, starts, _ = pack_polygons([polygon])
     pts = np.asarray(points, dtype=float)
@@ -342,6 +404,16 @@ def polygon_inside(inner: np.ndarray, outer: np.ndarray) -> bool:
     interval arithmetic, so touching is excluded) and a vertex of ``inner`` is certainly inside
     ``outer``; then the connected boundary of ``inner``, hence ``inner`` itself, is inside.
     False means "not proven" (rounding near a touching configuration counts as not proven).
+
+    Parameters
+    ----------
+    inner, outer : numpy.ndarray, shape (k, 2)
+        Validated polygons.
+
+    Returns
+    -------
+    bool
+        True if the inclusion is proven.
     """
     a1, b1 = _edge_boxes(inner)
     a2, b2 = _edge_boxes(outer)

@@ -20,7 +20,18 @@ Point = tuple[Any, Any]
 
 
 def det(ux, uy, vx, vy):
-    """Determinant ``ux * vy - uy * vx`` of the 2 x 2 matrix with columns ``u`` and ``v``."""
+    """Compute the determinant ``ux * vy - uy * vx`` of the 2 x 2 matrix with columns u, v.
+
+    Parameters
+    ----------
+    ux, uy, vx, vy : array_like or Interval
+        Coordinates of ``u`` and ``v`` (broadcast together).
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The determinant (outward-rounded on intervals).
+    """
     return ux * vy - uy * vx
 
 
@@ -29,6 +40,16 @@ def side(p: Point, a: Point, b: Point):
 
     Negative when ``p`` is on the left of the directed line ``a -> b`` (counter-clockwise
     side), positive on the right, zero on the line.
+
+    Parameters
+    ----------
+    p, a, b : tuple of (float array or Interval)
+        The point and the segment's end points, as ``(x, y)`` pairs.
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        ``det(p - a, b - a)``.
     """
     return det(p[0] - a[0], p[1] - a[1], b[0] - a[0], b[1] - a[1])
 
@@ -39,6 +60,16 @@ def intersect(p1: Point, p2: Point, p3: Point, p4: Point):
     ``max(Side(p1, s34) Side(p2, s34), Side(p3, s12) Side(p4, s12)) / 2``: negative when the
     two segments cross (each one's end points lie strictly on both sides of the other's line),
     positive when they certainly do not meet, zero when they touch or are collinear.
+
+    Parameters
+    ----------
+    p1, p2, p3, p4 : tuple of (float array or Interval)
+        End points of the two segments, as ``(x, y)`` pairs.
+
+    Returns
+    -------
+    numpy.ndarray or Interval
+        The value of [GLH12, eq. (19)].
     """
     s34 = side(p1, p3, p4) * side(p2, p3, p4)
     s12 = side(p3, p1, p2) * side(p4, p1, p2)
@@ -50,6 +81,16 @@ def crosses(p1: Point, p2: Point, p3: Point, p4: Point):
 
     TRUE for boxes means every choice of end points in the boxes gives crossing segments
     [GLH12, eq. (6)]; FALSE means none does [GLH12, eq. (7)]. Touching is not crossing.
+
+    Parameters
+    ----------
+    p1, p2, p3, p4 : tuple of (float array or Interval)
+        End points of the two segments, as ``(x, y)`` pairs.
+
+    Returns
+    -------
+    numpy.ndarray of bool or Tri
+        ``intersect(p1, p2, p3, p4) < 0``.
     """
     return intersect(p1, p2, p3, p4) < 0
 
@@ -59,6 +100,19 @@ def to_world(pose: tuple[Any, Any, Any], local: Point) -> Point:
 
     ``theta`` is the heading (radians, counter-clockwise from the world x-axis); works on floats
     and on intervals (``np.cos``/``np.sin`` dispatch to their interval versions).
+
+    Parameters
+    ----------
+    pose : tuple
+        ``(x, y, theta)`` (floats or intervals).
+    local : tuple of (float array or Interval)
+        The point in the robot frame.
+
+    Returns
+    -------
+    tuple
+        ``(x + cos(theta) u - sin(theta) v, y + sin(theta) u + cos(theta) v)`` for
+        ``local = (u, v)``.
     """
     x, y, theta = pose
     c, s = np.cos(theta), np.sin(theta)
@@ -69,8 +123,25 @@ def as_segments(world, name: str = "world") -> np.ndarray:
     """Validate a map of oriented segments ``[[a_x, a_y], [b_x, b_y]]`` as an (s, 2, 2) array.
 
     A segment's reflecting (visible) face is on its left, i.e. where ``side(p, a, b) < 0``
-    [KJWM00, eq. (2)]. Raises ``ValueError`` naming ``name`` for an empty map, a wrong shape,
-    non-finite or complex coordinates, or a segment of zero length.
+    [KJWM00, eq. (2)].
+
+    Parameters
+    ----------
+    world : array_like, shape (s, 2, 2)
+        The segments ``[a, b]``.
+    name : str
+        The argument's name in error messages.
+
+    Returns
+    -------
+    numpy.ndarray, shape (s, 2, 2)
+        The validated float array.
+
+    Raises
+    ------
+    ValueError
+        Naming ``name``, for an empty map, a wrong shape, non-finite or complex coordinates,
+        or a segment of zero length.
     """
     arr = real_array(name, world, "an (s, 2, 2) array")
     if arr.ndim != 3 or arr.shape[1:] != (2, 2):
@@ -86,12 +157,39 @@ def as_segments(world, name: str = "world") -> np.ndarray:
 
 
 def exact(p: Point) -> Point:
-    """``p`` with float coordinates as point intervals, so that ``b - a`` etc. round outward."""
+    """Make ``p``'s float coordinates point intervals, so that ``b - a`` etc. round outward.
+
+    Parameters
+    ----------
+    p : tuple of (float array or Interval)
+        A point ``(x, y)``.
+
+    Returns
+    -------
+    tuple of Interval
+        ``(as_interval(x), as_interval(y))``.
+
+    Raises
+    ------
+    ValueError
+        If a coordinate is not finite.
+    """
     return as_interval(p[0]), as_interval(p[1])
 
 
 def segment_points(world: np.ndarray) -> tuple[Point, Point]:
-    """End points ``(a, b)`` of an (s, 2, 2) map as coordinate pairs, ready for the predicates."""
+    """Return the end points ``(a, b)`` of an (s, 2, 2) map as coordinate pairs.
+
+    Parameters
+    ----------
+    world : numpy.ndarray, shape (s, 2, 2)
+        The segments.
+
+    Returns
+    -------
+    a, b : tuple of numpy.ndarray
+        ``(x, y)`` pairs of arrays of shape (s,), ready for the predicates.
+    """
     return (world[:, 0, 0], world[:, 0, 1]), (world[:, 1, 0], world[:, 1, 1])
 
 
@@ -102,6 +200,18 @@ def occluded(p: Point, q: Point, world: np.ndarray):
     (booleans on points, Tri on boxes: the disjunction of :func:`crosses` over the map, i.e.
     its maximum in the FALSE < UNKNOWN < TRUE order). A sight line that only touches a segment
     (e.g. ends on the wall that carries the landmark) is not occluded.
+
+    Parameters
+    ----------
+    p, q : tuple of (float array or Interval)
+        The sight line's end points.
+    world : numpy.ndarray, shape (s, 2, 2)
+        The occluding segments.
+
+    Returns
+    -------
+    numpy.ndarray of bool or Tri
+        Whether some segment crosses ``Seg(p, q)``, in the broadcast shape of ``p`` and ``q``.
     """
     a, b = segment_points(world)
     p, q = (_trailing(p[0]), _trailing(p[1])), (_trailing(q[0]), _trailing(q[1]))
