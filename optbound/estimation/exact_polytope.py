@@ -38,6 +38,16 @@ def _q(x) -> Fraction:
 def output_bounds(system: LinearSystem) -> tuple[list[Fraction], list[Fraction]]:
     """The exact interval ``[lo_i, hi_i]`` of V's i-th coordinate, per output row.
 
+    Parameters
+    ----------
+    system : LinearSystem
+        The model, with Box or Zonotope V.
+
+    Returns
+    -------
+    lo, hi : list of Fraction
+        The bounds per output row (``c_i ∓ sum_j |G_ij|`` for a zonotope V).
+
     Raises
     ------
     ValueError
@@ -60,7 +70,20 @@ def output_bounds(system: LinearSystem) -> tuple[list[Fraction], list[Fraction]]
 
 def center_segments(Z: Box | Zonotope) -> tuple[list[Fraction], list[list[Fraction]]]:
     """A box or zonotope as its exact centre and generators (a box's are its midpoint and
-    half-widths, exact in rationals)."""
+    half-widths, exact in rationals).
+
+    Parameters
+    ----------
+    Z : Box or Zonotope
+        The set.
+
+    Returns
+    -------
+    center : list of Fraction
+        The exact centre.
+    generators : list of list of Fraction
+        The exact generators, one list per generator.
+    """
     if isinstance(Z, Box):
         lo, hi = [_q(x) for x in Z.lo], [_q(x) for x in Z.hi]
         n = len(lo)
@@ -71,7 +94,18 @@ def center_segments(Z: Box | Zonotope) -> tuple[list[Fraction], list[list[Fracti
 
 
 def zonotope_polytope(Z: Box | Zonotope) -> RationalPolytope:
-    """The exact polytope of a box or zonotope (its centre plus one segment at a time)."""
+    """The exact polytope of a box or zonotope (its centre plus one segment at a time).
+
+    Parameters
+    ----------
+    Z : Box or Zonotope
+        The set, its floats read exactly.
+
+    Returns
+    -------
+    RationalPolytope
+        ``c + sum_j [-g_j, g_j]``, exact.
+    """
     c, gens = center_segments(Z)
     P = convex_hull([c], len(c))
     for g in gens:
