@@ -42,6 +42,7 @@ ENTRY_POINTS = [
     "optbound.estimation.system:LinearSystem",
     "optbound.estimation.exact:exact_sets",
     "optbound.estimation.observers:observe",
+    "optbound.estimation.references:proven_contains",
     "optbound.problems.audit:evaluate",
     "optbound.problems:families",
     "optbound.problems:suite",
