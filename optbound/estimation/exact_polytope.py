@@ -45,8 +45,10 @@ def output_bounds(system: LinearSystem) -> tuple[list[Fraction], list[Fraction]]
 
     Returns
     -------
-    lo, hi : list of Fraction
-        The bounds per output row (``c_i ∓ sum_j |G_ij|`` for a zonotope V).
+    lo : list of Fraction
+        The lower bound per output row (``c_i - sum_j |G_ij|`` for a zonotope V).
+    hi : list of Fraction
+        The upper bound per output row (``c_i + sum_j |G_ij|``).
 
     Raises
     ------

@@ -93,7 +93,7 @@ def normal(vectors: list[list[int]]) -> list[int]:
     Parameters
     ----------
     vectors : list of list of int
-        n - 1 integer vectors of length n.
+        The n - 1 integer vectors, each of length n.
 
     Returns
     -------
@@ -360,6 +360,7 @@ def convex_hull(points, dim: int) -> RationalPolytope:
     Returns
     -------
     RationalPolytope
+        The hull: its vertices, covering edges and boundary triangulation, all exact.
     """
     pts = sorted({tuple(Fraction(x) for x in p) for p in points})
     if any(len(p) != dim for p in pts):
