@@ -56,10 +56,30 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
     bound of the true area (module docstring).
 
+    Parameters
+    ----------
+    X : ConstrainedZonotope
+        A 2-D exact set (e.g. of :func:`optbound.estimation.exact_sets`).
+
+    Returns
+    -------
+    area : float
+        The area of the polygon of the LP vertices (exact up to the LP tolerance, not
+        certified).
+    upper : float
+        A certified upper bound of the true area: the exact area of
+        :func:`optbound.sets.constrained_zonotope_polygon.outer_polygon`, rounded up.
+
     Raises
     ------
     ValueError
         If ``X`` is not 2-D, or flat or empty (it has no polygon).
+
+    Notes
+    -----
+    Each certified support value ``h(d) >= max_{x in X} d^T x`` gives a half-plane
+    ``d^T x <= h(d)`` containing X; their intersection is exact in rational arithmetic and
+    measured by the shoelace formula ``|sum_k (x_k y_{k+1} - x_{k+1} y_k)| / 2``.
     """
     V, outer = outer_polygon(X)
     pts = [(Fraction(float(x)), Fraction(float(y))) for x, y in V]
