@@ -42,6 +42,7 @@ ENTRY_POINTS = [
     "optbound.estimation.system:LinearSystem",
     "optbound.estimation.exact:exact_sets",
     "optbound.estimation.observers:observe",
+    "optbound.estimation.exact_polytope:exact_polytopes",
     "optbound.estimation.references:proven_contains",
     "optbound.problems.audit:evaluate",
     "optbound.problems:families",

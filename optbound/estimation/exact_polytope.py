@@ -140,6 +140,24 @@ def exact_polytopes(system: LinearSystem, X0: Box | Zonotope, ys) -> list[Ration
         not a product of intervals (:func:`output_bounds`).
     TypeError
         If X0 is not a Box or Zonotope of the system's dimension.
+
+    Notes
+    -----
+    ``X_k = (A X_{k-1} ⊕ W) ∩ {x : y_k - hi <= C x <= y_k - lo}`` in the vertex
+    representation, every float read as the rational it is (module docstring).
+
+    Examples
+    --------
+    >>> from optbound import Box
+    >>> from optbound.estimation import LinearSystem, exact_polytopes
+    >>> A, C = [[1.0, 0.5], [0.0, 1.0]], [[1.0, 0.0]]
+    >>> system = LinearSystem(A, C, W=Box([-0.1, -0.1], [0.1, 0.1]), V=Box([-0.2], [0.2]))
+    >>> P = exact_polytopes(system, Box([-1.0, -1.0], [1.0, 1.0]), [0.3, 0.5, 0.9])
+    >>> len(P), len(P[-1].vertices)
+    (3, 6)
+    >>> lo, hi = P[-1].volume_bounds()  # the exact Fraction volume, rounded outward
+    >>> lo <= P[-1].volume <= hi, round(hi, 9)
+    (True, 0.4075)
     """
     n = system.dim
     if n > MAX_DIM:
