@@ -243,9 +243,11 @@ def observe(
         If an estimate is proven empty (measurements inconsistent with the model).
     ValueError
         If ``method`` is unknown, ``ys`` is not finite with p columns, ``X0`` has the wrong
-        dimension, or ``X0`` is a ConstrainedZonotope for a zonotope or ellipsoid observer.
+        dimension, or ``X0`` is a ConstrainedZonotope with constraints for a zonotope
+        observer.
     TypeError
-        If ``X0`` is not one of the accepted set types.
+        If ``X0`` is not one of the accepted set types (a ConstrainedZonotope is not one for
+        the ellipsoidal observers).
 
     Notes
     -----
