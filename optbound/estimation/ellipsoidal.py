@@ -42,6 +42,25 @@ def measurement_strip(a: np.ndarray, lo: float, hi: float, E: Ellipsoid) -> Stri
     |x_i| + |m|)``; H is an upper bound of ``max(hi - m, m - lo) + 2 U (sum_i |a_i| X_i +
     |m|)`` with ``X_i >= |x_i|`` on E's interval hull, so the float strip holds all of them.
     A zero-width interval (``lo == hi``) thus still gives a strip of positive width.
+
+    Parameters
+    ----------
+    a : numpy.ndarray, shape (n,)
+        The strip's normal.
+    lo, hi : float
+        The bounds on ``a^T x``.
+    E : Ellipsoid
+        The ellipsoid whose points the strip must keep (it bounds ``|x_i|``).
+
+    Returns
+    -------
+    Strip
+        ``{x : |a'^T x - b'| <= 1}`` holding every x of E with ``lo <= a^T x <= hi``.
+
+    Raises
+    ------
+    ValueError
+        If the strip has zero width at the origin, or a quotient underflows.
     """
     box = Interval(E.center) + Interval(-1.0, 1.0) * np.sqrt(Interval(np.diag(E.shape)))
     X = np.maximum(-box.lo, box.hi)
@@ -59,19 +78,77 @@ def measurement_strip(a: np.ndarray, lo: float, hi: float, E: Ellipsoid) -> Stri
 
 
 def initial_ellipsoid(X0, criterion: str) -> Ellipsoid:
-    """``X0`` (Ellipsoid, Zonotope or Box) as an enclosing ellipsoid (``noise.ellipsoid_of``)."""
+    """``X0`` (Ellipsoid, Zonotope or Box) as an enclosing ellipsoid (``noise.ellipsoid_of``).
+
+    Parameters
+    ----------
+    X0 : Ellipsoid, Zonotope or Box
+        The set of ``x_0``.
+    criterion : {"volume", "trace"}
+        Selects the enclosing member (:data:`WEIGHTS`).
+
+    Returns
+    -------
+    Ellipsoid
+        An ellipsoid containing ``X0`` (``X0`` itself if it is one).
+
+    Raises
+    ------
+    TypeError
+        If ``X0`` is of another type.
+    ValueError
+        If ``X0`` is a single point.
+    """
     return ellipsoid_of(X0, WEIGHTS[criterion])
 
 
 def predict(system: LinearSystem, E: Ellipsoid, criterion: str, W: Ellipsoid) -> Ellipsoid:
     """Schweppe's outer ellipsoid of ``A E + W`` (certified affine map, then
-    :func:`optbound.analytic.minkowski_sum` with ``criterion``)."""
+    :func:`optbound.analytic.minkowski_sum` with ``criterion``).
+
+    Parameters
+    ----------
+    system : LinearSystem
+        The model (its A is used).
+    E : Ellipsoid
+        The ellipsoid containing ``X_{k-1}``.
+    criterion : {"volume", "trace"}
+        The member of Schweppe's family.
+    W : Ellipsoid
+        The process-noise ellipsoid.
+
+    Returns
+    -------
+    Ellipsoid
+        An ellipsoid containing ``A E + W``.
+
+    Notes
+    -----
+    Schweppe's family [HS96, eq. (14)]: for ``E = E(c, Q)`` and ``W = E(c_W, Q_W)``, every
+    ``E(A c + c_W, A Q A^T / (1 - kappa) + Q_W / kappa)`` with kappa in (0, 1) contains
+    ``A E + W``; ``criterion`` picks kappa.
+    """
     return analytic.minkowski_sum(affine_map(E, system.A), W, criterion=criterion).ellipsoid
 
 
 def measurement_strips(system: LinearSystem, y: np.ndarray, E: Ellipsoid) -> list[Strip]:
     """One float strip per output row holding every x of ``E`` with ``y - C x in`` the box hull
-    of ``V`` (bounds rounded outward, :func:`measurement_strip`)."""
+    of ``V`` (bounds rounded outward, :func:`measurement_strip`).
+
+    Parameters
+    ----------
+    system : LinearSystem
+        The model (its C and V are used).
+    y : numpy.ndarray, shape (p,)
+        The measurement.
+    E : Ellipsoid
+        The prediction whose points the strips must keep.
+
+    Returns
+    -------
+    list of Strip
+        One strip per row of C.
+    """
     Vb = coordinate_bounds(system.V)
     lo = (Interval(y) - Vb.hi).lo
     hi = (Interval(y) - Vb.lo).hi
@@ -82,6 +159,24 @@ def ellipsoid_step(
     system: LinearSystem, E: Ellipsoid, y: np.ndarray, criterion: str, W: Ellipsoid
 ) -> Ellipsoid:
     """One predict-correct step (module docstring); ``W`` is the noise ellipsoid.
+
+    Parameters
+    ----------
+    system : LinearSystem
+        The model.
+    E : Ellipsoid
+        The ellipsoid containing ``X_{k-1}``.
+    y : numpy.ndarray, shape (p,)
+        The measurement of ``x_k``.
+    criterion : {"volume", "trace"}
+        The member of Schweppe's family and of the strip-fusion family.
+    W : Ellipsoid
+        The process-noise ellipsoid.
+
+    Returns
+    -------
+    Ellipsoid
+        An ellipsoid containing ``X_k`` whenever ``E`` contains ``X_{k-1}``.
 
     Raises
     ------
@@ -97,7 +192,31 @@ def ellipsoid_step(
 
 
 def observe_ellipsoids(system: LinearSystem, X0, ys: np.ndarray, method: str) -> list[Ellipsoid]:
-    """The sets ``[E_1, ..., E_N]`` of ``method`` in ``CRITERIA`` (module docstring)."""
+    """The sets ``[E_1, ..., E_N]`` of ``method`` in ``CRITERIA`` (module docstring).
+
+    Parameters
+    ----------
+    system : LinearSystem
+        The model.
+    X0 : Ellipsoid, Zonotope or Box
+        The set of ``x_0``.
+    ys : numpy.ndarray, shape (N, p)
+        The measurements (already checked by :meth:`LinearSystem.measurements`).
+    method : {"ellipsoid_volume", "ellipsoid_trace"}
+        The observer.
+
+    Returns
+    -------
+    list of Ellipsoid
+        One ellipsoid per measurement, each containing the exact set ``X_k``.
+
+    Raises
+    ------
+    ValueError
+        If ``X0`` does not have the system's dimension.
+    optbound.sets.base.EmptySetError
+        If a fusion proves the estimate empty.
+    """
     criterion = CRITERIA[method]
     W = ellipsoid_of(system.W, WEIGHTS[criterion])
     E = initial_ellipsoid(X0, criterion)

@@ -188,6 +188,19 @@ def parameter_certificate(Z: ConstrainedZonotope, p) -> list[Fraction] | None:
     by an exact solve on chosen columns (:func:`_repair`). A result is accepted only if every
     ``|xi_i| <= 1`` and both equalities hold exactly (tried for eps in 1e-9, 1e-12, 0). Cost:
     a few float LPs and, typically, one exact ``(n + nc) x (n + nc)`` elimination.
+
+    Parameters
+    ----------
+    Z : ConstrainedZonotope
+        ``<c, G, A, b>`` (Scott et al. 2016's representation), its floats read exactly.
+    p : sequence of Fraction (or float)
+        The point.
+
+    Returns
+    -------
+    list of Fraction or None
+        ``xi`` with ``|xi_i| <= 1``, ``G xi = p - c`` and ``A xi = b`` exactly, proving
+        ``p in Z``; None when no certificate was found (undecided, not a refutation).
     """
     p = [Fraction(x) for x in p]
     r = [x - y for x, y in zip(p, fractions(Z.center), strict=True)] + fractions(Z.b)
@@ -224,7 +237,20 @@ def _in_zonotope(Z: Zonotope, points: list[Point]) -> bool | None:
 
 def max_level(E: Ellipsoid, points) -> Fraction:
     """The largest ``(p - c)^T Q^{-1} (p - c)`` over the rational points, exact (``Q^{-1}``
-    inverted in rational arithmetic); ``<= 1`` iff every point lies in E."""
+    inverted in rational arithmetic); ``<= 1`` iff every point lies in E.
+
+    Parameters
+    ----------
+    E : Ellipsoid
+        ``E(c, Q)``, its floats read exactly.
+    points : iterable of sequences of Fraction (or float)
+        The points.
+
+    Returns
+    -------
+    Fraction
+        ``max_p (p - c)^T Q^{-1} (p - c)`` (0 for no point).
+    """
     Q_inv, c = inverse(fractions(E.shape)), fractions(E.center)
     worst = Fraction(0)
     for p in points:

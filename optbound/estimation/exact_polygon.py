@@ -42,11 +42,27 @@ def exact_polygons(system: LinearSystem, X0, ys) -> list[list[Point]]:
     """The exact polygons ``[X_1, ..., X_N]`` (module docstring); an empty list element means
     the measurements are inconsistent from that step on.
 
+    Parameters
+    ----------
+    system : LinearSystem
+        A 2-D model with Box or Zonotope noise.
+    X0 : Box or Zonotope
+        The set of ``x_0``.
+    ys : array_like, shape (N, p) or (N,) when p = 1
+        ``ys[k-1]`` measures ``x_k``.
+
+    Returns
+    -------
+    list of list of tuple of Fraction
+        The exact vertices of each ``X_k``, counter-clockwise.
+
     Raises
     ------
     ValueError
         If the system is not 2-D, the noise is not polytopic, or V is not a product of
         intervals (:func:`optbound.estimation.exact_polytope.output_bounds`).
+    TypeError
+        If ``X0`` is not a 2-D Box or Zonotope.
     """
     if system.dim != 2 or not system.polytopic:
         raise ValueError("exact_polygons needs a 2-D system with Box or Zonotope noise")

@@ -38,6 +38,18 @@ def _q(x) -> Fraction:
 def output_bounds(system: LinearSystem) -> tuple[list[Fraction], list[Fraction]]:
     """The exact interval ``[lo_i, hi_i]`` of V's i-th coordinate, per output row.
 
+    Parameters
+    ----------
+    system : LinearSystem
+        The model, with Box or Zonotope V.
+
+    Returns
+    -------
+    lo : list of Fraction
+        The lower bound per output row (``c_i - sum_j |G_ij|`` for a zonotope V).
+    hi : list of Fraction
+        The upper bound per output row (``c_i + sum_j |G_ij|``).
+
     Raises
     ------
     ValueError
@@ -60,7 +72,20 @@ def output_bounds(system: LinearSystem) -> tuple[list[Fraction], list[Fraction]]
 
 def center_segments(Z: Box | Zonotope) -> tuple[list[Fraction], list[list[Fraction]]]:
     """A box or zonotope as its exact centre and generators (a box's are its midpoint and
-    half-widths, exact in rationals)."""
+    half-widths, exact in rationals).
+
+    Parameters
+    ----------
+    Z : Box or Zonotope
+        The set.
+
+    Returns
+    -------
+    center : list of Fraction
+        The exact centre.
+    generators : list of list of Fraction
+        The exact generators, one list per generator.
+    """
     if isinstance(Z, Box):
         lo, hi = [_q(x) for x in Z.lo], [_q(x) for x in Z.hi]
         n = len(lo)
@@ -71,7 +96,18 @@ def center_segments(Z: Box | Zonotope) -> tuple[list[Fraction], list[list[Fracti
 
 
 def zonotope_polytope(Z: Box | Zonotope) -> RationalPolytope:
-    """The exact polytope of a box or zonotope (its centre plus one segment at a time)."""
+    """The exact polytope of a box or zonotope (its centre plus one segment at a time).
+
+    Parameters
+    ----------
+    Z : Box or Zonotope
+        The set, its floats read exactly.
+
+    Returns
+    -------
+    RationalPolytope
+        ``c + sum_j [-g_j, g_j]``, exact.
+    """
     c, gens = center_segments(Z)
     P = convex_hull([c], len(c))
     for g in gens:
@@ -104,6 +140,24 @@ def exact_polytopes(system: LinearSystem, X0: Box | Zonotope, ys) -> list[Ration
         not a product of intervals (:func:`output_bounds`).
     TypeError
         If X0 is not a Box or Zonotope of the system's dimension.
+
+    Notes
+    -----
+    ``X_k = (A X_{k-1} ⊕ W) ∩ {x : y_k - hi <= C x <= y_k - lo}`` in the vertex
+    representation, every float read as the rational it is (module docstring).
+
+    Examples
+    --------
+    >>> from optbound import Box
+    >>> from optbound.estimation import LinearSystem, exact_polytopes
+    >>> A, C = [[1.0, 0.5], [0.0, 1.0]], [[1.0, 0.0]]
+    >>> system = LinearSystem(A, C, W=Box([-0.1, -0.1], [0.1, 0.1]), V=Box([-0.2], [0.2]))
+    >>> P = exact_polytopes(system, Box([-1.0, -1.0], [1.0, 1.0]), [0.3, 0.5, 0.9])
+    >>> len(P), len(P[-1].vertices)
+    (3, 6)
+    >>> lo, hi = P[-1].volume_bounds()  # the exact Fraction volume, rounded outward
+    >>> lo <= P[-1].volume <= hi, round(hi, 9)
+    (True, 0.4075)
     """
     n = system.dim
     if n > MAX_DIM:

@@ -32,7 +32,29 @@ NoiseSet = Box | Zonotope | Ellipsoid
 
 
 def as_noise(name: str, Y, dim: int) -> NoiseSet:
-    """``Y`` (a bounded Box, a Zonotope or an Ellipsoid) of dimension ``dim``, checked."""
+    """``Y`` (a bounded Box, a Zonotope or an Ellipsoid) of dimension ``dim``, checked.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, for the error messages (``"W"`` or ``"V"``).
+    Y : Box, Zonotope or Ellipsoid
+        The noise set.
+    dim : int
+        The dimension it must have.
+
+    Returns
+    -------
+    Box, Zonotope or Ellipsoid
+        ``Y`` unchanged.
+
+    Raises
+    ------
+    ValueError
+        If ``Y`` is an unbounded Box or has the wrong dimension.
+    TypeError
+        If ``Y`` is of another type.
+    """
     if isinstance(Y, Box) and not Y.is_bounded:
         raise ValueError(f"{name} must be bounded")
     if not isinstance(Y, Box | Zonotope | Ellipsoid):
@@ -44,7 +66,18 @@ def as_noise(name: str, Y, dim: int) -> NoiseSet:
 
 def zonotope_of(Y: NoiseSet) -> Zonotope:
     """``Y`` itself, a box as a zonotope (radii rounded up), or the certified parallelotope
-    around an ellipsoid."""
+    around an ellipsoid.
+
+    Parameters
+    ----------
+    Y : Box, Zonotope or Ellipsoid
+        A noise set.
+
+    Returns
+    -------
+    Zonotope
+        A zonotope containing ``Y``.
+    """
     if isinstance(Y, Box):
         return Zonotope.from_box(Y)
     return Y if isinstance(Y, Zonotope) else Zonotope.from_ellipsoid(Y)
@@ -56,6 +89,30 @@ def ellipsoid_of(Y, weights: str = "unit") -> Ellipsoid:
 
     ``weights`` selects the member of :meth:`Zonotope.outer_ellipsoid` (``"unit"``: the
     minimum-volume ellipsoid of a parallelotope, ``"norms"``: the trace-minimal member).
+
+    Parameters
+    ----------
+    Y : Ellipsoid, Zonotope or Box
+        The set to enclose.
+    weights : {"unit", "norms"}
+        The member of :meth:`Zonotope.outer_ellipsoid`.
+
+    Returns
+    -------
+    Ellipsoid
+        An ellipsoid containing ``Y`` (``Y`` itself if it is one).
+
+    Raises
+    ------
+    TypeError
+        If ``Y`` is of another type.
+    ValueError
+        If ``Y`` is a single point.
+
+    Notes
+    -----
+    For ``Y = <c, [g_1, ..., g_m]>`` and weights ``w_i > 0``, ``E(c, (sum_i w_i) sum_i g_i g_i^T
+    / w_i)`` contains Y (module docstring).
     """
     if isinstance(Y, Ellipsoid):
         return Y
@@ -74,7 +131,19 @@ def ellipsoid_of(Y, weights: str = "unit") -> Ellipsoid:
 
 
 def coordinate_bounds(Y: NoiseSet) -> Box:
-    """The interval hull of ``Y``, rounded outward (``lo_i <= x_i <= hi_i`` on all of Y)."""
+    """The interval hull of ``Y``, rounded outward (``lo_i <= x_i <= hi_i`` on all of Y).
+
+    Parameters
+    ----------
+    Y : Box, Zonotope or Ellipsoid
+        A noise set.
+
+    Returns
+    -------
+    Box
+        The box ``[lo, hi]``; for an ellipsoid ``E(c, Q)``, ``c_i ± sqrt(Q_ii)`` rounded
+        outward.
+    """
     if isinstance(Y, Box):
         return Y
     if isinstance(Y, Zonotope):

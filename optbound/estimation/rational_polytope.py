@@ -42,12 +42,34 @@ _TINY = 1e-280
 
 
 def dot(a, p):
-    """Exact ``a^T p`` (ints or Fractions of equal length)."""
+    """Exact ``a^T p`` (ints or Fractions of equal length).
+
+    Parameters
+    ----------
+    a, p : sequence of int or Fraction
+        Two vectors of equal length.
+
+    Returns
+    -------
+    int or Fraction
+        ``sum_i a_i p_i``, exact.
+    """
     return sum(map(mul, a, p))
 
 
 def integer_determinant(M: list[list[int]]) -> int:
-    """Exact determinant of an integer matrix (Bareiss' fraction-free elimination)."""
+    """Exact determinant of an integer matrix (Bareiss' fraction-free elimination).
+
+    Parameters
+    ----------
+    M : list of list of int
+        A square integer matrix.
+
+    Returns
+    -------
+    int
+        ``det M`` (1 for the empty matrix).
+    """
     a = [list(r) for r in M]
     n, sign, prev = len(a), 1, 1
     for k in range(n - 1):
@@ -66,7 +88,18 @@ def integer_determinant(M: list[list[int]]) -> int:
 def normal(vectors: list[list[int]]) -> list[int]:
     """An integer vector orthogonal to n - 1 integer vectors of R^n (the generalized cross
     product: entry i is the signed minor without column i; zero iff the vectors are
-    dependent)."""
+    dependent).
+
+    Parameters
+    ----------
+    vectors : list of list of int
+        The n - 1 integer vectors, each of length n.
+
+    Returns
+    -------
+    list of int
+        The vector ``((-1)^i det V_i)_i``, ``V_i`` the vectors without their i-th entry.
+    """
     n = len(vectors) + 1
     return [
         (-1) ** i * integer_determinant([[v[j] for j in range(n) if j != i] for v in vectors])
@@ -76,7 +109,18 @@ def normal(vectors: list[list[int]]) -> list[int]:
 
 def homogeneous(p) -> list[int]:
     """The rational point p as integers ``[d p_1, ..., d p_n, d]``, d > 0 the least common
-    denominator (a point's own scale: hulls of points with unrelated denominators stay small)."""
+    denominator (a point's own scale: hulls of points with unrelated denominators stay small).
+
+    Parameters
+    ----------
+    p : sequence of Fraction
+        A rational point.
+
+    Returns
+    -------
+    list of int
+        ``[d p_1, ..., d p_n, d]``.
+    """
     d = lcm(*(x.denominator for x in p))
     return [int(x * d) for x in p] + [d]
 
@@ -190,6 +234,25 @@ class RationalPolytope:
     volume : Fraction
         The exact n-dimensional volume (0 for a flat or empty set), computed on first use
         from the boundary simplices and the interior point (the cone formula).
+
+    Parameters
+    ----------
+    dim : int
+        Ambient dimension n.
+    vertices : tuple of tuple of Fraction
+        The extreme points, sorted.
+    edges : tuple of (Point, Point)
+        Segments covering every edge of the polytope.
+    simplices : tuple of tuple of Point
+        The boundary simplices of the triangulation (for the volume).
+    interior : tuple of Fraction or None
+        A point interior to the polytope (None for a flat or empty one).
+
+    Notes
+    -----
+    Built by :func:`convex_hull`, not by hand. The volume is the cone formula
+    ``sum_F |det(q_1 - o, ..., q_n - o)| / n!`` over the boundary simplices F (module
+    docstring).
     """
 
     dim: int
@@ -209,14 +272,27 @@ class RationalPolytope:
 
     @property
     def is_empty(self) -> bool:
+        """Whether the polytope has no point."""
         return not self.vertices
 
     def as_array(self) -> np.ndarray:
-        """The vertices as floats (nearest), shape (V, n)."""
+        """The vertices as floats (nearest), shape (V, n).
+
+        Returns
+        -------
+        numpy.ndarray, shape (V, n)
+            Each vertex coordinate rounded to the nearest float.
+        """
         return np.array([[float(x) for x in p] for p in self.vertices]).reshape(-1, self.dim)
 
     def volume_bounds(self) -> tuple[float, float]:
-        """``(lo, hi)`` floats with ``lo <= volume <= hi`` (the exact volume rounded outward)."""
+        """``(lo, hi)`` floats with ``lo <= volume <= hi`` (the exact volume rounded outward).
+
+        Returns
+        -------
+        tuple of float
+            ``(lo, hi)``, equal when the volume is a float.
+        """
         f = float(self.volume)
         lo = f if Fraction(f) <= self.volume else float(np.nextafter(f, -np.inf))
         hi = f if Fraction(f) >= self.volume else float(np.nextafter(f, np.inf))
@@ -224,7 +300,20 @@ class RationalPolytope:
 
     def cut(self, a, beta: Fraction) -> RationalPolytope:
         """``P ∩ {x : a^T x <= beta}``, exact: the hull of the vertices inside and of the
-        crossings of the edges with the hyperplane ``a^T x = beta``."""
+        crossings of the edges with the hyperplane ``a^T x = beta``.
+
+        Parameters
+        ----------
+        a : sequence of Fraction or int
+            The half-space's normal.
+        beta : Fraction
+            Its offset.
+
+        Returns
+        -------
+        RationalPolytope
+            The cut polytope (empty if no point remains).
+        """
         f = {p: dot(a, p) - beta for p in {q for e in self.edges for q in e} | set(self.vertices)}
         pts = [p for p in self.vertices if f[p] <= 0]
         for p, q in self.edges:
@@ -234,7 +323,18 @@ class RationalPolytope:
         return convex_hull(pts, self.dim)
 
     def minkowski_segment(self, g) -> RationalPolytope:
-        """``P + {s g : |s| <= 1}``, exact (the hull of ``P - g`` and ``P + g``)."""
+        """``P + {s g : |s| <= 1}``, exact (the hull of ``P - g`` and ``P + g``).
+
+        Parameters
+        ----------
+        g : sequence of Fraction
+            The segment's half-vector.
+
+        Returns
+        -------
+        RationalPolytope
+            The Minkowski sum (``P`` itself for a zero ``g``).
+        """
         if not any(g):
             return self
         return convex_hull(
@@ -260,6 +360,7 @@ def convex_hull(points, dim: int) -> RationalPolytope:
     Returns
     -------
     RationalPolytope
+        The hull: its vertices, covering edges and boundary triangulation, all exact.
     """
     pts = sorted({tuple(Fraction(x) for x in p) for p in points})
     if any(len(p) != dim for p in pts):

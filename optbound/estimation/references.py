@@ -56,10 +56,30 @@ def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
     bound of the true area (module docstring).
 
+    Parameters
+    ----------
+    X : ConstrainedZonotope
+        A 2-D exact set (e.g. of :func:`optbound.estimation.exact_sets`).
+
+    Returns
+    -------
+    area : float
+        The area of the polygon of the LP vertices (exact up to the LP tolerance, not
+        certified).
+    upper : float
+        A certified upper bound of the true area: the exact area of
+        :func:`optbound.sets.constrained_zonotope_polygon.outer_polygon`, rounded up.
+
     Raises
     ------
     ValueError
         If ``X`` is not 2-D, or flat or empty (it has no polygon).
+
+    Notes
+    -----
+    Each certified support value ``h(d) >= max_{x in X} d^T x`` gives a half-plane
+    ``d^T x <= h(d)`` containing X; their intersection is exact in rational arithmetic and
+    measured by the shoelace formula ``|sum_k (x_k y_{k+1} - x_{k+1} y_k)| / 2``.
     """
     V, outer = outer_polygon(X)
     pts = [(Fraction(float(x)), Fraction(float(y))) for x, y in V]
@@ -75,17 +95,83 @@ def proven_contains(outer, vertices) -> bool | None:
     Ellipsoid by ``(p - c)^T Q^{-1} (p - c) <= 1``, a spanning Zonotope by its facet slabs, a
     ConstrainedZonotope by an exact parameter certificate per vertex (Scott et al. 2016's
     representation). None: not decided (a flat zonotope, a failed certificate, another
-    type); a constrained zonotope is never refuted (False)."""
+    type); a constrained zonotope is never refuted (False).
+
+    Parameters
+    ----------
+    outer : Box, Ellipsoid, Zonotope or ConstrainedZonotope
+        The estimate, its floats read exactly.
+    vertices : iterable of sequences of Fraction
+        The exact vertices of the polytope (e.g. ``RationalPolytope.vertices``).
+
+    Returns
+    -------
+    bool or None
+        True: the polytope is proven inside ``outer``; False: a vertex is proven outside;
+        None: undecided.
+
+    Notes
+    -----
+    A convex ``outer`` contains a polytope iff it contains its vertices, so the test at the
+    exact vertices decides the containment with no tolerance. A constrained zonotope
+    ``<c, G, A, b>`` (Scott et al. [1]_) holds p iff some ``xi`` with ``|xi|_inf <= 1`` has
+    ``G xi = p - c`` and ``A xi = b``; an exact such ``xi`` is the certificate.
+
+    References
+    ----------
+    .. [1] J. K. Scott, D. M. Raimondo, G. R. Marseglia, R. D. Braatz, "Constrained zonotopes:
+       A new tool for set-based estimation and fault detection", Automatica 69, 2016.
+
+    Examples
+    --------
+    >>> from optbound import Box
+    >>> from optbound.estimation import LinearSystem, exact_polytopes, observe
+    >>> from optbound.estimation.references import proven_contains
+    >>> A, C = [[1.0, 0.5], [0.0, 1.0]], [[1.0, 0.0]]
+    >>> system = LinearSystem(A, C, W=Box([-0.1, -0.1], [0.1, 0.1]), V=Box([-0.2], [0.2]))
+    >>> X0, ys = Box([-1.0, -1.0], [1.0, 1.0]), [0.3, 0.5, 0.9]
+    >>> P = exact_polytopes(system, X0, ys)[-1]
+    >>> round(float(P.volume), 9)  # the floats 0.1, 0.2, ... read as exact rationals
+    0.4075
+    >>> B = observe(system, X0, ys, method="interval")[-1]
+    >>> proven_contains(B, P.vertices), proven_contains(Box([0.8, 0.0], [1.0, 1.0]), P.vertices)
+    (True, False)
+    """
     return proven_inside(outer, vertices)
 
 
 def interval_hull(X: ConstrainedZonotope) -> Box:
-    """The exact set's interval hull, certified (``ConstrainedZonotope.bounding_box``)."""
+    """The exact set's interval hull, certified (``ConstrainedZonotope.bounding_box``).
+
+    Parameters
+    ----------
+    X : ConstrainedZonotope
+        An exact set (e.g. of :func:`optbound.estimation.exact_sets`).
+
+    Returns
+    -------
+    Box
+        The smallest box containing ``X``, its bounds from LP duals checked in outward-rounded
+        arithmetic (any n).
+    """
     return X.bounding_box()
 
 
 def exact_mvee(X: ConstrainedZonotope):
-    """``optbound.optimal.mvee`` of the exact set's vertices (2-D; module docstring)."""
+    """``optbound.optimal.mvee`` of the exact set's vertices (2-D; module docstring).
+
+    Parameters
+    ----------
+    X : ConstrainedZonotope
+        A 2-D exact set.
+
+    Returns
+    -------
+    OuterResult
+        As :func:`optbound.optimal.mvee`: the minimum-volume ellipsoid of the LP vertices
+        (contains the polygon up to the LP tolerance, not certified exactly; for that use
+        :func:`polytope_mvee`).
+    """
     from optbound import optimal
 
     return optimal.mvee(X.vertices())
@@ -101,6 +187,12 @@ def polytope_mvee(P: RationalPolytope):
     contains the exact polytope with no rounding assumption. Cost: one SDP with V points plus
     an exact ``n x n`` inversion and V exact quadratic forms per check.
 
+    Parameters
+    ----------
+    P : RationalPolytope
+        A full-dimensional exact polytope (e.g. of
+        :func:`optbound.estimation.exact_polytope.exact_polytopes`).
+
     Returns
     -------
     OuterResult
@@ -110,6 +202,18 @@ def polytope_mvee(P: RationalPolytope):
     ------
     ValueError
         If the polytope is flat (no ellipsoid of positive volume is its MVEE).
+    optbound.optimal.CertificationError
+        If eight inflations still leave an exact vertex outside.
+
+    Notes
+    -----
+    The MVEE of a polytope is the MVEE of its vertices: ``min -log det L`` subject to
+    ``|L v_i + d| <= 1`` for every vertex (Boyd & Vandenberghe [1]_, Sect. 8.4.1). Inflating
+    ``E(c, Q)`` to ``E(c, t^2 Q)`` with ``t >= sqrt(max_i level_i)`` puts every vertex inside.
+
+    References
+    ----------
+    .. [1] S. Boyd, L. Vandenberghe, *Convex Optimization*, Cambridge University Press, 2004.
     """
     from optbound import optimal
 
@@ -131,7 +235,33 @@ def one_step_optimal(system: LinearSystem, E_prev: Ellipsoid, y, method: str):
     minimum-volume (``ellipsoid_volume``) or minimum-trace (``ellipsoid_trace``) ellipsoid
     containing the observer's prediction from ``E_prev`` ∩ the measurement strips of ``y``.
 
-    Returns the ``OuterResult`` of :func:`optbound.optimal.outer_ellipsoid`.
+    Parameters
+    ----------
+    system : LinearSystem
+        The model.
+    E_prev : Ellipsoid
+        The observer's previous estimate ``E_{k-1}``.
+    y : array_like, shape (p,)
+        The measurement of ``x_k``.
+    method : {"ellipsoid_volume", "ellipsoid_trace"}
+        The observer, hence the criterion.
+
+    Returns
+    -------
+    OuterResult
+        As :func:`optbound.optimal.outer_ellipsoid`: the certified optimum ``O_k`` of the
+        module docstring's split.
+
+    Notes
+    -----
+    The S-procedure SDP (Boyd, El Ghaoui, Feron & Balakrishnan [1]_) over the prediction
+    ellipsoid and the strips ``|a_i^T x - b_i| <= 1``; ``vol E_k / vol O_k`` is the loss of the
+    analytic strip fusion in that step.
+
+    References
+    ----------
+    .. [1] S. Boyd, L. El Ghaoui, E. Feron, V. Balakrishnan, *Linear Matrix Inequalities in
+       System and Control Theory*, SIAM, 1994.
     """
     from optbound import optimal
 

@@ -37,6 +37,34 @@ class LinearSystem:
     With ellipsoidal noise the exact sets are not polytopes: :func:`exact_sets` refuses them,
     and the polytopic observers use :attr:`W_zonotope` / :attr:`V_zonotope`, the certified
     parallelotopes around the ellipsoids (``optbound.estimation.noise``).
+
+    The model is ``x_{k+1} = A x_k + w_k``, ``y_k = C x_k + v_k``; its exact set obeys
+    ``X_k = (A X_{k-1} + W) ∩ {x : y_k - C x in V}`` (module docstring), the setting of
+    Alamo, Bravo & Camacho [1]_ and Scott et al. [2]_.
+
+    Raises
+    ------
+    ValueError
+        If A is not square, C does not have n columns, a matrix is not finite, a Box noise set
+        is unbounded or a noise set has the wrong dimension (the message names the argument).
+    TypeError
+        If W or V is not a Box, Zonotope or Ellipsoid.
+
+    References
+    ----------
+    .. [1] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by zonotopes",
+       Automatica 41(6), 2005.
+    .. [2] J. K. Scott, D. M. Raimondo, G. R. Marseglia, R. D. Braatz, "Constrained zonotopes:
+       A new tool for set-based estimation and fault detection", Automatica 69, 2016.
+
+    Examples
+    --------
+    >>> from optbound import Box
+    >>> from optbound.estimation import LinearSystem
+    >>> A, C = [[1.0, 0.5], [0.0, 1.0]], [[1.0, 0.0]]
+    >>> system = LinearSystem(A, C, W=Box([-0.1, -0.1], [0.1, 0.1]), V=Box([-0.2], [0.2]))
+    >>> system, system.polytopic
+    (LinearSystem(n=2, p=1), True)
     """
 
     def __init__(self, A, C, W: NoiseSet, V: NoiseSet):
@@ -68,14 +96,32 @@ class LinearSystem:
 
     @property
     def dim(self) -> int:
+        """The state dimension n."""
         return self.A.shape[0]
 
     @property
     def n_outputs(self) -> int:
+        """The number of outputs p (rows of C)."""
         return self.C.shape[0]
 
     def measurements(self, ys) -> np.ndarray:
-        """``ys`` as a finite (N, p) array (a 1-D array is one output per step when p = 1)."""
+        """``ys`` as a finite (N, p) array (a 1-D array is one output per step when p = 1).
+
+        Parameters
+        ----------
+        ys : array_like, shape (N, p) or (N,) when p = 1
+            The measurements; ``ys[k-1]`` measures ``x_k``.
+
+        Returns
+        -------
+        numpy.ndarray, shape (N, p)
+            The measurements as floats.
+
+        Raises
+        ------
+        ValueError
+            If ``ys`` is not finite or does not have p columns.
+        """
         ys = np.asarray(ys, dtype=float)
         if ys.ndim == 1 and self.n_outputs == 1:
             ys = ys[:, None]

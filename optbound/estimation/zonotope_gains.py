@@ -34,7 +34,35 @@ GAINS = ("frobenius", "volume")
 
 
 def frobenius_gain(G: np.ndarray, a: np.ndarray, s: float) -> np.ndarray:
-    """Alamo et al.'s F-radius gain (module docstring); zero when ``G^T a`` and s vanish."""
+    """Alamo et al.'s F-radius gain (module docstring); zero when ``G^T a`` and s vanish.
+
+    Parameters
+    ----------
+    G : numpy.ndarray, shape (n, m)
+        The generator matrix of the zonotope.
+    a : numpy.ndarray, shape (n,)
+        The strip's normal.
+    s : float
+        The strip's half-width (``|a^T x - mid| <= s``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (n,)
+        ``lam = G G^T a / (a^T G G^T a + s^2)``.
+
+    Notes
+    -----
+    The Frobenius norm of ``[(I - lam a^T) G, s lam]`` is a convex quadratic in ``lam``; its
+    minimiser is the formula above (Alamo et al. [1]_, Sect. 5; for one output row it is also
+    the covariation-trace gain of Combastel [2]_).
+
+    References
+    ----------
+    .. [1] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by zonotopes",
+       Automatica 41(6), 2005.
+    .. [2] C. Combastel, "Zonotopes and Kalman observers: Gain optimality under distinct
+       uncertainty paradigms and robust convergence", Automatica 55, 2015.
+    """
     Ga = G.T @ a
     denom = float(Ga @ Ga + s * s)
     return (G @ Ga) / denom if denom > 0.0 else np.zeros(G.shape[0])
@@ -49,7 +77,25 @@ def _cofactors(M: np.ndarray) -> np.ndarray:
 
 
 def volume_terms(G: np.ndarray) -> tuple[float, np.ndarray]:
-    """``sum_{|S|=n} |det G_S|`` and the cofactor vectors d_T (rows) of the module docstring."""
+    """``sum_{|S|=n} |det G_S|`` and the cofactor vectors d_T (rows) of the module docstring.
+
+    Parameters
+    ----------
+    G : numpy.ndarray, shape (n, m)
+        The generator matrix of the zonotope.
+
+    Returns
+    -------
+    base : float
+        ``sum_{|S|=n} |det G_S|`` over the n-subsets S of the generators.
+    d : numpy.ndarray, shape (C(m, n-1), n)
+        One cofactor vector per (n-1)-subset T, ``det [G_T, x] = d_T^T x``.
+
+    Raises
+    ------
+    ValueError
+        If ``C(m, n) + C(m, n-1)`` exceeds :data:`MAX_SUBSETS`.
+    """
     n, m = G.shape
     if comb(m, n) + comb(m, n - 1) > MAX_SUBSETS:
         raise ValueError(
@@ -64,7 +110,29 @@ def volume_terms(G: np.ndarray) -> tuple[float, np.ndarray]:
 
 
 def volume_of_gain(G: np.ndarray, a: np.ndarray, s: float, lam: np.ndarray) -> float:
-    """``vol(X(lam)) / 2^n`` by the formula of the module docstring (floats, for comparisons)."""
+    """``vol(X(lam)) / 2^n`` by the formula of the module docstring (floats, for comparisons).
+
+    Parameters
+    ----------
+    G : numpy.ndarray, shape (n, m)
+        The generator matrix of the zonotope.
+    a : numpy.ndarray, shape (n,)
+        The strip's normal.
+    s : float
+        The strip's half-width (``|a^T x - mid| <= s``).
+    lam : numpy.ndarray, shape (n,)
+        The gain.
+
+    Returns
+    -------
+    float
+        ``|1 - a^T lam| sum_S |det G_S| + s sum_T |d_T^T lam|`` (not certified).
+
+    Raises
+    ------
+    ValueError
+        If there are too many generator subsets (:func:`volume_terms`).
+    """
     base, d = volume_terms(G)
     return abs(1.0 - a @ lam) * base + s * float(np.sum(np.abs(d @ lam)))
 
@@ -72,7 +140,33 @@ def volume_of_gain(G: np.ndarray, a: np.ndarray, s: float, lam: np.ndarray) -> f
 def volume_gain(G: np.ndarray, a: np.ndarray, s: float) -> np.ndarray:
     """The gain minimising the volume of ``X(lam)`` (module docstring), by linear programming:
     minimise ``base t_0 + s sum_T t_T`` subject to ``t_0 >= |1 - a^T lam|``, ``t_T >= |d_T^T
-    lam|``."""
+    lam|``.
+
+    Parameters
+    ----------
+    G : numpy.ndarray, shape (n, m)
+        The generator matrix of the zonotope.
+    a : numpy.ndarray, shape (n,)
+        The strip's normal.
+    s : float
+        The strip's half-width (``|a^T x - mid| <= s``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (n,)
+        The volume-minimising gain (any gain gives a guaranteed enclosure, so the LP's float
+        solution needs no certificate).
+
+    Raises
+    ------
+    ValueError
+        If there are too many generator subsets (:func:`volume_terms`) or the LP fails.
+
+    References
+    ----------
+    .. [1] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by zonotopes",
+       Automatica 41(6), 2005.
+    """
     from scipy.optimize import linprog
 
     n = G.shape[0]
