@@ -33,6 +33,13 @@ DASK_MISSING = 'the dask executor needs dask.distributed: pip install "optbound[
 def check_available(kind: str = "process", scheduler: str | None = None) -> None:
     """Raise now, before any work, if the executor ``kind`` (or ``scheduler``) cannot run.
 
+    Parameters
+    ----------
+    kind : {"process", "dask"}
+        The executor.
+    scheduler : str, optional
+        Address of a running Dask scheduler.
+
     Raises
     ------
     ValueError
