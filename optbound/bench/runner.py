@@ -97,7 +97,8 @@ def run_suite(
     ------
     ValueError
         For an unknown ``suite``, a negative ``seed``, ``jobs`` < 1, unknown family
-        ``names``, or an executor that cannot run (:func:`~optbound.bench.executors.check_available`).
+        ``names``, or an executor that cannot run
+        (:func:`~optbound.bench.executors.check_available`).
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")
