@@ -126,10 +126,14 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    c1, c2 : numpy.ndarray
-        ``(B, n)`` centres of the summands.
-    C1, C2 : numpy.ndarray
-        ``(B, n, n)`` shape matrices of the summands.
+    c1 : numpy.ndarray
+        ``(B, n)`` centres of the first summands.
+    C1 : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
+    c2 : numpy.ndarray
+        ``(B, n)`` centres of the second summands.
+    C2 : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
 
     Returns
     -------

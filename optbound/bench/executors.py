@@ -55,8 +55,11 @@ def check_available(kind: str = "process", scheduler: str | None = None) -> None
 
 
 def ignore_interrupts() -> None:
-    """Worker initializer: Ctrl-C reaches the whole process group, but only the parent
-    should handle it (it stops the workers); a worker would print its own traceback."""
+    """Ignore Ctrl-C in a worker process (the pool's worker initializer).
+
+    Ctrl-C reaches the whole process group, but only the parent should handle it (it stops
+    the workers); a worker would print its own traceback.
+    """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
@@ -124,6 +127,12 @@ def executor(kind: str = "process", jobs: int = 1, scheduler: str | None = None)
         Worker processes of the pool or of the LocalCluster.
     scheduler : str, optional
         Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"`` (implies dask).
+
+    Yields
+    ------
+    object
+        The executor the runner submits tasks to: in-process, a process pool or a Dask
+        client, each shut down when the block is left.
 
     Raises
     ------

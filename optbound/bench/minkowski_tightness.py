@@ -67,8 +67,10 @@ def instance(task: dict):
 
     Returns
     -------
-    E1, E2 : Ellipsoid
-        The summands; ``E2`` is scaled by ``task["scale"]``.
+    E1 : Ellipsoid
+        The first summand.
+    E2 : Ellipsoid
+        The second summand, scaled by ``task["scale"]``.
     """
     rng = np.random.default_rng(task["seed"])
     E1 = random_ellipsoid(rng, task["dim"], task["cond"])

@@ -153,7 +153,7 @@ def kjwm00_records(trials: int) -> list[dict]:
 
 
 def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
-    """Records and notes from :func:`optbound.bench.sonar_codac.run`'s rows.
+    """Build the records and notes of :func:`optbound.bench.sonar_codac.run`'s rows.
 
     A row without a finite codac time (codac missing, or stopped at the timeout) gives our
     time alone and its note.

@@ -62,7 +62,7 @@ def run_estimators(
     Parameters
     ----------
     estimators : dict of str to callable
-        Name -> estimator (a problem -> its bound), as :func:`optbound.evaluate` takes.
+        Name -> ``estimator(problem) -> set``, as :func:`optbound.evaluate` takes.
     suite : {"tiny", "quick", "full"}
         Size of the problem suite.
     seed : int
