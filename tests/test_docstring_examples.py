@@ -55,6 +55,10 @@ ENTRY_POINTS = [
     "optbound.report.readme:headline_refusal",
     "optbound.report.summary:ratio_stats",
     "optbound.report.tables:markdown_table",
+    "optbound.bench.family:Family",
+    "optbound.bench.run_folder:RunFolder",
+    "optbound.bench.records:ratio",
+    "optbound.bench.timing:speed_record",
 ]
 
 

@@ -72,6 +72,22 @@ class Family:
     ------
     ValueError
         If ``kind`` is not one of :data:`KINDS`.
+
+    Examples
+    --------
+    >>> from optbound.bench.family import Family
+    >>> family = Family(
+    ...     name="demo",
+    ...     title="A demo family",
+    ...     kind="speed",
+    ...     requires=("math:sqrt", "no_such_module"),
+    ...     tasks=lambda suite, seed: [{"seed": seed}],
+    ...     run=lambda task: {"records": [{"family": "demo", "value": task["seed"]}]},
+    ... )
+    >>> family.missing(), family.cost({"seed": 0})
+    (['no_such_module'], 1.0)
+    >>> [family.run(task) for task in family.tasks("tiny", 3)]
+    [{'records': [{'family': 'demo', 'value': 3}]}]
     """
 
     name: str

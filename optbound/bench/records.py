@@ -39,6 +39,15 @@ def ratio(metric: str, analytic: Ellipsoid, reference: Ellipsoid, dims=None) -> 
     -------
     float
         The ratio; >= 1 when the reference is optimal for this metric.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from optbound import Ellipsoid
+    >>> from optbound.bench.records import ratio
+    >>> wide, unit = Ellipsoid(np.zeros(2), np.diag([4.0, 1.0])), Ellipsoid(np.zeros(2), np.eye(2))
+    >>> round(ratio("volume_ratio", wide, unit), 12), ratio("trace_ratio", wide, unit)
+    (2.0, 2.5)
     """
     from optbound import compare
 

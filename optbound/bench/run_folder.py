@@ -40,6 +40,19 @@ class RunFolder:
         The folder (created with the first finished task).
     arguments : dict
         The command's arguments, JSON-able, stored in ``run.json`` for ``--resume``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from optbound.bench.run_folder import RunFolder
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     folder = RunFolder(tmp, {"suite": "tiny", "seed": 0})
+    ...     folder.save("strip", 0, {"seed": 7}, {"records": [{"ratio": 1.5}]})
+    ...     resumed = RunFolder.open(tmp)
+    ...     print(resumed.arguments)
+    ...     print(resumed.load("strip", 0, {"seed": 7}), resumed.load("strip", 0, {"seed": 8}))
+    {'suite': 'tiny', 'seed': 0}
+    {'records': [{'ratio': 1.5}]} None
     """
 
     def __init__(self, path: str | Path, arguments: dict):

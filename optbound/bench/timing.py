@@ -53,5 +53,14 @@ def speed_record(family: str, name: str, seconds: float, unit: str = "s", **extr
     -------
     dict
         ``{"family", "name", "value", "unit", **extra}``.
+
+    Examples
+    --------
+    >>> from optbound.bench.timing import speed_record
+    >>> record = speed_record("speed_demo", "one call", 2e-6, ratio=3.0, ratio_label="faster")
+    >>> sorted(record)
+    ['family', 'name', 'ratio', 'ratio_label', 'unit', 'value']
+    >>> record["value"], record["unit"]
+    (2e-06, 's')
     """
     return {"family": family, "name": name, "value": seconds, "unit": unit, **extra}
