@@ -10,7 +10,9 @@ package (numpy, scipy, cvxpy, clarabel, optbound's subpackages, numba's dispatch
 cProfile slows pure-Python code more than compiled code, so the shares of Python-heavy
 functions are upper bounds; the per-family CPU seconds are measured without it.
 
-Run: ``python -m benchmarks.bench_profile [--suite quick] [--top 8]``.
+Run: ``python -m benchmarks.bench_profile [--suite quick] [--top 8]``; the documentation's
+table (``docs/performance.md``) is this output, written by ``python -m tests.doc_tables
+bench-profile``.
 """
 
 from __future__ import annotations
@@ -74,41 +76,58 @@ def profile_family(suite: str, name: str) -> tuple[float, pstats.Stats]:
     return cpu, pstats.Stats(profiler)
 
 
+def measure(suite: str = "quick", names: list[str] | None = None) -> dict:
+    """Per family: its CPU seconds and profile, after one warm-up run of ``names`` (default:
+    every family); also the load average at start and end."""
+    names = names or family_names()
+    load = os.getloadavg()[0]
+    with tempfile.TemporaryDirectory() as out:
+        _bench(suite, names, out)  # warm: numba's cache filled, modules imported
+    families = {name: profile_family(suite, name) for name in names}
+    return {"suite": suite, "load": (load, os.getloadavg()[0]), "families": families}
+
+
+def tables(measured: dict, top: int = 8) -> str:
+    """The Markdown tables of :func:`measure`'s result: the families, then per family the
+    packages and the ``top`` functions with the most own time."""
+    results = measured["families"]
+    total = sum(cpu for cpu, _ in results.values())
+    load0, load1 = measured["load"]
+    lines = [
+        f"optbound bench --suite {measured['suite']}, warm, --jobs 1; load {load0:.1f} at "
+        f"start, {load1:.1f} at end; {total:.1f} s CPU in all",
+        "",
+        "| family | CPU s | share |",
+        "|---|---|---|",
+    ]
+    ranked_families = sorted(results.items(), key=lambda kv: -kv[1][0])
+    lines += [f"| {name} | {cpu:.1f} | {cpu / total:.0%} |" for name, (cpu, _) in ranked_families]
+    for name, (cpu, stats) in ranked_families:
+        rows = stats.stats  # {(file, line, function): (cc, nc, tottime, cumtime, callers)}
+        own = sum(r[2] for r in rows.values()) or 1.0
+        packages: dict = defaultdict(float)
+        for (filename, _, function), r in rows.items():
+            packages[_package(filename, function)] += r[2]
+        lines += ["", f"{name}: {cpu:.1f} s CPU; own time per package (profiled run)", ""]
+        lines += ["| package | share |", "|---|---|"]
+        for package, spent in sorted(packages.items(), key=lambda kv: -kv[1])[:6]:
+            lines.append(f"| {package} | {spent / own:.0%} |")
+        lines += ["", "| function | own | cumulative | calls |", "|---|---|---|---|"]
+        for (filename, _line, function), (_, calls, tottime, cumtime, _) in sorted(
+            rows.items(), key=lambda kv: -kv[1][2]
+        )[:top]:
+            where = f"{_package(filename, function)}:{function}"
+            lines.append(f"| {where} | {tottime / own:.0%} | {cumtime / own:.0%} | {calls} |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=("tiny", "quick", "full"), default="quick")
     parser.add_argument("--top", type=int, default=8, help="functions shown per family")
     parser.add_argument("--family", action="append", help="only these families")
     args = parser.parse_args(argv)
-    names = args.family or family_names()
-    load = os.getloadavg()[0]
-    with tempfile.TemporaryDirectory() as out:
-        _bench(args.suite, names, out)  # warm: numba's cache filled, modules imported
-    results = {name: profile_family(args.suite, name) for name in names}
-    total = sum(cpu for cpu, _ in results.values())
-    print(f"optbound bench --suite {args.suite}, warm, --jobs 1; load {load:.1f} at start, "
-          f"{os.getloadavg()[0]:.1f} at end; {total:.1f} s CPU in all\n")  # fmt: skip
-    print("| family | CPU s | share |")
-    print("|---|---|---|")
-    for name, (cpu, _) in sorted(results.items(), key=lambda kv: -kv[1][0]):
-        print(f"| {name} | {cpu:.1f} | {cpu / total:.0%} |")
-    for name, (cpu, stats) in sorted(results.items(), key=lambda kv: -kv[1][0]):
-        rows = stats.stats  # {(file, line, function): (cc, nc, tottime, cumtime, callers)}
-        own = sum(r[2] for r in rows.values()) or 1.0
-        print(f"\n{name}: {cpu:.1f} s CPU; own time per package (profiled run)")
-        packages: dict = defaultdict(float)
-        for (filename, _, function), r in rows.items():
-            packages[_package(filename, function)] += r[2]
-        print("| package | share |")
-        print("|---|---|")
-        for package, spent in sorted(packages.items(), key=lambda kv: -kv[1])[:6]:
-            print(f"| {package} | {spent / own:.0%} |")
-        print("| function | own | cumulative | calls |")
-        print("|---|---|---|---|")
-        ranked = sorted(rows.items(), key=lambda kv: -kv[1][2])[: args.top]
-        for (filename, _line, function), (_, calls, tottime, cumtime, _) in ranked:
-            where = f"{_package(filename, function)}:{function}"
-            print(f"| {where} | {tottime / own:.0%} | {cumtime / own:.0%} | {calls} |")
+    print(tables(measure(args.suite, args.family), args.top))
 
 
 if __name__ == "__main__":

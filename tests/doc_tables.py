@@ -164,6 +164,17 @@ def _localization() -> str:
     )
 
 
+def _bench_profile() -> str:
+    """Where the CPU of a warm quick bench goes, per family and per function (minutes)."""
+    from benchmarks.bench_profile import measure, tables
+
+    return (
+        "Output of `python -m tests.doc_tables bench-profile` (`benchmarks/bench_profile.py`; "
+        "shares of the profiled run, cProfile inflates pure-Python code):\n\n"
+        + tables(measure("quick"), top=4)
+    )
+
+
 GENERATORS: dict[str, Callable[[], str]] = {
     "battery": _battery,
     "clip-effect": _clip_effect,
@@ -171,6 +182,7 @@ GENERATORS: dict[str, Callable[[], str]] = {
     "localization": _localization,
     "speed-analytic": _speed_analytic,
     "margin": _margin,
+    "bench-profile": _bench_profile,
 }
 
 

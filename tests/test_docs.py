@@ -231,3 +231,13 @@ def test_the_readme_links_and_picture_exist():
     script = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(script)
     assert script.FIGURE == ROOT / picture  # drawn by docs/report_figure.py, not by hand
+
+
+def test_public_docstrings_have_their_numpydoc_sections():
+    pytest.importorskip("numpydoc")  # the docs extra (installed by .ci/run)
+    spec = importlib.util.spec_from_file_location(
+        "check_docstrings", ROOT / "docs" / "check_docstrings.py"
+    )
+    checker = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(checker)
+    assert checker.failures(checker.ENFORCED) == []

@@ -63,6 +63,17 @@ class ConvexSet(ABC):
         """Support function ``max {d^T x : x in set}`` for each row of ``d`` (may be +inf)."""
 
     def extent(self, a) -> tuple[float, float]:
-        """Range ``[min a^T x, max a^T x]`` of the linear functional ``a`` over the set."""
+        """Range ``[min a^T x, max a^T x]`` of the linear functional ``a`` over the set.
+
+        Parameters
+        ----------
+        a : array_like, shape (n,)
+            The direction of the linear functional.
+
+        Returns
+        -------
+        tuple of float
+            ``(-support(-a), support(a))``, as guaranteed as the type's ``support``.
+        """
         a = np.asarray(a, dtype=float)
         return -float(self.support(-a)), float(self.support(a))

@@ -16,16 +16,28 @@ Records, one per method and recorded step ``k``:
   set, the polygon's area exactly); ``mvee_ratio_lo/hi``, the bracket of area(set) / area(MVEE
   of the exact polygon's vertices, :func:`optbound.optimal.mvee`); ``contained``: True when
   :func:`optbound.estimation.references.proven_contains` proves, in rational arithmetic, that
-  the set contains the exact polygon (boxes, zonotopes, ellipsoids), None where it cannot decide
-  (constrained zonotopes);
+  the set contains the exact polygon (at its vertices: boxes by their bounds, ellipsoids by
+  their quadratic form, zonotopes by their facets, constrained zonotopes by an exact parameter
+  certificate per vertex), False where a vertex is outside, None where a certificate fails;
 - otherwise the size measure is the **interval-hull widths**: ``ratio_lo/hi`` is the bracket
   of the mean over states of width(set's hull) / width(exact set's hull), the exact hull by
   certified LP bounds (:func:`optbound.estimation.references.interval_hull`; box noise and
   n <= 6 only: the exact constrained zonotope grows by one constraint per output and step);
   where there is no exact reference (ellipsoidal noise, the tank) ``hull_ratio`` is the mean
   over states of width / the smallest width any method reached in that state;
-  ``mean_width`` is recorded everywhere; ``contained`` is None (not decided in n > 2);
-- ``ms_per_step``: the method's wall time over the whole run / number of steps.
+  ``mean_width`` is recorded everywhere; ``contained`` is None (not decided in n > 2: the
+  exact polytopes of :func:`optbound.estimation.exact_polytopes` take minutes over the 50 - 100
+  steps of these runs);
+- ``ms_per_step``: the method's wall time over the whole run / number of steps;
+- the tank only, for the two ellipsoidal observers at every :data:`SDP_EVERY`-th step (the
+  S-procedure SDP takes about 10 s at n = 30, so it is sampled, not run per step):
+  ``one_step_ratio``, the observer's size (volume or trace, its own criterion) over that of
+  the certified optimal ellipsoid of the same step
+  (:func:`optbound.estimation.references.one_step_optimal`: the smallest ellipsoid containing
+  the observer's own prediction ∩ the measurement strips), i.e. the loss of the analytic strip
+  fusion in that step (float ratio of certified ellipsoids), and ``sdp_seconds``, that SDP's
+  wall time; where the SDP cannot be certified (a degenerate prediction), ``one_step_ratio``
+  is None and ``sdp_error`` says why.
 
 A method that refuses a system (the volume gain's generator subsets beyond its limit) gives
 one record with its ``error``. The first 2-D task of each system attaches a PNG: the exact
@@ -64,6 +76,8 @@ FIGURE_STEPS = (1, 2, 5, 20)
 SHORT_STEPS = (1, 2, 3, 5, 7, 10, 14, 20)
 #: ... and in a longer one, every this many steps (and the last).
 EVERY = 10
+#: The tank's one-step optimal ellipsoid (an SDP) is solved at every this many steps.
+SDP_EVERY = 10
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
@@ -197,6 +211,9 @@ def run(task: dict) -> dict:
         measured, drawn = _polygon_measures(system, X0, ys, runs, ks)
     else:
         measured, drawn = _hull_measures(system, X0, ys, runs, ks, task), None
+    if task["system"] == "tank":
+        for (method, k), rec in _one_step_losses(system, ys, runs, ks).items():
+            measured[method][k].update(rec)
     out = [{**base, "method": m, "k": None, "error": e} for m, e in errors.items()]
     for method, (_, ms) in runs.items():
         for k in ks:
@@ -281,6 +298,39 @@ def _hull_measures(system, X0, ys, runs: dict, ks: list[int], task: dict) -> dic
     return out
 
 
+def _one_step_losses(system, ys, runs: dict, ks: list[int]) -> dict:
+    """``{(method, k): {"one_step_ratio", "sdp_seconds"}}`` of the ellipsoidal observers at
+    the steps of ``ks`` divisible by :data:`SDP_EVERY` (module docstring)."""
+    from optbound import optimal
+    from optbound.estimation.ellipsoidal import CRITERIA
+    from optbound.estimation.references import one_step_optimal
+
+    out = {}
+    for method in CRITERIA:
+        if method not in runs:
+            continue
+        sets = runs[method][0]
+        for k in (k for k in ks if k % SDP_EVERY == 0):
+            start = time.perf_counter()
+            try:
+                opt = one_step_optimal(system, sets[k - 2], ys[k - 1], method).ellipsoid
+            except (ValueError, optimal.CertificationError) as exc:  # e.g. a degenerate prediction
+                out[method, k] = {
+                    "one_step_ratio": None,
+                    "sdp_seconds": time.perf_counter() - start,
+                    "sdp_error": f"{type(exc).__name__}: {exc}",
+                }
+                continue
+            seconds = time.perf_counter() - start
+            E = sets[k - 1]
+            if CRITERIA[method] == "volume":  # in logs: the volumes of n = 30 underflow
+                ratio = float(np.exp(E.log_volume() - opt.log_volume()))
+            else:
+                ratio = float(np.trace(E.shape) / np.trace(opt.shape))
+            out[method, k] = {"one_step_ratio": ratio, "sdp_seconds": seconds}
+    return out
+
+
 def _png(label: str, polygons: list, runs: dict, records: list[dict]) -> str:
     """Base64 PNG: the exact polygon and each observer at :data:`FIGURE_STEPS`, then the
     area-ratio curves (upper ends of the brackets) versus k."""
@@ -334,7 +384,7 @@ def _outline(ax, S, color: str, label: str) -> None:
 def cost(task: dict) -> float:
     """Estimate the seconds of one task (2-core VM).
 
-    The tank's constrained zonotopes and zonotopes dominate the full suite.
+    The tank's SDPs, constrained zonotopes and zonotopes dominate the full suite.
 
     Parameters
     ----------
@@ -346,8 +396,8 @@ def cost(task: dict) -> float:
     float
         Estimated seconds on one core.
     """
-    if task["system"] == "tank":
-        return 120.0
+    if task["system"] == "tank":  # the observers, then 2 x 23 SDPs of about 10 s
+        return 120.0 + 2 * (task["steps"] // SDP_EVERY) * 10.0
     return 0.1 * task["steps"] * task["n"]
 
 

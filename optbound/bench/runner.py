@@ -37,6 +37,7 @@ import numpy as np
 from threadpoolctl import threadpool_limits
 
 import optbound
+from optbound.bench import warmup
 from optbound.bench.executors import check_available, ignore_interrupts
 from optbound.bench.executors import executor as make_executor
 from optbound.bench.family import SUITES, Family
@@ -146,6 +147,8 @@ def run_suite(
                 resumed += 1
         # Longest first: a long task started last would leave the other workers idle at the end.
         pooled = sorted((t for t in todo if t[0].parallel), key=lambda t: -t[3])
+        if pooled and executor == "process" and scheduler is None and where is None and not names:
+            warmup.compile_cold(jobs)  # a cold cache: the big kernels, once, over the cores
         _run_pooled(pooled, finish, executor, jobs, scheduler)
         for fam, i, task, cost in (t for t in todo if not t[0].parallel):
             run = _run_alone if fam.isolated else _run_registered

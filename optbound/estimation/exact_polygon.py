@@ -5,7 +5,8 @@ Every float of the data is read as the exact rational it is, and ``X_k = (A X_{k
 W (a zonotope) is added one generator at a time (the hull of ``P - g`` and ``P + g``), and
 the polygon is clipped by the two lines of each output row (``y_i - hi_i <= c_i^T x <= y_i -
 lo_i``, ``[lo_i, hi_i]`` the interval hull of V's i-th coordinate, exact for a box V). The
-vertices, the area and any membership test on them are therefore exact; this is the
+vertices, the area (:func:`optbound.sets.constrained_zonotope_polygon.polygon_area`) and any
+membership test on them are therefore exact; this is the
 reference against which containment is *proven* (:func:`optbound.estimation.references.
 proven_contains`). Limited to n = 2 and box V (or p = 1 zonotope V, whose interval is exact);
 :mod:`optbound.estimation.exact_polytope` computes the same sets (tested equal) for n <= 4.
@@ -18,68 +19,22 @@ from fractions import Fraction
 from optbound._core import Box
 from optbound.estimation.exact_polytope import output_bounds
 from optbound.estimation.system import LinearSystem
+from optbound.sets.constrained_zonotope_polygon import Point, clip, convex_hull
 from optbound.sets.zonotope import Zonotope
-
-Point = tuple[Fraction, Fraction]
 
 
 def _q(x) -> Fraction:
     return Fraction(float(x))
 
 
-def _cross(o: Point, a: Point, b: Point) -> Fraction:
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
-def hull(pts) -> list[Point]:
-    """Exact convex hull, counter-clockwise, collinear points dropped (monotone chain)."""
-    pts = sorted(set(pts))
-    if len(pts) <= 2:
-        return pts
-    lower: list[Point] = []
-    upper: list[Point] = []
-    for p in pts:
-        while len(lower) >= 2 and _cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and _cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return lower[:-1] + upper[:-1]
-
-
-def _clip(P: list[Point], a: Point, bound: Fraction) -> list[Point]:
-    """``P ∩ {x : a^T x <= bound}`` (exact)."""
-    out = []
-    for k in range(len(P)):
-        p, q = P[k], P[(k + 1) % len(P)]
-        fp = a[0] * p[0] + a[1] * p[1] - bound
-        fq = a[0] * q[0] + a[1] * q[1] - bound
-        if fp <= 0:
-            out.append(p)
-        if (fp < 0 < fq) or (fq < 0 < fp):
-            t = fp / (fp - fq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return hull(out)
-
-
-def area(P: list[Point]) -> Fraction:
-    """Exact area (shoelace)."""
-    n = len(P)
-    if n < 3:
-        return Fraction(0)
-    return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
-
-
 def _polygon(Z: Box | Zonotope) -> list[Point]:
     """The exact vertices of a 2-D box or zonotope (hull of the generator sums)."""
     if isinstance(Z, Box):
-        return hull([(_q(x), _q(y)) for x in (Z.lo[0], Z.hi[0]) for y in (Z.lo[1], Z.hi[1])])
+        return convex_hull([(_q(x), _q(y)) for x in (Z.lo[0], Z.hi[0]) for y in (Z.lo[1], Z.hi[1])])
     P = [(_q(Z.center[0]), _q(Z.center[1]))]
     for g in Z.generators.T:
         gx, gy = _q(g[0]), _q(g[1])
-        P = hull([(p[0] + s * gx, p[1] + s * gy) for p in P for s in (-1, 1)])
+        P = convex_hull([(p[0] + s * gx, p[1] + s * gy) for p in P for s in (-1, 1)])
     return P
 
 
@@ -104,12 +59,12 @@ def exact_polygons(system: LinearSystem, X0, ys) -> list[list[Point]]:
     P = _polygon(X0)
     out = []
     for y in system.measurements(ys):
-        P = hull([tuple(row[0] * p[0] + row[1] * p[1] for row in A) for p in P])
-        P = hull([(p[0] + w[0], p[1] + w[1]) for p in P for w in W])
+        P = convex_hull([tuple(row[0] * p[0] + row[1] * p[1] for row in A) for p in P])
+        P = convex_hull([(p[0] + w[0], p[1] + w[1]) for p in P for w in W])
         for i, c in enumerate(C):
             if P:  # c^T x <= y_i - lo_i
-                P = _clip(P, c, _q(y[i]) - lo[i])
+                P = convex_hull(clip(P, c[0], c[1], _q(y[i]) - lo[i]))
             if P:  # c^T x >= y_i - hi_i
-                P = _clip(P, (-c[0], -c[1]), hi[i] - _q(y[i]))
+                P = convex_hull(clip(P, -c[0], -c[1], hi[i] - _q(y[i])))
         out.append(P)
     return out

@@ -15,9 +15,10 @@ What is certified:
 
 - :func:`exact_area`: in 2-D, the polygon of the exact set's vertices found by float LPs
   (``ConstrainedZonotope.vertices``: exact up to the LP tolerance, *not* certified) and a
-  certified upper bound: the polygon cut out by the certified support values
-  (``ConstrainedZonotope.support``, LP duals checked in outward-rounded arithmetic) along the
-  vertex polygon's edge normals, intersected and measured in exact rational arithmetic;
+  certified upper bound: the outer polygon of
+  :func:`optbound.sets.constrained_zonotope_polygon.outer_polygon` (the certified
+  support values along the axes and the vertex polygon's edge normals, LP duals checked in
+  outward-rounded arithmetic, intersected and measured in exact rational arithmetic);
 - the exact set itself for n <= 4: :func:`optbound.estimation.exact_polytope.exact_polytopes`,
   its vertices and volume exact in rational arithmetic (no rounding at all);
 - :func:`proven_contains`: ``X_k ⊆ estimate`` decided in exact rational arithmetic at the
@@ -47,48 +48,22 @@ from optbound.estimation.noise import ellipsoid_of
 from optbound.estimation.rational_polytope import RationalPolytope
 from optbound.estimation.system import LinearSystem
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
+from optbound.sets.constrained_zonotope_polygon import outer_polygon, polygon_area, round_up
 from optbound.sets.ellipsoid import Ellipsoid
-
-
-def _shoelace(P) -> Fraction:
-    n = len(P)
-    return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
-
-
-def _up(x: Fraction) -> float:
-    f = float(x)
-    return f if Fraction(f) >= x else float(np.nextafter(f, np.inf))
-
-
-def certified_polygon(X: ConstrainedZonotope) -> tuple[np.ndarray, list]:
-    """The LP vertex polygon of a 2-D set (floats, ccw) and the corners (Fractions) of a polygon
-    proven to contain the set: the half-planes of the certified support values along the vertex
-    polygon's edge normals, intersected exactly (module docstring)."""
-    if X.dim != 2:
-        raise ValueError(f"the exact-set polygon is for 2-D sets, got dimension {X.dim}")
-    V = X.vertices()
-    if len(V) < 3:
-        raise ValueError("the set is flat or empty: it has no polygon")
-    normals = np.array(
-        [[q[1] - p[1], p[0] - q[0]] for p, q in zip(V, np.roll(V, -1, 0), strict=True)]
-    )
-    h = X.support(normals)
-    N = [(Fraction(float(a)), Fraction(float(b))) for a, b in normals]
-    H = [Fraction(float(x)) for x in h]
-    corners = []
-    for k in range(len(N)):  # corner between edge k-1 and edge k (exact 2x2 solve)
-        (a1, b1), (a2, b2) = N[k - 1], N[k]
-        det = a1 * b2 - a2 * b1
-        corners.append(((H[k - 1] * b2 - H[k] * b1) / det, (a1 * H[k] - a2 * H[k - 1]) / det))
-    return V, corners
 
 
 def exact_area(X: ConstrainedZonotope) -> tuple[float, float]:
     """``(area, upper)`` of a 2-D exact set: the LP vertex polygon's area and a certified upper
-    bound of the true area (module docstring)."""
-    V, corners = certified_polygon(X)
+    bound of the true area (module docstring).
+
+    Raises
+    ------
+    ValueError
+        If ``X`` is not 2-D, or flat or empty (it has no polygon).
+    """
+    V, outer = outer_polygon(X)
     pts = [(Fraction(float(x)), Fraction(float(y))) for x, y in V]
-    return float(_shoelace(pts)), _up(_shoelace(corners))
+    return float(polygon_area(pts)), round_up(polygon_area(outer))
 
 
 def proven_contains(outer, vertices) -> bool | None:
@@ -146,7 +121,7 @@ def polytope_mvee(P: RationalPolytope):
         worst = max_level(E, P.vertices)
         if worst <= 1:
             return replace(res, ellipsoid=E, objective=E.volume(), inflation=res.inflation * alpha)
-        step = _up(Fraction(np.sqrt(float(worst)))) * (1.0 + 4.0 * np.finfo(float).eps)
+        step = round_up(Fraction(np.sqrt(float(worst)))) * (1.0 + 4.0 * np.finfo(float).eps)
         E, alpha = E.scaled(step), alpha * step
     raise optimal.CertificationError("the MVEE still misses an exact vertex after inflation")
 

@@ -25,8 +25,6 @@ to floats (:func:`outward_hull`, the paving's domain): tighter than, and as cert
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import numpy as np
 
 from optbound._core import Box
@@ -35,7 +33,7 @@ from optbound.problems.generators import task_seeds
 from optbound.problems.problem import Problem
 from optbound.scenarios import alamo2005
 from optbound.scenarios.linear_systems import random_system
-from optbound.sets.constrained_zonotope_polygon import polygon_box_test
+from optbound.sets.constrained_zonotope_polygon import polygon_box_test, round_down, round_up
 
 NAME = "linear_estimation"
 # (steps k of Alamo's example, steps k of the random systems, random systems per k).
@@ -173,17 +171,8 @@ def outward_hull(P: list[Point]) -> Box:
     Box
         The smallest float box proven to contain ``P``.
     """
-
-    def down(q: Fraction) -> float:
-        f = float(q)
-        return f if Fraction(f) <= q else float(np.nextafter(f, -np.inf))
-
-    def up(q: Fraction) -> float:
-        f = float(q)
-        return f if Fraction(f) >= q else float(np.nextafter(f, np.inf))
-
     xs, ys = [p[0] for p in P], [p[1] for p in P]
-    return Box([down(min(xs)), down(min(ys))], [up(max(xs)), up(max(ys))])
+    return Box([round_down(min(xs)), round_down(min(ys))], [round_up(max(xs)), round_up(max(ys))])
 
 
 def problem(task: dict) -> Problem:

@@ -195,9 +195,48 @@ def certified_polygons(cz) -> CertifiedPolygons:
     ValueError
         If ``cz`` is not 2-D, or its LP vertex polygon is flat or empty.
     """
+    _check_planar(cz)
+    V, xis = cz._vertex_search()
+    outer, normals, h = _outer(cz, V)
+    return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
+
+
+def outer_polygon(cz) -> tuple[np.ndarray, list[Point]]:
+    """Compute the certified outer polygon of a 2-D constrained zonotope.
+
+    The float LP vertex polygon (ccw) of ``cz`` and the certified outer polygon of
+    :func:`certified_polygons` built from it, without the inner one (whose exact repairs cost
+    far more than the LPs).
+
+    Parameters
+    ----------
+    cz : ConstrainedZonotope
+        A 2-D constrained zonotope.
+
+    Returns
+    -------
+    V : ndarray, shape (m, 2)
+        The LP vertices (floats, counter-clockwise; not certified).
+    outer : list of tuple of Fraction
+        Vertices of a polygon proven to contain ``cz``.
+
+    Raises
+    ------
+    ValueError
+        If ``cz`` is not 2-D, or its LP vertex polygon is flat or empty.
+    """
+    _check_planar(cz)
+    V = cz.vertices()
+    return V, _outer(cz, V)[0]
+
+
+def _check_planar(cz) -> None:
     if cz.dim != 2:
         raise ValueError(f"certified polygons are for 2-D sets, got dimension {cz.dim}")
-    V, xis = cz._vertex_search()
+
+
+def _outer(cz, V: np.ndarray) -> tuple[list[Point], np.ndarray, np.ndarray]:
+    """The outer polygon, its normals and certified support values (module docstring)."""
     if len(V) < 3:
         raise ValueError("the set is flat or empty: it has no polygon")
     edges = np.array(
@@ -214,7 +253,7 @@ def certified_polygons(cz) -> CertifiedPolygons:
     outer = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
     for (a, b), hk in zip(edges, h[4:], strict=True):
         outer = clip(outer, Fraction(float(a)), Fraction(float(b)), Fraction(float(hk)))
-    return CertifiedPolygons(_inner(cz, xis), outer, normals, h)
+    return outer, normals, h
 
 
 def clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
@@ -364,9 +403,11 @@ def polygon_area(P: list[Point]) -> Fraction:
     Returns
     -------
     Fraction
-        The exact area.
+        The exact area; 0 for fewer than three vertices.
     """
     n = len(P)
+    if n < 3:
+        return Fraction(0)
     return abs(sum(P[k][0] * P[(k + 1) % n][1] - P[(k + 1) % n][0] * P[k][1] for k in range(n))) / 2
 
 

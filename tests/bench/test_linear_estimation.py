@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from optbound.bench import linear_estimation as family
-from optbound.estimation import METHODS
+from optbound.estimation import METHODS, observe
 from optbound.report.estimation import estimation_rows, estimation_section
 
 
@@ -24,8 +24,8 @@ def test_tiny_is_alamo_with_every_method_at_every_step(tiny):
         assert 0 < r["ratio_lo"] <= r["ratio_hi"] and r["ratio_hi"] >= 1.0
         assert r["mvee_ratio_lo"] <= r["mvee_ratio_hi"]
         assert r["ms_per_step"] > 0
-        # Proven exactly for boxes, zonotopes and ellipsoids; not decided for CZs.
-        assert r["contained"] is (None if r["method"] == "constrained_zonotope" else True)
+        # Proven exactly for every method (constrained zonotopes by parameter certificates).
+        assert r["contained"] is True
     (png,) = tiny["attachments"].values()
     assert len(png) > 10_000
 
@@ -65,3 +65,45 @@ def test_suites_and_steps():
     assert family.recorded_steps(55) == [10, 20, 30, 40, 50, 55]
     with pytest.raises(ValueError, match="suite"):
         family.tasks("huge", 0)
+
+
+def test_one_step_optimal_sampled_and_reported():
+    # The tank's sampled SDP column, on a small 3-D system (the tank is full-suite only).
+    task = {"seed": 5, "system": "random", "n": 3, "noise": "box", "steps": 20, "rep": 0}
+    _, system, X0, ys = family.instance(task)
+    out = family.run(task)
+    runs = {m: (observe(system, X0, ys, m), 1.0) for m in ("ellipsoid_volume", "ellipsoid_trace")}
+    losses = family._one_step_losses(system, ys, runs, family.recorded_steps(20))
+    assert set(losses) == {(m, k) for m in runs for k in (10, 20)}
+    for loss in losses.values():
+        # The analytic step contains the same prediction ∩ strips as the optimal ellipsoid.
+        assert loss["one_step_ratio"] >= 1.0 - 1e-6 and loss["sdp_seconds"] > 0
+    records = [
+        {**r, **losses.get((r["method"], r["k"]), {})} for r in out["records"] if r["k"] is not None
+    ]
+    text = "\n".join(estimation_section(records))
+    assert "/ one-step optimal (k=20; SDP at 10, 20) | s/SDP |" in text
+    assert "| `interval` |" in text and "| – | – |" in text
+
+
+def test_an_uncertifiable_one_step_sdp_is_recorded_not_fatal(monkeypatch):
+    from optbound.estimation import references
+
+    def fail(*_):
+        raise ValueError("not jointly positive definite")
+
+    monkeypatch.setattr(references, "one_step_optimal", fail)
+    task = {"seed": 5, "system": "random", "n": 3, "noise": "box", "steps": 20, "rep": 0}
+    _, system, X0, ys = family.instance(task)
+    runs = {"ellipsoid_volume": (observe(system, X0, ys, "ellipsoid_volume"), 1.0)}
+    losses = family._one_step_losses(system, ys, runs, [10, 20])
+    for loss in losses.values():
+        assert loss["one_step_ratio"] is None and "positive definite" in loss["sdp_error"]
+    base = {"family": "linear_estimation", "system": "s", "dim": 3, "steps": 20, "error": None}
+    records = [
+        {**base, "method": "ellipsoid_volume", "k": k, "ms_per_step": 1.0, "ratio_lo": 1.5,
+         "ratio_hi": None, "measure": "interval-hull widths", "contained": None, **losses[
+             "ellipsoid_volume", k]}
+        for k in (10, 20)
+    ]  # fmt: skip
+    assert "(2 of 2 not certified)" in "\n".join(estimation_section(records))

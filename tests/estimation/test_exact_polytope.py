@@ -16,8 +16,9 @@ import pytest
 
 from optbound import Box, Ellipsoid, Zonotope
 from optbound import estimation as est
-from optbound.estimation.exact_polygon import area, exact_polygons
+from optbound.estimation.exact_polygon import exact_polygons
 from optbound.estimation.rational_polytope import convex_hull
+from optbound.sets.constrained_zonotope_polygon import polygon_area as area
 from tests.estimation.test_observers import box_noise
 from tests.sets import exact_polytopes as X
 

@@ -77,7 +77,8 @@ def test_proven_contains():
 
 @pytest.mark.parametrize("seed", [0, 2])
 def test_exact_polygons_match_the_oracle(seed):
-    from optbound.estimation.exact_polygon import area, exact_polygons
+    from optbound.estimation.exact_polygon import exact_polygons
+    from optbound.sets.constrained_zonotope_polygon import polygon_area as area
 
     system, X0, polys, ys = box_noise(seed)
     for P, Q in zip(exact_polygons(system, X0, ys), polys, strict=True):

@@ -25,3 +25,5 @@ def test_every_observer_is_at_least_the_exact_set(result):
         assert a >= exact, method
     for curve in result["ratios"].values():
         assert len(curve) == 20 and min(curve) >= 1.0 - 1e-9
+    # Every observer's set contains X_k at every step, proven in exact arithmetic.
+    assert result["proven_steps"] == {m: 20 for m in result["final_areas"]}

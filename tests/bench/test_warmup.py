@@ -1,0 +1,37 @@
+"""The cold-cache warm-up: which groups it finds uncompiled, and that it never stops a run."""
+
+import json
+import os
+import subprocess
+import sys
+
+from optbound.bench import warmup
+
+
+def test_every_group_is_cold_in_an_empty_cache(tmp_path):
+    code = "import json; from optbound.bench import warmup; print(json.dumps(warmup.cold_groups()))"
+    done = subprocess.run(
+        [sys.executable, "-c", code],
+        env={**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    cold = json.loads(done.stdout.strip().splitlines()[-1])
+    assert cold == sorted(warmup.GROUPS, key=lambda name: -warmup.GROUPS[name][0])
+    assert not list(tmp_path.rglob("*.nbi"))  # finding them cold compiled nothing
+
+
+def _fails():
+    raise ValueError("no solver")
+
+
+def test_compile_cold_runs_each_cold_group_once_and_reports_failures(monkeypatch):
+    probe = "optbound.analytic._kernels.strip_kernel:fuse_range"
+    groups = {"ok": (2.0, lambda: None, probe), "bad": (1.0, _fails, probe)}
+    monkeypatch.setattr(warmup, "GROUPS", groups)
+    monkeypatch.setattr(warmup, "cold_groups", lambda: ["ok", "bad"])
+    done = warmup.compile_cold(2)  # a process pool (forked: it sees the patched groups)
+    assert done.keys() == {"ok", "bad"} and isinstance(done["ok"], float)
+    assert done["bad"] == "ValueError: no solver"
+    assert warmup.compile_cold(1) == {}  # one process: nothing to split
