@@ -31,6 +31,7 @@ ENFORCED = [
     "optbound.scenarios",
     "optbound.problems",
     "optbound.report",
+    "optbound.bench",
 ]
 
 

@@ -183,7 +183,8 @@ def run(task: dict) -> dict:
     -------
     dict
         ``{"records": [...]}``: per method and recorded step, its size measures and
-        milliseconds per step (or the error of a method refusing the system); a 2-D figure
+        milliseconds per step (on the tank also the one-step loss against the SDP every
+        :data:`SDP_EVERY` steps), or the error of a method refusing the system; a 2-D figure
         of the first repetition under ``"attachments"``.
     """
     from optbound import estimation as est
