@@ -59,6 +59,8 @@ ENTRY_POINTS = [
     "optbound.bench.run_folder:RunFolder",
     "optbound.bench.records:ratio",
     "optbound.bench.timing:speed_record",
+    "optbound.bench.user_estimators:problem_families",
+    "optbound.bench.executors:check_available",
 ]
 
 

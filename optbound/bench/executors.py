@@ -45,6 +45,15 @@ def check_available(kind: str = "process", scheduler: str | None = None) -> None
     ValueError
         For an unknown ``kind``, or dask requested (``kind="dask"`` or a ``scheduler``)
         but dask.distributed not installed.
+
+    Examples
+    --------
+    >>> from optbound.bench.executors import check_available
+    >>> check_available("process")
+    >>> check_available("threads")
+    Traceback (most recent call last):
+        ...
+    ValueError: executor must be one of ('process', 'dask'), got 'threads'
     """
     if kind not in EXECUTORS:
         raise ValueError(f"executor must be one of {EXECUTORS}, got {kind!r}")

@@ -36,6 +36,12 @@ def problem_families(selected: list[str] | None) -> list[str]:
     -------
     list of str
         Names of :func:`optbound.problems.families`, in their order.
+
+    Examples
+    --------
+    >>> from optbound.bench.user_estimators import problem_families
+    >>> problem_families(["localization", "strip"])
+    ['strip', 'bh_bearings']
     """
     from optbound import problems
 
