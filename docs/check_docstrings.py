@@ -32,6 +32,7 @@ ENFORCED = [
     "optbound.problems",
     "optbound.report",
     "optbound.estimation",
+    "optbound.bench",
 ]
 
 

@@ -60,6 +60,12 @@ ENTRY_POINTS = [
     "optbound.report.readme:headline_refusal",
     "optbound.report.summary:ratio_stats",
     "optbound.report.tables:markdown_table",
+    "optbound.bench.family:Family",
+    "optbound.bench.run_folder:RunFolder",
+    "optbound.bench.records:ratio",
+    "optbound.bench.timing:speed_record",
+    "optbound.bench.user_estimators:problem_families",
+    "optbound.bench.executors:check_available",
 ]
 
 

@@ -94,15 +94,54 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
 
 
 def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
-    """The reference strip update of a batch on all cores (the same slices and threads as
-    ours), into new arrays as ours returns (their first touch is part of the cost)."""
+    """Run the reference strip update of a batch on all cores (same slices and threads as ours).
+
+    The outputs are new arrays, as ours returns (their first touch is part of the cost).
+
+    Parameters
+    ----------
+    c : numpy.ndarray
+        ``(B, n)`` centres.
+    C : numpy.ndarray
+        ``(B, n, n)`` shape matrices.
+    a : numpy.ndarray
+        ``(B, n)`` strip normals.
+    b : numpy.ndarray
+        ``(B,)`` strip offsets (strip ``|a·x - b| <= 1``).
+
+    Returns
+    -------
+    centers : numpy.ndarray
+        ``(B, n)`` centres of the updated ellipsoids.
+    shapes : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
+    """
     out_c, out_C = np.empty(c.shape), np.empty(C.shape)
     run_sliced(partial(strip_range, c, C, a, b, out_c, out_C), len(c))
     return out_c, out_C
 
 
 def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
-    """As :func:`strip_batch` for the volume-optimal Minkowski sum."""
+    """Run the reference volume-optimal Minkowski sum of a batch, as :func:`strip_batch`.
+
+    Parameters
+    ----------
+    c1 : numpy.ndarray
+        ``(B, n)`` centres of the first summands.
+    C1 : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
+    c2 : numpy.ndarray
+        ``(B, n)`` centres of the second summands.
+    C2 : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
+
+    Returns
+    -------
+    centers : numpy.ndarray
+        ``(B, n)`` centres of the sums.
+    shapes : numpy.ndarray
+        ``(B, n, n)`` their shape matrices.
+    """
     out_c, out_C = np.empty(c1.shape), np.empty(C1.shape)
     run_sliced(partial(minkowski_range, c1, C1, c2, C2, out_c, out_C), len(c1))
     return out_c, out_C
@@ -122,7 +161,25 @@ _NO_LAM, _NO_IDX = np.zeros(1), np.zeros(0, np.int64)
 
 
 def strip_sliced(c, C, a, b) -> tuple:
-    """The strip kernel on ``threads.run_sliced`` (a thread pool, the library's scheme)."""
+    """Run the strip kernel on ``threads.run_sliced`` (a thread pool, the library's scheme).
+
+    Parameters
+    ----------
+    c : numpy.ndarray
+        ``(B, n)`` centres.
+    C : numpy.ndarray
+        ``(B, n, n)`` shape matrices.
+    a : numpy.ndarray
+        ``(B, n)`` strip normals.
+    b : numpy.ndarray
+        ``(B,)`` strip offsets (strip ``|a·x - b| <= 1``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The kernel's outputs: centres ``(B, n)``, shapes ``(B, n, n)``, then its per-instance
+        scalar outputs.
+    """
     out = _strip_outputs(*c.shape)
 
     def call(start, stop):
@@ -165,8 +222,27 @@ _STACKED: dict = {}
 
 
 def strip_prange(c, C, a, b) -> tuple:
-    """The same slices under numba's ``prange`` (workspaces made once per dimension, as
-    ``threads.workspace``)."""
+    """Run the strip kernel on the same slices under numba's ``prange``.
+
+    Workspaces are made once per dimension, as ``threads.workspace`` does.
+
+    Parameters
+    ----------
+    c : numpy.ndarray
+        ``(B, n)`` centres.
+    C : numpy.ndarray
+        ``(B, n, n)`` shape matrices.
+    a : numpy.ndarray
+        ``(B, n)`` strip normals.
+    b : numpy.ndarray
+        ``(B,)`` strip offsets (strip ``|a·x - b| <= 1``).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The kernel's outputs: centres ``(B, n)``, shapes ``(B, n, n)``, then its per-instance
+        scalar outputs.
+    """
     out = _strip_outputs(*c.shape)
     n = c.shape[1]
     slices = max(1, min(threads.cores(), len(c) // threads.MIN_SLICE))

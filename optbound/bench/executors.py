@@ -33,11 +33,27 @@ DASK_MISSING = 'the dask executor needs dask.distributed: pip install "optbound[
 def check_available(kind: str = "process", scheduler: str | None = None) -> None:
     """Raise now, before any work, if the executor ``kind`` (or ``scheduler``) cannot run.
 
+    Parameters
+    ----------
+    kind : {"process", "dask"}
+        The executor.
+    scheduler : str, optional
+        Address of a running Dask scheduler.
+
     Raises
     ------
     ValueError
         For an unknown ``kind``, or dask requested (``kind="dask"`` or a ``scheduler``)
         but dask.distributed not installed.
+
+    Examples
+    --------
+    >>> from optbound.bench.executors import check_available
+    >>> check_available("process")
+    >>> check_available("threads")
+    Traceback (most recent call last):
+        ...
+    ValueError: executor must be one of ('process', 'dask'), got 'threads'
     """
     if kind not in EXECUTORS:
         raise ValueError(f"executor must be one of {EXECUTORS}, got {kind!r}")
@@ -48,8 +64,11 @@ def check_available(kind: str = "process", scheduler: str | None = None) -> None
 
 
 def ignore_interrupts() -> None:
-    """Worker initializer: Ctrl-C reaches the whole process group, but only the parent
-    should handle it (it stops the workers); a worker would print its own traceback."""
+    """Ignore Ctrl-C in a worker process (the pool's worker initializer).
+
+    Ctrl-C reaches the whole process group, but only the parent should handle it (it stops
+    the workers); a worker would print its own traceback.
+    """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
@@ -117,6 +136,12 @@ def executor(kind: str = "process", jobs: int = 1, scheduler: str | None = None)
         Worker processes of the pool or of the LocalCluster.
     scheduler : str, optional
         Address of a running Dask scheduler, e.g. ``"tcp://10.0.0.5:8786"`` (implies dask).
+
+    Yields
+    ------
+    object
+        The executor the runner submits tasks to: in-process, a process pool or a Dask
+        client, each shut down when the block is left.
 
     Raises
     ------

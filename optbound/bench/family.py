@@ -20,6 +20,22 @@ SUITES = ("tiny", "quick", "full")
 KINDS = ("tightness", "recursive", "speed", "papers", "estimation")
 
 
+def _unit_cost(task: dict) -> float:
+    """Give every task the same rough cost, the default of :attr:`Family.cost`.
+
+    Parameters
+    ----------
+    task : dict
+        A task of the family (ignored).
+
+    Returns
+    -------
+    float
+        1.0: one second on one core.
+    """
+    return 1.0
+
+
 @dataclass(frozen=True)
 class Family:
     """One benchmark family.
@@ -51,6 +67,27 @@ class Family:
         ``cost(task) -> float``, the task's rough cost in seconds on one core. Parallel tasks
         start longest first, and the progress bar's ETA weighs tasks by it; results.json
         records the measured ``task_seconds`` to check it against. Default: 1 per task.
+
+    Raises
+    ------
+    ValueError
+        If ``kind`` is not one of :data:`KINDS`.
+
+    Examples
+    --------
+    >>> from optbound.bench.family import Family
+    >>> family = Family(
+    ...     name="demo",
+    ...     title="A demo family",
+    ...     kind="speed",
+    ...     requires=("math:sqrt", "no_such_module"),
+    ...     tasks=lambda suite, seed: [{"seed": seed}],
+    ...     run=lambda task: {"records": [{"family": "demo", "value": task["seed"]}]},
+    ... )
+    >>> family.missing(), family.cost({"seed": 0})
+    (['no_such_module'], 1.0)
+    >>> [family.run(task) for task in family.tasks("tiny", 3)]
+    [{'records': [{'family': 'demo', 'value': 3}]}]
     """
 
     name: str
@@ -61,14 +98,21 @@ class Family:
     run: Callable[[dict], dict]
     parallel: bool = True
     isolated: bool = False
-    cost: Callable[[dict], float] = lambda task: 1.0
+    cost: Callable[[dict], float] = _unit_cost
 
     def __post_init__(self):
         if self.kind not in KINDS:
             raise ValueError(f"kind must be one of {KINDS}, got {self.kind!r}")
 
     def missing(self) -> list[str]:
-        """The requirements that cannot be imported right now."""
+        """List the requirements that cannot be imported right now.
+
+        Returns
+        -------
+        list of str
+            The ``"module:attribute"`` entries of :attr:`requires` whose module does not
+            import or lacks the attribute; empty when the family can run.
+        """
         return [req for req in self.requires if not _available(req)]
 
 

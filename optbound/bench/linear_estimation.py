@@ -81,6 +81,26 @@ SDP_EVERY = 10
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the seeded tasks of ``suite``: one observer run per system and repetition.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SUITES`).
+    seed : int
+        Suite seed; each task's instance seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per (system, dimension, noise, steps, repetition), with its
+        ``"seed"``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``.
+    """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {tuple(SUITES)}, got {suite!r}")
     cells = [
@@ -97,7 +117,24 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(task: dict):
-    """``(label, system, X0, ys)`` of a task, rebuilt from its seed."""
+    """Rebuild the system and its measurements of a task from its seed.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    label : str
+        The system's name in the report.
+    system : LinearSystem
+        The linear system.
+    X0 : set
+        The initial set.
+    ys : sequence
+        The measurements, ``task["steps"]`` of them.
+    """
     if task["system"] == "alamo":
         from optbound.scenarios import alamo2005
 
@@ -116,14 +153,40 @@ def instance(task: dict):
 
 
 def recorded_steps(steps: int) -> list[int]:
-    """:data:`SHORT_STEPS` of a short run, every :data:`EVERY` steps of a long one, and the
-    last step (each recorded step of a 2-D constrained zonotope costs its LP polygons)."""
+    """Choose the steps recorded: few, since each recorded step costs LP polygons in 2-D.
+
+    Parameters
+    ----------
+    steps : int
+        The run's number of steps.
+
+    Returns
+    -------
+    list of int
+        :data:`SHORT_STEPS` of a short run, every :data:`EVERY` steps of a long one, and the
+        last step, sorted.
+    """
     if steps <= 20:
         return sorted({k for k in SHORT_STEPS if k <= steps} | {steps})
     return sorted({*range(EVERY, steps + 1, EVERY), steps})
 
 
 def run(task: dict) -> dict:
+    """Run one task: every observer of :data:`optbound.estimation.METHODS` on its system.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...]}``: per method and recorded step, its size measures and
+        milliseconds per step (on the tank also the one-step loss against the SDP every
+        :data:`SDP_EVERY` steps), or the error of a method refusing the system; a 2-D figure
+        of the first repetition under ``"attachments"``.
+    """
     from optbound import estimation as est
 
     label, system, X0, ys = instance(task)
@@ -320,8 +383,20 @@ def _outline(ax, S, color: str, label: str) -> None:
 
 
 def cost(task: dict) -> float:
-    """Rough seconds of a task (2-core VM): the tank's SDPs, constrained zonotopes and
-    zonotopes dominate the full suite."""
+    """Estimate the seconds of one task (2-core VM).
+
+    The tank's SDPs, constrained zonotopes and zonotopes dominate the full suite.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     if task["system"] == "tank":  # the observers, then 2 x 23 SDPs of about 10 s
         return 120.0 + 2 * (task["steps"] // SDP_EVERY) * 10.0
     return 0.1 * task["steps"] * task["n"]

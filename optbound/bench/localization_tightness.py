@@ -69,6 +69,22 @@ KINDS = {
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the seeded tasks of ``suite``: the BH instance and seeded random instances.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SIZES`).
+    seed : int
+        Suite seed; each task's instance seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per instance (the BH geometry first), with its ``"seed"``, the paving
+        resolution ``"relative"``, the pseudo-ellipsoid orders compared and whether it draws the
+        figure.
+    """
     count, relative, bh_orders, random_orders = SIZES[suite]
     seeds = task_seeds(seed, NAME, count + 1)
     variants = [("BH geometry", bh_orders)] + [("random", random_orders)] * count
@@ -85,14 +101,41 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(task: dict):
-    """``(landmarks, pairs, gammas, eps, truth)`` of a task, rebuilt from its seed."""
+    """Rebuild the bearing data of a task from its seed.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    tuple
+        ``(landmarks, pairs, gammas, eps, truth)``: the BH geometry of [BH, Sect. V], or a
+        seeded ``scenarios.bh_geometry.random_instance``.
+    """
     if task["variant"] == "BH geometry":
         return bh.sect5_instance()
     return bh.random_instance(np.random.default_rng(task["seed"]))
 
 
 def exact_set(data: rb.Measurements, relative: float):
-    """Paving of the exact set: coarse on the prior box, then fine on the coarse hull."""
+    """Pave the exact set: coarse on the prior box, then fine on the coarse hull.
+
+    Parameters
+    ----------
+    data : relative_bearing.Measurements
+        The bearing measurements.
+    relative : float
+        The fine boxes' width is the coarse hull's largest width divided by ``relative``.
+
+    Returns
+    -------
+    paving : Paving
+        The fine paving (inner and boundary boxes) of the exact set.
+    width : float
+        Its box width.
+    """
     args = (data.landmarks, data.pairs, data.gammas, data.eps)
     box = rb.prior_box(data)
     coarse = rb.exact_paving(*args, _rows(box), float(np.max(box.hi - box.lo)) / 40)
@@ -106,7 +149,22 @@ def _rows(box: Box) -> np.ndarray:
 
 
 def sample_exact(paving, count: int, rng: np.random.Generator) -> np.ndarray:
-    """Points drawn uniformly in the paving's inner boxes (all of them in the exact set)."""
+    """Draw points uniformly in the paving's inner boxes (all of them in the exact set).
+
+    Parameters
+    ----------
+    paving : Paving
+        A 2-D paving of the exact set.
+    count : int
+        Number of points.
+    rng : numpy.random.Generator
+        The random generator.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(count, 2)`` points of the exact set.
+    """
     inner = paving.inner
     widths = inner[:, :, 1] - inner[:, :, 0]
     weights = np.prod(widths, axis=1)
@@ -168,6 +226,20 @@ def _bounds(task: dict, data: rb.Measurements, paving, width: float) -> dict:
 
 
 def run(task: dict) -> dict:
+    """Run one task: every bound's area against the exact set's paved area.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "notes": [...]}``: one record per bound (certified area-ratio
+        bracket, sampled exact points and truth outside it), notes on a truth outside or an
+        unproven or refused bound; the figure task adds the PNG under ``"attachments"``.
+    """
     landmarks, pairs, gammas, eps, truth = instance(task)
     data = rb.measurements(landmarks, pairs, gammas, eps)
     paving, width = exact_set(data, task["relative"])
@@ -237,7 +309,26 @@ STYLES = {
 
 
 def figure(bounds: dict, paving, truth, variant: str, eps_deg: float) -> bytes:
-    """PNG: the paved exact set, every bound, the truth; zoomed on the exact set."""
+    """Draw the paved exact set, every bound and the truth, zoomed on the exact set.
+
+    Parameters
+    ----------
+    bounds : dict
+        Bound name -> ``(set or None, area bracket, extra fields)``; None is not drawn.
+    paving : Paving
+        The paving of the exact set.
+    truth : numpy.ndarray
+        The true position.
+    variant : str
+        The instance's variant, for the title.
+    eps_deg : float
+        The bearing error bound in degrees, for the title.
+
+    Returns
+    -------
+    bytes
+        The PNG image.
+    """
     from matplotlib.collections import PolyCollection
 
     from optbound.report.figures import pyplot
@@ -280,7 +371,20 @@ def figure(bounds: dict, paving, truth, variant: str, eps_deg: float) -> bytes:
 
 
 def cost(task: dict) -> float:
-    """Rough seconds: the L = 4 reference ~3 s, the L = 8 one ~8 s (measured at load ~4)."""
+    """Estimate the seconds of one task: the L = 4 reference ~3 s, the L = 8 one ~8 s.
+
+    Measured at load ~4.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return 1.5 + 3.0 * (1 in task["orders"]) + 8.0 * (2 in task["orders"])
 
 

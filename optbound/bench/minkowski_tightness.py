@@ -26,6 +26,21 @@ XY_PSI_DIMS = ([0, 1], [2])
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the seeded tasks of ``suite``: two summands per cell.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SIZES`).
+    seed : int
+        Suite seed; each task's instance seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per (dimension, condition number, scale ratio, repetition), with its
+        ``"seed"`` and whether it draws a figure.
+    """
     dims, conds, scales, reps = SIZES[suite]
     cells = list(itertools.product(dims, conds, scales, range(reps)))
     return [
@@ -43,7 +58,20 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(task: dict):
-    """The two summands of a task, rebuilt from its seed."""
+    """Rebuild the two summands of a task from its seed.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    E1 : Ellipsoid
+        The first summand.
+    E2 : Ellipsoid
+        The second summand, scaled by ``task["scale"]``.
+    """
     rng = np.random.default_rng(task["seed"])
     E1 = random_ellipsoid(rng, task["dim"], task["cond"])
     E2 = random_ellipsoid(rng, task["dim"], task["cond"], scale=task["scale"])
@@ -51,6 +79,19 @@ def instance(task: dict):
 
 
 def run(task: dict) -> dict:
+    """Run one task: each κ criterion of the Minkowski sum against the SDP optimum.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "figures": [...]}``: one record per criterion (size ratio and κ), and a
+        2-D figure for figure tasks.
+    """
     from optbound import analytic, optimal
 
     E1, E2 = instance(task)
@@ -89,7 +130,18 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    """Seconds of one task, roughly (quick suite, 2-core VM)."""
+    """Estimate the seconds of one task (quick suite, 2-core VM).
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return 0.003 * task["dim"]
 
 

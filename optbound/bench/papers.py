@@ -30,6 +30,19 @@ def tasks(suite: str, seed: int) -> list[dict]:
     The scripts fix their own seeds (their tables are the papers' cases), so the task seed
     only identifies the task; it is derived from the script's name, so adding a script
     changes no other task.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run; every suite but ``full`` runs the scripts' quick versions.
+    seed : int
+        Suite seed.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per script: its ``"seed"``, ``"script"``, ``"paper"`` and
+        ``"quick"``.
     """
     from optbound.papers_repro._common import scripts
 
@@ -46,6 +59,19 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def run(task: dict) -> dict:
+    """Run one reproduction script in a temporary folder.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [record], "attachments": {...}}``: the script's Markdown and the names
+        of its figures, which are attached base64-encoded.
+    """
     from optbound.papers_repro._common import Script
 
     script = Script(task["script"], task["paper"])
@@ -69,6 +95,18 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
+    """Estimate the seconds of one script: quick or full version (:data:`COST`).
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return COST[task["quick"]]
 
 

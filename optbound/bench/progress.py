@@ -27,7 +27,18 @@ class Progress:
     """Bars for ``families`` (name -> list of task costs) on ``stream`` (default stderr).
 
     A no-op when not ``enabled``; when ``stream`` is not a terminal, one line per finished
-    family instead of bars.
+    family instead of bars. Use it as a context manager: leaving it closes the bars.
+
+    Parameters
+    ----------
+    title : str
+        The total bar's label (the command that repeats the run).
+    families : dict of str to list of float
+        Family name -> the estimated costs of its tasks (``Family.cost``).
+    enabled : bool
+        Show anything at all.
+    stream : file-like, optional
+        Where to write (default ``sys.stderr``).
     """
 
     def __init__(
@@ -61,7 +72,15 @@ class Progress:
         }
 
     def done(self, name: str, cost: float) -> None:
-        """One task of family ``name``, of estimated ``cost``, has finished."""
+        """Record that one task of family ``name`` has finished.
+
+        Parameters
+        ----------
+        name : str
+            The task's family.
+        cost : float
+            The task's estimated cost, by which the total bar advances.
+        """
         if not self.enabled:
             return
         self.left[name] -= 1
@@ -76,6 +95,7 @@ class Progress:
         self.total.update(min(cost, self.total.total - self.total.n))
 
     def close(self) -> None:
+        """Close the bars (the cursor moves below them); nothing to do without bars."""
         if self.bars_shown:
             for bar in self.bars.values():
                 bar.close()

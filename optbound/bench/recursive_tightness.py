@@ -23,6 +23,21 @@ FIGURE_K = 5
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the seeded tasks of ``suite``: a prior and a strip sequence per cell.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SIZES`).
+    seed : int
+        Suite seed; each task's instance seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per (dimension, strip width, repetition), with its ``"seed"``, the
+        recursion depths ``"ks"`` compared and whether it draws a figure.
+    """
     dims, widths, ks, reps = SIZES[suite]
     cells = list(itertools.product(dims, widths, range(reps)))
     return [
@@ -38,7 +53,22 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(task: dict):
-    """Prior ellipsoid, true point and strip sequence of a task, rebuilt from its seed."""
+    """Rebuild the prior ellipsoid, true point and strip sequence of a task from its seed.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    E0 : Ellipsoid
+        The prior.
+    point : numpy.ndarray
+        The true state, a sample of ``E0``.
+    strips : list of Strip
+        ``max(task["ks"])`` strips containing ``point``.
+    """
     rng = np.random.default_rng(task["seed"])
     E0 = random_ellipsoid(rng, task["dim"], PRIOR_COND)
     point = E0.sample(1, rng)[0]
@@ -66,6 +96,19 @@ def _batch_sdp(optimal, intersection: list, seed: int):
 
 
 def run(task: dict) -> dict:
+    """Run one task: recursive volume updates against the batch SDP over the first k strips.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "figures": [...]}``: one record per depth k in ``task["ks"]`` (volume
+        ratio and lower-bound ratio), and a 2-D figure for figure tasks.
+    """
     from optbound import analytic, optimal
 
     E0, _, strips = instance(task)
@@ -98,8 +141,20 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    """Seconds of one task, roughly (quick suite, 2-core VM): one SDP with its lower bound
-    per recursion depth, each growing with the dimension."""
+    """Estimate the seconds of one task (quick suite, 2-core VM).
+
+    One SDP with its lower bound per recursion depth, each growing with the dimension.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return 0.06 * task["dim"] * len(task["ks"])
 
 

@@ -36,7 +36,18 @@ PAPERS = ("HS96", "BH", "LJMW97", "KJWM00", "GLH12", "ABC05")
 
 
 def families() -> list[Family]:
-    """All registered families, in report order."""
+    """Import and return all registered families, in report order.
+
+    Returns
+    -------
+    list of Family
+        One :class:`~optbound.bench.family.Family` per entry of :data:`FAMILIES`.
+
+    Raises
+    ------
+    ValueError
+        If an entry of :data:`FAMILIES` points at a family with another name.
+    """
     return [_load(name, target) for name, target in FAMILIES.items()]
 
 

@@ -33,6 +33,26 @@ class RunFolder:
 
     ``run.json`` is written with the first finished task, so a run that stops before any
     task finished leaves nothing behind.
+
+    Parameters
+    ----------
+    path : str or Path
+        The folder (created with the first finished task).
+    arguments : dict
+        The command's arguments, JSON-able, stored in ``run.json`` for ``--resume``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from optbound.bench.run_folder import RunFolder
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     folder = RunFolder(tmp, {"suite": "tiny", "seed": 0})
+    ...     folder.save("strip", 0, {"seed": 7}, {"records": [{"ratio": 1.5}]})
+    ...     resumed = RunFolder.open(tmp)
+    ...     print(resumed.arguments)
+    ...     print(resumed.load("strip", 0, {"seed": 7}), resumed.load("strip", 0, {"seed": 8}))
+    {'suite': 'tiny', 'seed': 0}
+    {'records': [{'ratio': 1.5}]} None
     """
 
     def __init__(self, path: str | Path, arguments: dict):
@@ -74,8 +94,23 @@ class RunFolder:
         self._started = False
 
     def load(self, family: str, index: int, task: dict) -> dict | None:
-        """The stored result of task ``index`` of ``family``, or None if it is not finished
-        (or was stored for another task dict)."""
+        """Read the stored result of task ``index`` of ``family``.
+
+        Parameters
+        ----------
+        family : str
+            The family's name.
+        index : int
+            The task's index in ``family.tasks(suite, seed)``.
+        task : dict
+            The task dict the family gives now; a result stored for another one is ignored.
+
+        Returns
+        -------
+        dict or None
+            The stored result, or None if the task is not finished (or was stored for another
+            task dict).
+        """
         try:
             stored = json.loads(self._file(family, index).read_text())
         except (FileNotFoundError, json.JSONDecodeError):
@@ -83,7 +118,19 @@ class RunFolder:
         return stored["result"] if stored.get("task") == _json_roundtrip(task) else None
 
     def save(self, family: str, index: int, task: dict, result: dict) -> None:
-        """Store the result of task ``index`` of ``family`` (atomically)."""
+        """Store the result of task ``index`` of ``family`` (atomically).
+
+        Parameters
+        ----------
+        family : str
+            The family's name.
+        index : int
+            The task's index in ``family.tasks(suite, seed)``.
+        task : dict
+            The task dict (compared on :meth:`load`).
+        result : dict
+            The task's result, JSON-able.
+        """
         if not self._started:
             self.tasks.mkdir(parents=True, exist_ok=True)
             _write_atomic(self.path / RUN_FILE, {"format": FORMAT, "arguments": self.arguments})

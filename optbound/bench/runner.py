@@ -86,6 +86,20 @@ def run_suite(
     folder : RunFolder, optional
         Store each finished task's result there, and take the tasks already stored there
         instead of running them (``meta["resumed_tasks"]`` counts them).
+
+    Returns
+    -------
+    dict
+        ``{"schema": SCHEMA, "meta": {...}, "families": {name: entry}}``: the run's
+        provenance (command, seeds, versions, machine, wall time) and, per family, its status
+        and the merged records, figures, notes, warnings and errors of its tasks.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``suite``, a negative ``seed``, ``jobs`` < 1, unknown family
+        ``names``, or an executor that cannot run
+        (:func:`~optbound.bench.executors.check_available`).
     """
     if suite not in SUITES:
         raise ValueError(f"suite must be one of {SUITES}, got {suite!r}")

@@ -25,7 +25,22 @@ from optbound import Ellipsoid, Strip
 
 
 def instance(rng: np.random.Generator, dim: int = 3) -> tuple[Ellipsoid, Strip]:
-    """A random ellipsoid and a strip cutting it with both planes."""
+    """Draw a random ellipsoid and a strip cutting it with both planes.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The random generator.
+    dim : int
+        The dimension.
+
+    Returns
+    -------
+    E : Ellipsoid
+        The ellipsoid.
+    S : Strip
+        The strip.
+    """
     Q, _ = np.linalg.qr(rng.standard_normal((dim, dim)))
     E = Ellipsoid(rng.standard_normal(dim), Q @ np.diag(rng.uniform(0.5, 2.0, dim) ** 2) @ Q.T)
     a = rng.standard_normal(dim)
@@ -52,6 +67,13 @@ def _timed_call(E: Ellipsoid, S: Strip, rebuild: bool) -> tuple[float, float, fl
 
 def run(n_solves: int = 50, seed: int = 0) -> dict:
     """Median seconds per call, cached vs rebuilt, over ``n_solves`` instances each.
+
+    Parameters
+    ----------
+    n_solves : int
+        Instances (each solved once cached, once rebuilt).
+    seed : int
+        Seed of the instances (:func:`instance`).
 
     Returns
     -------

@@ -100,9 +100,20 @@ def _median_time(fn, repeats: int):
 
 
 def run(eps_values=(0.01, 0.005), repeats: int = REPEATS) -> list[dict]:
-    """One row per (set, eps) with both wall times, the speed-up and both area brackets.
+    """Time optbound's SIVIA against codac's on the same sets.
 
-    Returns ``[{"note": "codac not installed ..."}]`` when codac is missing.
+    Parameters
+    ----------
+    eps_values : sequence of float
+        Paving precisions.
+    repeats : int
+        Timed runs of each; the median counts.
+
+    Returns
+    -------
+    list of dict
+        One row per (set, eps) with both wall times, the speed-up and both area brackets;
+        ``[{"note": "codac not installed ..."}]`` when codac is missing.
     """
     with round_to_nearest():  # gives the caller's mode back, whatever codac does to it
         try:
@@ -157,7 +168,18 @@ def _compare(codac, eps_values, repeats: int) -> list[dict]:
 
 
 def table(rows: list[dict]) -> str:
-    """Markdown table of :func:`run`'s rows."""
+    """Format :func:`run`'s rows as a Markdown table.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows of :func:`run`.
+
+    Returns
+    -------
+    str
+        The table, or the note when codac is missing.
+    """
     if rows and "note" in rows[0]:
         return rows[0]["note"]
     lines = [

@@ -71,6 +71,13 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def readings() -> np.ndarray:
+    """Simulate the noise-free range readings of the triangle's true pose.
+
+    Returns
+    -------
+    numpy.ndarray
+        One range per sonar, at ``rooms.TRIANGLE_POSE``.
+    """
     return simulate_ranges(WORLD, SONARS, rooms.TRIANGLE_POSE)
 
 
@@ -176,13 +183,45 @@ def _child_values(seed: int, n: int = 200) -> dict:
 
 
 def sample_poses(seed: int, n: int) -> np.ndarray:
-    """Seeded poses around the triangle, for checking that both programs compute one f."""
+    """Draw seeded poses around the triangle, for checking that both programs compute one f.
+
+    Parameters
+    ----------
+    seed : int
+        Seed of the poses.
+    n : int
+        Number of poses.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n, 3)`` poses (x, y, theta).
+    """
     rng = np.random.default_rng(seed)
     return np.column_stack([rng.uniform(-6, 3, n), rng.uniform(0, 7, n), rng.uniform(-4, 4, n)])
 
 
 def codac_values(seed: int, n: int = 200) -> np.ndarray | None:
-    """codac's f at :func:`sample_poses` (child process), or ``None`` without codac."""
+    """Evaluate codac's f at :func:`sample_poses`, in a child process.
+
+    Parameters
+    ----------
+    seed : int
+        Seed of the poses.
+    n : int
+        Number of poses.
+
+    Returns
+    -------
+    numpy.ndarray or None
+        The midpoints of codac's intervals, one row per pose, or None without codac (or when
+        the child timed out).
+
+    Raises
+    ------
+    RuntimeError
+        If the codac child process fails for another reason than codac missing.
+    """
     out = _in_child(["--values", str(seed), str(n)], CHILD_TIMEOUT)
     return None if "note" in out else np.array(out["values"])
 
@@ -200,7 +239,30 @@ def _eager_relaxed(tests, q: int):
 
 
 def old_localize(world, sonars, ranges, X0, eps: float, q) -> tuple[int, object]:
-    """The old bisection-only path: eager tests, ``q="auto"`` re-paving for each q from 0."""
+    """Localize by the old bisection-only path: eager tests, ``q="auto"`` re-paving from q = 0.
+
+    Parameters
+    ----------
+    world : sequence
+        The room's segments.
+    sonars : sequence
+        The sonars on the robot.
+    ranges : array_like
+        One range reading per sonar.
+    X0 : array_like
+        The initial box, one ``[lo, hi]`` row per coordinate (x, y, theta).
+    eps : float
+        Paving precision.
+    q : int or "auto"
+        Outliers tolerated; ``"auto"`` takes the least q with a non-empty set.
+
+    Returns
+    -------
+    q : int
+        The q used.
+    paving : Paving
+        The paving of the pose set.
+    """
     tests = sonar_tests(world, sonars, ranges)
     box, _ = _initial_box(X0)
     for k in range(len(tests) + 1) if q == "auto" else [q]:
@@ -217,6 +279,28 @@ def interval_layer_localize(world, sonars, ranges, X0, eps: float, q) -> tuple[i
     ``list(sonar_tests(...))`` drops their compiled q-relaxed conjunction, so
     :func:`~optbound.interval.relaxed_test` runs each sonar's test lazily on the boxes left
     undecided; levels below 1024 boxes are bisected untested (``pave``'s default).
+
+    Parameters
+    ----------
+    world : sequence
+        The room's segments.
+    sonars : sequence
+        The sonars on the robot.
+    ranges : array_like
+        One range reading per sonar.
+    X0 : array_like
+        The initial box, one ``[lo, hi]`` row per coordinate (x, y, theta).
+    eps : float
+        Paving precision.
+    q : int or "auto"
+        Outliers tolerated; ``"auto"`` takes the least q with a non-empty set.
+
+    Returns
+    -------
+    q : int
+        The q used.
+    paving : Paving
+        The paving of the pose set.
     """
     tests = list(sonar_tests(world, sonars, ranges))
     box, _ = _initial_box(X0)
@@ -232,7 +316,19 @@ def _kjwm00_case() -> dict:
 
 
 def speedup_rows(repeats: int = 3) -> list[dict]:
-    """Old path vs ``localize`` (lazy tests) vs ``localize(contract=True)``, CPU seconds."""
+    """Time the old path vs ``localize`` (lazy tests) vs ``localize(contract=True)``.
+
+    Parameters
+    ----------
+    repeats : int
+        Timed runs per path, after a warm-up; the median counts.
+
+    Returns
+    -------
+    list of dict
+        Per problem: CPU seconds of each path, the ratios old / new, outer volumes and box
+        counts.
+    """
     case = _kjwm00_case()
     kj_x0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
     problems = [
@@ -267,7 +363,18 @@ def speedup_rows(repeats: int = 3) -> list[dict]:
 
 
 def speedup_table(rows: list[dict]) -> str:
-    """Markdown table of :func:`speedup_rows`."""
+    """Format :func:`speedup_rows` as a Markdown table.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows of :func:`speedup_rows`.
+
+    Returns
+    -------
+    str
+        The table.
+    """
     lines = [
         "| problem | old CPU [s] | lazy CPU [s] (old / lazy) | lazy + contraction CPU [s] "
         "(old / it) | outer volume old / lazy / contraction |",
@@ -309,7 +416,28 @@ def _in_child(args: list[str], timeout: float) -> dict:
 
 
 def run(eps: float = EPS, repeats: int = REPEATS, timeout: float = CHILD_TIMEOUT) -> list[dict]:
-    """One row: both wall times, ``ratio`` = codac / optbound, box counts and outer volumes."""
+    """Time ``localize`` on the triangle against codac (in a child process).
+
+    Parameters
+    ----------
+    eps : float
+        Paving precision.
+    repeats : int
+        Timed runs of ``localize`` after a warm-up; the median counts.
+    timeout : float
+        Seconds the codac child may take before it is stopped.
+
+    Returns
+    -------
+    list of dict
+        One row: both wall times, ``ratio`` = codac / optbound, box counts and outer volumes;
+        without a codac time, a ``"note"`` says why.
+
+    Raises
+    ------
+    RuntimeError
+        If the codac child process fails for another reason than codac missing.
+    """
     d = readings()
     (seconds, cpu), paving = _median_time(lambda: localize(WORLD, SONARS, d, X0, eps), repeats)
     load = os.getloadavg()[0]
@@ -332,7 +460,18 @@ def run(eps: float = EPS, repeats: int = REPEATS, timeout: float = CHILD_TIMEOUT
 
 
 def table(rows: list[dict]) -> str:
-    """Markdown table of :func:`run`'s rows."""
+    """Format :func:`run`'s rows as a Markdown table.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows of :func:`run`.
+
+    Returns
+    -------
+    str
+        The table.
+    """
     lines = [
         "| problem | optbound wall [s] | codac wall [s] | ratio codac / optbound "
         "| boxes inner+boundary optbound / codac | outer volume optbound / codac |",
@@ -359,7 +498,18 @@ def table(rows: list[dict]) -> str:
 
 
 def main(eps: float = EPS) -> list[dict]:
-    """Print the speed-up table and the codac table; return the codac rows."""
+    """Print the speed-up table and the codac table.
+
+    Parameters
+    ----------
+    eps : float
+        Paving precision of the codac comparison.
+
+    Returns
+    -------
+    list of dict
+        The codac rows (:func:`run`).
+    """
     print(speedup_table(speedup_rows()))
     rows = run(eps)
     print(table(rows))

@@ -48,6 +48,20 @@ REPEATS = 7
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the tasks of ``suite``: the strip timings and the Minkowski timings.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run; it sets the batch sizes (:data:`BATCHES`).
+    seed : int
+        Suite seed; each task's seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        Two JSON-able tasks, with their ``"seed"``, ``"what"`` and ``"batches"``.
+    """
     s1, s2 = task_seeds(seed, NAME, 2)
     return [
         {"seed": s1, "what": "strip", "batches": list(BATCHES[suite])},
@@ -56,11 +70,33 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def batch_instances(rng: np.random.Generator, count: int, dim: int, cond: float | None = None):
-    """``count`` random ellipsoids (centres, shapes) and one strip normal/offset per ellipsoid.
+    """Draw ``count`` random ellipsoids and one strip per ellipsoid, as batch arrays.
 
     Shapes are ``A A^T + 0.1 I`` for Gaussian A (or, with ``cond``, random rotations of
     eigenvalues log-spaced over ``cond``); each strip passes near its ellipsoid's centre so
     that most updates are genuine reductions, not the trivial "no reduction" case.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The random generator.
+    count : int
+        Number of instances.
+    dim : int
+        Their dimension.
+    cond : float, optional
+        Condition number of the shapes (default: Gaussian ``A A^T + 0.1 I``).
+
+    Returns
+    -------
+    centers : numpy.ndarray
+        ``(count, dim)`` centres.
+    shapes : numpy.ndarray
+        ``(count, dim, dim)`` shape matrices.
+    a : numpy.ndarray
+        ``(count, dim)`` strip normals.
+    b : numpy.ndarray
+        ``(count,)`` strip offsets; strip k is ``|a[k]·x - b[k]| <= 1``.
     """
     if cond is None:
         A = rng.standard_normal((count, dim, dim))
@@ -80,7 +116,20 @@ def batch_instances(rng: np.random.Generator, count: int, dim: int, cond: float 
 
 
 def interleaved(*fns, repeat: int = REPEATS) -> list[float]:
-    """Median seconds of each ``fn()``, the functions called in turn ``repeat`` times."""
+    """Time functions called in turn, so that a shared machine's load hits them alike.
+
+    Parameters
+    ----------
+    *fns : callable
+        The calls to time, without arguments.
+    repeat : int
+        Rounds; each calls every function once.
+
+    Returns
+    -------
+    list of float
+        Median seconds of each function, in order.
+    """
     times = [[] for _ in fns]
     for _ in range(repeat):
         for fn, out in zip(fns, times, strict=True):
@@ -91,15 +140,42 @@ def interleaved(*fns, repeat: int = REPEATS) -> list[float]:
 
 
 def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """Median seconds of ``ours()`` and ``reference()``, called alternately."""
+    """Time ``ours()`` and ``reference()``, called alternately (:func:`interleaved`).
+
+    Parameters
+    ----------
+    ours, reference : callable
+        The calls to time, without arguments.
+    repeat : int
+        Rounds.
+
+    Returns
+    -------
+    tuple of float
+        Median seconds of ``ours`` and of ``reference``.
+    """
     t_ours, t_ref = interleaved(ours, reference, repeat=repeat)
     return t_ours, t_ref
 
 
 def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
-    """As :func:`interleaved`, each sample the mean over back-to-back calls filling >= 20 ms
-    (results dropped at once; the number of calls set by the first function): a sustained
-    rate, not the latency of one call after idling."""
+    """Time functions in turn, each sample the mean over back-to-back calls filling >= 20 ms.
+
+    As :func:`interleaved`, but results are dropped at once and the number of calls is set
+    by the first function: a sustained rate, not the latency of one call after idling.
+
+    Parameters
+    ----------
+    *fns : callable
+        The calls to time, without arguments.
+    repeat : int
+        Rounds.
+
+    Returns
+    -------
+    list of float
+        Median seconds per call of each function, in order.
+    """
     number = 1
     while per_call(fns[0], repeat=1, min_time=0.0) * number < 0.02:
         number *= 2
@@ -115,18 +191,46 @@ def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
 
 
 def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
-    """:func:`interleaved_calls` of ours and the reference."""
+    """Time ``ours`` and ``reference`` with :func:`interleaved_calls`.
+
+    Parameters
+    ----------
+    ours, reference : callable
+        The calls to time, without arguments.
+    repeat : int
+        Rounds.
+
+    Returns
+    -------
+    tuple of float
+        Median seconds per call of ``ours`` and of ``reference``.
+    """
     t_ours, t_ref = interleaved_calls(ours, reference, repeat=repeat)
     return t_ours, t_ref
 
 
 def threading_timings(rng: np.random.Generator, batches, rounds: int = 3 * REPEATS) -> list:
-    """Our strip kernel (3-D, volume) with the batch handed to the cores two ways: the thread
-    pool of ``analytic._kernels.threads.run_sliced`` (the library's) and numba's ``prange``
-    (the threading layer is numba's choice or ``NUMBA_THREADING_LAYER``). Each round times
-    both interleaved (one :func:`interleaved_calls` sample each), so the load of a shared
-    machine hits them alike; rows (B, pool rate [updates/s], median over rounds of prange /
-    pool time). Both schemes' outputs are checked bitwise equal first."""
+    """Time our strip kernel (3-D, volume) with the batch handed to the cores two ways.
+
+    The thread pool of ``analytic._kernels.threads.run_sliced`` (the library's) and numba's
+    ``prange`` (the threading layer is numba's choice or ``NUMBA_THREADING_LAYER``). Each
+    round times both interleaved (one :func:`interleaved_calls` sample each), so the load of
+    a shared machine hits them alike. Both schemes' outputs are checked bitwise equal first.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the instances (:func:`batch_instances`).
+    batches : sequence of int
+        Batch sizes.
+    rounds : int
+        Rounds per batch size.
+
+    Returns
+    -------
+    list of tuple
+        Per batch size: (B, pool rate [updates/s], median over rounds of prange / pool time).
+    """
     from optbound.bench import analytic_reference as ref
 
     c, C, a, b = batch_instances(rng, max(batches), DIM)
@@ -174,7 +278,21 @@ def _timings(one, ours, reference, inputs, batches) -> dict:
 
 
 def strip_timings(rng: np.random.Generator, batches) -> dict:
-    """Seconds (median) of ours and of the reference: one call and each batch size."""
+    """Time our strip update against the plain numba reference: one call and batches.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the instances (:func:`batch_instances`).
+    batches : sequence of int
+        Batch sizes.
+
+    Returns
+    -------
+    dict
+        ``"one"`` -> ``(ours, reference)`` median seconds of one call, and each batch size
+        -> ``(ours, reference)`` median seconds of the batch.
+    """
     from optbound import Ellipsoid, Strip, analytic
     from optbound.bench import analytic_reference as ref
 
@@ -189,7 +307,21 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
 
 
 def minkowski_timings(rng: np.random.Generator, batches) -> dict:
-    """As :func:`strip_timings` for the volume-optimal Minkowski sum."""
+    """Time the volume-optimal Minkowski sum as :func:`strip_timings` does the strip.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the instances (:func:`batch_instances`).
+    batches : sequence of int
+        Batch sizes.
+
+    Returns
+    -------
+    dict
+        ``"one"`` -> ``(ours, reference)`` median seconds of one call, and each batch size
+        -> ``(ours, reference)`` median seconds of the batch.
+    """
     from optbound import Ellipsoid, analytic
     from optbound.bench import analytic_reference as ref
 
@@ -216,9 +348,23 @@ MINKOWSKI_CRITERIA = (("volume", {}), ("trace", {}), ("size_xy_psi", {}))
 
 
 def criteria_timings(rng: np.random.Generator, count: int = 10**4) -> list[tuple]:
-    """Every criterion against the volume criterion of the same operation (the reference),
-    alternately in the same run: (operation, criterion, one call [s], one call of the volume
-    criterion [s], batch of ``count`` [s], the same batch with the volume criterion [s])."""
+    """Time every criterion against the volume criterion of the same operation.
+
+    The volume criterion is the reference, timed alternately in the same run.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the instances (:func:`batch_instances`).
+    count : int
+        Batch size.
+
+    Returns
+    -------
+    list of tuple
+        (operation, criterion, one call [s], one call of the volume criterion [s], batch of
+        ``count`` [s], the same batch with the volume criterion [s]).
+    """
     from optbound import Ellipsoid, Strip, analytic
 
     c, C, a, b = batch_instances(rng, count, DIM)
@@ -245,6 +391,18 @@ def criteria_timings(rng: np.random.Generator, count: int = 10**4) -> list[tuple
 
 
 def run_strip(task: dict) -> list[dict]:
+    """Time the strip update: one call, the SDP solve it replaces, and the batches.
+
+    Parameters
+    ----------
+    task : dict
+        The ``"strip"`` task of :func:`tasks`.
+
+    Returns
+    -------
+    list of dict
+        Speed records, each against the plain numba reference (the SDP against one call).
+    """
     from optbound import optimal
 
     rng = np.random.default_rng(task["seed"])
@@ -262,6 +420,18 @@ def run_strip(task: dict) -> list[dict]:
 
 
 def run_minkowski(task: dict) -> list[dict]:
+    """Time the Minkowski sum: one call, the SDP solve it replaces, and the batches.
+
+    Parameters
+    ----------
+    task : dict
+        The ``"minkowski"`` task of :func:`tasks`.
+
+    Returns
+    -------
+    list of dict
+        Speed records, each against the plain numba reference (the SDP against one call).
+    """
     from optbound import optimal
 
     rng = np.random.default_rng(task["seed"])
@@ -276,8 +446,25 @@ def run_minkowski(task: dict) -> list[dict]:
 
 
 def sdp_record(solver: str, sdp: float, analytic: dict) -> dict:
-    """The record of an SDP solve, its ratio taken to the one-call time of the analytic
-    record it replaces (one measurement of that call in the report, not two)."""
+    """Build the record of an SDP solve, its ratio taken to the analytic call it replaces.
+
+    The ratio uses the one-call time of the analytic record (one measurement of that call
+    in the report, not two).
+
+    Parameters
+    ----------
+    solver : str
+        What was solved, in the record's name.
+    sdp : float
+        Seconds of one solve.
+    analytic : dict
+        The speed record of one analytic call.
+
+    Returns
+    -------
+    dict
+        The speed record, with ``ratio`` = ``sdp`` / the analytic call's time.
+    """
     return speed_record(
         NAME,
         f"{solver} ({DIM}-D, volume)",
@@ -288,6 +475,18 @@ def sdp_record(solver: str, sdp: float, analytic: dict) -> dict:
 
 
 def run(task: dict) -> dict:
+    """Run one task: :func:`run_strip` or :func:`run_minkowski`.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...]}``.
+    """
     runner = run_strip if task["what"] == "strip" else run_minkowski
     return {"records": runner(task)}
 
@@ -305,10 +504,25 @@ U = 2.0**-53
 
 
 def margin_distribution(seed: int = 0, count: int = 10**4) -> list[tuple]:
-    """Certified margins (relative inflation, see ``optbound.analytic._kernels.midrad``) over random
-    3-D instances per input condition number, next to the output's condition number: storing
-    a shape S in floats already costs about ``U cond(S)`` in its thin direction, the floor of
-    any certified margin on a float matrix. Rows as in :func:`_margin_row`."""
+    """Measure the certified margins over random 3-D instances per input condition number.
+
+    The margin is the relative inflation (see ``optbound.analytic._kernels.midrad``), shown
+    next to the output's condition number: storing a shape S in floats already costs about
+    ``U cond(S)`` in its thin direction, the floor of any certified margin on a float matrix.
+
+    Parameters
+    ----------
+    seed : int
+        Seed of the instances.
+    count : int
+        Instances per row.
+
+    Returns
+    -------
+    list of tuple
+        Per operation and input condition number: (operation, input cond, margin median,
+        99 %, max, median output cond, median of margin / (U cond(output))).
+    """
     from optbound import analytic
 
     rng = np.random.default_rng(seed)
@@ -325,8 +539,18 @@ def margin_distribution(seed: int = 0, count: int = 10**4) -> list[tuple]:
 
 
 def jit_warmup() -> float:
-    """Seconds of the first strip and Minkowski calls in a fresh process with an empty numba
-    cache (a full compile), minus the same process's import time."""
+    """Time the first strip and Minkowski calls in a fresh process with an empty numba cache.
+
+    Returns
+    -------
+    float
+        Seconds of the calls (a full compile), without the same process's import time.
+
+    Raises
+    ------
+    subprocess.CalledProcessError
+        If the child process fails.
+    """
     code = (
         "import time, numpy as np; t0 = time.perf_counter(); "
         "from optbound import Ellipsoid, Strip, analytic; t1 = time.perf_counter(); "
@@ -346,11 +570,27 @@ def jit_warmup() -> float:
 
 
 def phases(rng: np.random.Generator, seconds: float = 20.0, count: int = 10**3) -> list:
-    """The strip batch rate over time: (seconds since start, ours, reference) in updates/s,
-    one :func:`alternating_calls` pair (two samples of >= 20 ms) after another. On a virtual
+    """Record the strip batch rate over time, ours and the reference's.
+
+    One :func:`alternating_calls` pair (two samples of >= 20 ms) after another. On a virtual
     machine the parallel rate of small batches can change in phases of seconds that no median
     within one run removes (the host's placement of the vCPUs); this shows them, for ours and
-    the reference alike."""
+    the reference alike.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the instances (:func:`batch_instances`).
+    seconds : float
+        How long to record.
+    count : int
+        Batch size.
+
+    Returns
+    -------
+    list of tuple
+        (seconds since start, our rate, the reference's rate), rates in updates/s.
+    """
     from optbound import analytic
     from optbound.bench import analytic_reference as ref
 
@@ -367,6 +607,13 @@ def phases(rng: np.random.Generator, seconds: float = 20.0, count: int = 10**3) 
 
 
 def main(argv=None) -> None:
+    """Print the timing tables (``--suite``, ``--seed``; ``--phases`` or ``--threads`` alone).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Command-line arguments (default ``sys.argv[1:]``).
+    """
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=tuple(BATCHES), default="full")
     parser.add_argument("--seed", type=int, default=0)

@@ -84,6 +84,23 @@ def _algorithm2(i, y, boxes, env, eps, max_depth=10):
 
 
 def bench_visibility(pairs: int, seed: int = 0) -> list[dict]:
+    """Time the compiled visibility test against the eq. (19) signs on ``Interval`` arrays.
+
+    The reference does a subset of the work (signs alone), so the recorded ratio is a time
+    ratio (ours / reference), not a speed-up.
+
+    Parameters
+    ----------
+    pairs : int
+        Number of random box pairs, tested against 6 obstacles.
+    seed : int
+        Seed of the boxes.
+
+    Returns
+    -------
+    list of dict
+        The reference's speed record, then ours with the time ratio.
+    """
     rng = np.random.default_rng(seed)
     env = arena.environment(6)
     lo1, lo2 = rng.uniform(0, 9, (pairs, 2)), rng.uniform(0, 9, (pairs, 2))
@@ -115,7 +132,22 @@ def _versus(reference: tuple[str, float], ours: tuple[str, float], ratio_label: 
 
 
 def bench_luvia(steps: int, seed: int = 0) -> list[dict]:
-    """LUVIA on the boxes of a 7-robot run after ``steps`` steps."""
+    """Time LUVIA against breadth-first [GLH12, Algorithm 2] on the boxes of a 7-robot run.
+
+    The two are checked to give the same hulls before being timed.
+
+    Parameters
+    ----------
+    steps : int
+        The boxes are those after ``steps`` tracking steps.
+    seed : int
+        Seed of the simulated run.
+
+    Returns
+    -------
+    list of dict
+        The reference's speed record, then ours with the speed-up.
+    """
     run = arena.simulate(7, 6, steps, seed)
     boxes = track(
         run.boxes0, run.distance, run.headings, arena.HEADING_ERROR, run.visibility, run.env, 0.01
@@ -136,7 +168,20 @@ def bench_luvia(steps: int, seed: int = 0) -> list[dict]:
 
 
 def bench_run(steps: int, seed: int = 0) -> list[dict]:
-    """CPU seconds of one tracking run (7 robots, 6 obstacles), against the 20 s budget."""
+    """Time one tracking run (7 robots, 6 obstacles) against the 20 s budget.
+
+    Parameters
+    ----------
+    steps : int
+        Tracking iterations.
+    seed : int
+        Seed of the simulated run.
+
+    Returns
+    -------
+    list of dict
+        One speed record: the CPU seconds, with the ratio to the budget scaled to ``steps``.
+    """
     run = arena.simulate(7, 6, steps, seed)
     track(
         run.boxes0,
@@ -163,7 +208,20 @@ def bench_run(steps: int, seed: int = 0) -> list[dict]:
 
 
 def bench(suite: str = "quick", seed: int = 0) -> list[dict]:
-    """All records of one suite (``tiny``, ``quick`` or ``full``)."""
+    """Run every GLH12 timing of one suite.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SIZES`).
+    seed : int
+        Seed of the instances.
+
+    Returns
+    -------
+    list of dict
+        The records of :func:`bench_visibility`, :func:`bench_luvia` and :func:`bench_run`.
+    """
     size = SIZES[suite]
     return (
         bench_visibility(size["pairs"], seed)
@@ -173,14 +231,52 @@ def bench(suite: str = "quick", seed: int = 0) -> list[dict]:
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the single task of ``suite``: every GLH12 timing.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run.
+    seed : int
+        Suite seed; the task's seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task, with its ``"seed"`` and ``"suite"``.
+    """
     return [{"seed": task_seeds(seed, NAME, 1)[0], "suite": suite}]
 
 
 def run(task: dict) -> dict:
+    """Run the task's suite of GLH12 timings (:func:`bench`).
+
+    Parameters
+    ----------
+    task : dict
+        The task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...]}``.
+    """
     return {"records": bench(task["suite"], task["seed"])}
 
 
 def cost(task: dict) -> float:
+    """Estimate the seconds of the task, by suite.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return {"tiny": 2.0, "quick": 6.0, "full": 40.0}[task["suite"]]
 
 
@@ -197,6 +293,18 @@ FAMILY = Family(
 
 
 def markdown(records: list[dict]) -> str:
+    """Format speed records as a Markdown table.
+
+    Parameters
+    ----------
+    records : list of dict
+        Speed records (:func:`optbound.bench.timing.speed_record`).
+
+    Returns
+    -------
+    str
+        One row per record: its name, seconds and ratio (or "reference").
+    """
     lines = ["| measurement | seconds | ratio |", "|---|---|---|"]
     for r in records:
         ratio = f"{r['ratio']:.1f}x {r['ratio_label']}" if "ratio" in r else "reference"
@@ -205,6 +313,13 @@ def markdown(records: list[dict]) -> str:
 
 
 def main() -> list[dict]:
+    """Run :func:`bench` from the command line (``--suite``, ``--seed``) and print the table.
+
+    Returns
+    -------
+    list of dict
+        The records printed.
+    """
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=sorted(SIZES), default="quick")
     parser.add_argument("--seed", type=int, default=0)

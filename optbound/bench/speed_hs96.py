@@ -51,7 +51,22 @@ REPRO_TARGETS = {True: 20.0, False: 120.0}  # quick / full office reproduction, 
 
 
 def median_per_call(fn, repeat: int = REPEAT, min_time: float = 0.05) -> float:
-    """Median over ``repeat`` batches of the seconds per call (batches of >= ``min_time``)."""
+    """Time ``fn``: the median over ``repeat`` batches of the seconds per call.
+
+    Parameters
+    ----------
+    fn : callable
+        The call to time, without arguments.
+    repeat : int
+        Number of batches.
+    min_time : float
+        Minimum seconds per batch (the batch size doubles until reached).
+
+    Returns
+    -------
+    float
+        Median seconds per call.
+    """
     timer = timeit.Timer(fn)
     number = 1
     while timer.timeit(number) < min_time:
@@ -60,6 +75,18 @@ def median_per_call(fn, repeat: int = REPEAT, min_time: float = 0.05) -> float:
 
 
 def bench_linear(rng: np.random.Generator) -> list[dict]:
+    """Time ``linear_position`` (N = 10 bearings) against one numpy least-squares solve.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the landmarks and the reference's matrix.
+
+    Returns
+    -------
+    list of dict
+        The reference's speed record, then ours with the ratio and its target.
+    """
     phi = np.sort(rng.uniform(0, 2 * np.pi, 10))
     L = np.column_stack([6 * np.cos(phi), 6 * np.sin(phi)])
     alphas = np.arctan2(L[:, 1] - 0.4, L[:, 0] + 0.3) - 0.2
@@ -81,6 +108,19 @@ def bench_linear(rng: np.random.Generator) -> list[dict]:
 
 
 def bench_associate(rng: np.random.Generator) -> list[dict]:
+    """Time ``associate`` on 8 bearings (1 false) of the office's 22 landmarks, at 7 poses.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the poses, the landmarks seen, the noise.
+
+    Returns
+    -------
+    list of dict
+        One speed record: the median time against the target, with the nodes expanded and
+        how often the true association was found.
+    """
     omap = office.office_map()
     times, nodes, unpruned, found = [], [], 0, 0
     for s in rng.uniform(0, office.lap_length(), 7):
@@ -147,8 +187,22 @@ def _scans(rng, omap: LandmarkMap, n: int):
 def bench_tracker(
     rng: np.random.Generator, n_scans: int = SCANS, repeat: int = REPEAT
 ) -> list[dict]:
-    """Tracker runs of ``n_scans`` scans per criterion against its bare analytic calls
-    (``repeat`` batches per reference call)."""
+    """Time tracker runs per criterion against their bare analytic calls.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Draws the bearing noise of the scans.
+    n_scans : int
+        Scans of all 22 landmarks per run.
+    repeat : int
+        Batches per timed reference call.
+
+    Returns
+    -------
+    list of dict
+        Per criterion, the bare calls' record and the tracker's, both against real time.
+    """
     full = office.office_map()
     omap = LandmarkMap(full.landmarks, shapes=full.shapes)  # no walls: all 22 seen
     start, scans = _scans(rng, omap, n_scans)
@@ -209,7 +263,18 @@ def bench_tracker(
 
 
 def bench_repro(full: bool) -> list[dict]:
-    """The office reproduction, quick variant, and with ``full`` also the 10-lap run."""
+    """Time the office reproduction, quick variant, and with ``full`` also the 10-lap run.
+
+    Parameters
+    ----------
+    full : bool
+        Also time the full 10-lap run.
+
+    Returns
+    -------
+    list of dict
+        One speed record per variant, against its target.
+    """
     from optbound.papers_repro import hs96_office
 
     rows = []
@@ -234,7 +299,18 @@ def bench_repro(full: bool) -> list[dict]:
 
 
 def table(records: list[dict]) -> str:
-    """Markdown table of the records: what, median time, target, ratio against the reference."""
+    """Format the records as a Markdown table.
+
+    Parameters
+    ----------
+    records : list of dict
+        Speed records of this module.
+
+    Returns
+    -------
+    str
+        Columns: what, median time, target, ratio against the reference.
+    """
     rows = [
         (
             r["name"],
@@ -259,6 +335,20 @@ COST = {"linear": 2.0, "associate": 1.0, "tracker": 3.0, "repro": 130.0}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the tasks of ``suite``: one per benchmark part (:data:`PARTS`).
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run.
+    seed : int
+        Suite seed; each task's seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per part, with its ``"seed"``, ``"part"`` and ``"kwargs"``.
+    """
     parts = PARTS[suite]
     seeds = task_seeds(seed, NAME, len(parts))
     return [
@@ -268,6 +358,18 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def run(task: dict) -> dict:
+    """Run one part's ``bench_*`` function.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...]}``.
+    """
     if task["part"] == "repro":
         return {"records": bench_repro(**task["kwargs"])}
     bench = {"linear": bench_linear, "associate": bench_associate, "tracker": bench_tracker}
@@ -275,7 +377,18 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    """Rough seconds (the full tracker part runs 4x the quick one's scans)."""
+    """Estimate the seconds of one part (the full tracker part runs 4x the quick one's scans).
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return COST[task["part"]] * (3.0 if task["kwargs"] == {} and task["part"] == "tracker" else 1)
 
 
@@ -292,7 +405,20 @@ FAMILY = Family(
 
 
 def main(full: bool = False, seed: int = 0) -> str:
-    """Run every benchmark and return the Markdown table (printed by the command line)."""
+    """Run every benchmark and return the Markdown table (printed by the command line).
+
+    Parameters
+    ----------
+    full : bool
+        Also time the full 10-lap reproduction.
+    seed : int
+        Seed of the instances.
+
+    Returns
+    -------
+    str
+        The table of :func:`table`.
+    """
     rng = np.random.default_rng(seed)
     records = bench_linear(rng) + bench_associate(rng) + bench_tracker(rng) + bench_repro(full)
     return table(records)

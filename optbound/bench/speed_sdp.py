@@ -15,10 +15,36 @@ SOLVES = {"tiny": 3, "quick": 30, "full": 200}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the single task of ``suite``: the cached-vs-rebuilt SDP timing.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run.
+    seed : int
+        Suite seed; the task's seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task, with its ``"seed"`` and number of solves ``"n_solves"``.
+    """
     return [{"seed": task_seeds(seed, NAME, 1)[0], "n_solves": SOLVES[suite]}]
 
 
 def run(task: dict) -> dict:
+    """Time the SDP call with a cached and with a rebuilt problem.
+
+    Parameters
+    ----------
+    task : dict
+        The task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...]}``, the records of :func:`cache_records`.
+    """
     from optbound.bench import sdp_cache
 
     timings = sdp_cache.run(n_solves=task["n_solves"], seed=task["seed"])
@@ -26,7 +52,19 @@ def run(task: dict) -> dict:
 
 
 def cache_records(timings: dict) -> list[dict]:
-    """Records from :func:`optbound.bench.sdp_cache.run`'s dict of cached/rebuilt timings."""
+    """Build the speed records of the cached and rebuilt SDP timings.
+
+    Parameters
+    ----------
+    timings : dict
+        What :func:`optbound.bench.sdp_cache.run` returns.
+
+    Returns
+    -------
+    list of dict
+        The rebuilt and cached call times (with the speed-up), and the cached call's
+        shares inside ``optimal.solver.solve`` and inside Clarabel.
+    """
     what = f"{timings['dim']}-D ellipsoid ∩ strip, median of {timings['n_solves']}"
     cached, rebuilt = float(timings["cached_s"]), float(timings["rebuilt_s"])
     return [

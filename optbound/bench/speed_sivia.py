@@ -18,13 +18,42 @@ SIZES = {"tiny": ((0.05,), 1), "quick": ((0.01, 0.005), 5), "full": ((0.01, 0.00
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the single task of ``suite``: SIVIA against codac.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run.
+    seed : int
+        Suite seed; the task's seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task, with its ``"seed"``, the paving precisions ``"eps"`` and ``"repeats"``.
+    """
     eps, repeats = SIZES[suite]
     return [{"seed": task_seeds(seed, NAME, 1)[0], "eps": list(eps), "repeats": repeats}]
 
 
 def sivia_records(rows: list[dict], family: str = NAME, what: str = "sivia") -> list[dict]:
-    """Records from rows of :func:`optbound.bench.sivia_codac.run` (or of a run with the same keys,
-    e.g. :func:`optbound.bench.sonar_codac.run`): codac's time, then ours with the ratio."""
+    """Build speed records from timing rows: codac's time, then ours with the ratio.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Rows of :func:`optbound.bench.sivia_codac.run` (or of a run with the same keys,
+        e.g. :func:`optbound.bench.sonar_codac.run`), without note rows.
+    family : str
+        The family named in the records.
+    what : str
+        What was timed, in the records' names.
+
+    Returns
+    -------
+    list of dict
+        Two speed records per row.
+    """
     out = []
     for row in rows:
         extra = {k: v for k, v in row.items() if k not in ("name", "seconds", "codac_seconds")}
@@ -35,6 +64,19 @@ def sivia_records(rows: list[dict], family: str = NAME, what: str = "sivia") -> 
 
 
 def run(task: dict) -> dict:
+    """Time optbound's SIVIA against codac's.
+
+    Parameters
+    ----------
+    task : dict
+        The task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "notes": [...]}``: the records of :func:`sivia_records`, and the
+        rows' notes (e.g. codac not installed).
+    """
     from optbound.bench import sivia_codac
 
     rows = sivia_codac.run(eps_values=tuple(task["eps"]), repeats=task["repeats"])

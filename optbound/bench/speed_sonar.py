@@ -38,6 +38,20 @@ KJWM00_TRIALS = 10
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the tasks of ``suite``: the KJWM00 workload and the codac comparison (full only).
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run; only ``full`` has tasks (each takes minutes).
+    seed : int
+        Suite seed; the tasks' seeds are derived from it.
+
+    Returns
+    -------
+    list of dict
+        The ``"kjwm00"`` task (with its ``"trials"``) and the ``"codac"`` task, or none.
+    """
     seeds = task_seeds(seed, NAME, 2)
     out = []
     if suite == "full":
@@ -47,7 +61,20 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def kjwm00_cases(trials: int) -> tuple[list[dict], float]:
-    """The first ``trials`` seeded cases of each group of the KJWM00 quick plan, and its eps."""
+    """Build the first ``trials`` seeded cases of each group of the KJWM00 quick plan.
+
+    Parameters
+    ----------
+    trials : int
+        Cases per group.
+
+    Returns
+    -------
+    cases : list of dict
+        The scenarios (``world``, ``sonars``, ``ranges``, ...).
+    eps : float
+        The plan's range error bound.
+    """
     from optbound.papers_repro import kjwm00_outliers as kj
     from optbound.scenarios import rooms
 
@@ -73,7 +100,24 @@ def _trial_pavings(pave_q, n_sonars: int) -> list:
 
 
 def kjwm00_records(trials: int) -> list[dict]:
-    """CPU seconds of the workload with the reference and with ``localize``, case by case."""
+    """Time the KJWM00 workload with the reference and with ``localize``, case by case.
+
+    Parameters
+    ----------
+    trials : int
+        Cases per group of the KJWM00 quick plan (:func:`kjwm00_cases`).
+
+    Returns
+    -------
+    list of dict
+        Two speed records: the CPU seconds of the interval-layer reference and of
+        ``sonar.localize``, with the ratio.
+
+    Raises
+    ------
+    RuntimeError
+        If the two pave a case differently (outer volumes not equal).
+    """
     from optbound.bench.sonar_codac import interval_layer_localize
     from optbound.localization.sonar import localize
 
@@ -109,10 +153,22 @@ def kjwm00_records(trials: int) -> list[dict]:
 
 
 def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
-    """Records and notes from :func:`optbound.bench.sonar_codac.run`'s rows.
+    """Build the records and notes of :func:`optbound.bench.sonar_codac.run`'s rows.
 
     A row without a finite codac time (codac missing, or stopped at the timeout) gives our
     time alone and its note.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows of :func:`optbound.bench.sonar_codac.run`.
+
+    Returns
+    -------
+    records : list of dict
+        The speed records.
+    notes : list of str
+        Why a codac time is missing.
     """
     records, notes = [], []
     for row in rows:
@@ -128,6 +184,18 @@ def sonar_records(rows: list[dict]) -> tuple[list[dict], list[str]]:
 
 
 def run(task: dict) -> dict:
+    """Run one task: the KJWM00 workload or the codac comparison.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "notes": [...]}``.
+    """
     if task.get("kind") == "kjwm00":
         return {"records": kjwm00_records(task["trials"]), "notes": []}
     from optbound.bench import sonar_codac
@@ -137,6 +205,18 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
+    """Estimate the seconds of one task: 3 s per KJWM00 trial, 260 s for the codac one.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return 3.0 * task["trials"] if task.get("kind") == "kjwm00" else 260.0
 
 

@@ -30,11 +30,37 @@ SAMPLES = 20_000  # points of E tested against each bound (those in S are points
 
 
 def projection_dims(dim: int) -> list[int]:
-    """Coordinates the projection criterion targets: x-y (the position), or x alone in 2-D."""
+    """Choose the coordinates the projection criterion targets.
+
+    Parameters
+    ----------
+    dim : int
+        The state dimension.
+
+    Returns
+    -------
+    list of int
+        ``[0, 1]`` (x-y, the position), or ``[0]`` (x alone) in 2-D.
+    """
     return [0] if dim == 2 else [0, 1]
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
+    """Build the seeded tasks of ``suite``: one ellipsoid and strip per cell.
+
+    Parameters
+    ----------
+    suite : {"tiny", "quick", "full"}
+        Size of the run (:data:`SIZES`).
+    seed : int
+        Suite seed; each task's instance seed is derived from it.
+
+    Returns
+    -------
+    list of dict
+        One JSON-able task per (dimension, condition number, strip kind, repetition), with its
+        ``"seed"`` and whether it draws a figure.
+    """
     dims, conds, reps = SIZES[suite]
     cells = list(itertools.product(dims, conds, STRIP_KINDS, range(reps)))
     return [
@@ -50,13 +76,39 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
 
 def instance(task: dict):
-    """The ellipsoid and strip of a task, rebuilt from its seed."""
+    """Rebuild the ellipsoid and strip of a task from its seed.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    E : Ellipsoid
+        The prior ellipsoid.
+    S : Strip
+        The measurement strip.
+    """
     rng = np.random.default_rng(task["seed"])
     E = random_ellipsoid(rng, task["dim"], task["cond"])
     return E, random_strip(rng, E, task["kind"])
 
 
 def run(task: dict) -> dict:
+    """Run one task: every analytic criterion of ``E ∩ S`` against the SDP optimum of its metric.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    dict
+        ``{"records": [...], "figures": [...]}``: one record per criterion (its size ratio, the
+        sampled points of the exact set it misses), and a 2-D figure for figure tasks.
+    """
     from optbound import analytic, optimal
 
     E, S = instance(task)
@@ -114,7 +166,18 @@ def run(task: dict) -> dict:
 
 
 def cost(task: dict) -> float:
-    """Seconds of one task, roughly (quick suite, 2-core VM): the SDPs grow with the dimension."""
+    """Estimate the seconds of one task (quick suite, 2-core VM): the SDPs grow with the dimension.
+
+    Parameters
+    ----------
+    task : dict
+        A task of :func:`tasks`.
+
+    Returns
+    -------
+    float
+        Estimated seconds on one core.
+    """
     return 0.02 * task["dim"]
 
 

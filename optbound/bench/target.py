@@ -12,8 +12,14 @@ _NAMES = {"avx512f": "AVX-512", "avx2": "AVX2", "avx": "AVX", "sse4.2": "SSE4.2"
 
 
 def numba_target() -> str:
-    """``"host CPU <name>, <widest vector set> (<extensions>)"``, or the CPU that
-    ``NUMBA_CPU_NAME`` / ``NUMBA_CPU_FEATURES`` make numba compile for instead of the host."""
+    """Name the instruction set numba compiles for.
+
+    Returns
+    -------
+    str
+        ``"host CPU <name>, <widest vector set> (<extensions>)"``, or the CPU that
+        ``NUMBA_CPU_NAME`` / ``NUMBA_CPU_FEATURES`` make numba compile for instead of the host.
+    """
     import llvmlite.binding as ll
     import numba
 

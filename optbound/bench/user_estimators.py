@@ -22,9 +22,27 @@ from typing import Any
 
 
 def problem_families(selected: list[str] | None) -> list[str]:
-    """The problem families a bench run over ``selected`` bench families covers (all if None):
-    those whose instances are a selected family's (a family module's ``BENCH_NAME``, e.g.
-    ``bh_bearings`` for ``localization``; by default its own name)."""
+    """List the problem families a bench run over ``selected`` bench families covers.
+
+    Those whose instances are a selected family's (a family module's ``BENCH_NAME``, e.g.
+    ``bh_bearings`` for ``localization``; by default its own name).
+
+    Parameters
+    ----------
+    selected : list of str or None
+        Bench family names; None (or empty) selects all.
+
+    Returns
+    -------
+    list of str
+        Names of :func:`optbound.problems.families`, in their order.
+
+    Examples
+    --------
+    >>> from optbound.bench.user_estimators import problem_families
+    >>> problem_families(["localization", "strip"])
+    ['strip', 'bh_bearings']
+    """
     from optbound import problems
 
     known = problems.families()
@@ -43,8 +61,27 @@ def run_estimators(
     seed: int,
     families: list[str] | None = None,
 ) -> list[dict]:
-    """Evaluate each named estimator on ``problems.suite(suite, problem_families(families),
-    seed)``; one results entry per estimator (module docstring), in the given order."""
+    """Evaluate each named estimator on the problem suite of the selected families.
+
+    The problems are ``problems.suite(suite, problem_families(families), seed)``.
+
+    Parameters
+    ----------
+    estimators : dict of str to callable
+        Name -> ``estimator(problem) -> set``, as :func:`optbound.evaluate` takes.
+    suite : {"tiny", "quick", "full"}
+        Size of the problem suite.
+    seed : int
+        Seed of the problems.
+    families : list of str, optional
+        Bench family names (:func:`problem_families`); default all.
+
+    Returns
+    -------
+    list of dict
+        One results entry per estimator (module docstring), in the given order: its counts,
+        wall time and per-problem rows.
+    """
     from optbound import evaluate, problems
 
     chosen = problem_families(families)

@@ -95,9 +95,21 @@ GROUPS: dict[str, tuple[float, Callable[[], None], str]] = {
 
 
 def is_cached(dispatcher) -> bool:
-    """Whether numba's on-disk cache holds a compiled version of ``dispatcher`` that is
-    current for its source file. Anything unexpected (no cache, another numba's internals)
-    counts as cached, so that the run goes on exactly as without a warm-up."""
+    """Tell whether numba's on-disk cache holds a current compiled version of ``dispatcher``.
+
+    Current means: for its source file as it is now. Anything unexpected (no cache, another
+    numba's internals) counts as cached, so that the run goes on exactly as without a warm-up.
+
+    Parameters
+    ----------
+    dispatcher : numba.core.registry.CPUDispatcher
+        A kernel compiled with ``cache=True``.
+
+    Returns
+    -------
+    bool
+        False only when the cache is known to lack the kernel.
+    """
     try:
         return bool(dispatcher._cache._cache_file._load_index())
     except Exception:
@@ -105,7 +117,13 @@ def is_cached(dispatcher) -> bool:
 
 
 def cold_groups() -> list[str]:
-    """The groups whose kernels are not in numba's cache, longest first."""
+    """List the groups whose kernels are not in numba's cache, longest first.
+
+    Returns
+    -------
+    list of str
+        Names of :data:`GROUPS` whose probe kernel is not cached (:func:`is_cached`).
+    """
     cold = []
     for name, (_, _, probe) in GROUPS.items():
         module, _, kernel = probe.partition(":")
@@ -115,9 +133,23 @@ def cold_groups() -> list[str]:
 
 
 def compile_group(name: str) -> tuple[str, float | str]:
-    """Run group ``name``'s calls (in a worker); returns its name and CPU seconds, or the
-    error of a call that failed: a warm-up never stops the run (the task that needs the
-    kernel then compiles it, and reports its own errors)."""
+    """Run group ``name``'s calls (in a worker), which compiles its kernels.
+
+    A warm-up never stops the run: the error of a failed call is returned, and the task that
+    needs the kernel then compiles it, and reports its own errors.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`GROUPS`.
+
+    Returns
+    -------
+    name : str
+        The group's name.
+    outcome : float or str
+        CPU seconds of its calls, or ``"ErrorType: message"`` of the call that failed.
+    """
     start = time.process_time()
     try:
         GROUPS[name][1]()
@@ -127,10 +159,22 @@ def compile_group(name: str) -> tuple[str, float | str]:
 
 
 def compile_cold(jobs: int) -> dict[str, float | str]:
-    """Compile the groups missing from numba's cache on a pool of ``jobs`` processes, longest
-    first, and wait for all of them; what :func:`compile_group` returned, per group (a
-    worker lost on the way is reported the same way). With ``jobs == 1`` or a warm cache,
-    nothing runs: one process compiles each kernel once anyway, on first use."""
+    """Compile the groups missing from numba's cache on a pool of ``jobs`` processes.
+
+    The groups run longest first, and all of them are waited for. With ``jobs == 1`` or a
+    warm cache, nothing runs: one process compiles each kernel once anyway, on first use.
+
+    Parameters
+    ----------
+    jobs : int
+        Worker processes of the suite (the pool takes at most one per cold group).
+
+    Returns
+    -------
+    dict
+        Group name -> what :func:`compile_group` returned for it: CPU seconds or an error
+        (a worker lost on the way is reported the same way); empty when nothing ran.
+    """
     names = cold_groups() if jobs > 1 else []
     if not names:
         return {}
