@@ -299,37 +299,52 @@ def test_a_run_that_fails_removes_the_out_folder_it_created(tmp_path, capsys, mo
     assert not (tmp_path / "new").exists()
 
 
-def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path):
-    """SIGINT to the whole process group, as a terminal's Ctrl-C sends it, mid-run."""
+@pytest.mark.parametrize("families", [["sleeper"], ["minkowski", "sleeper"]])
+def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path, families):
+    """SIGINT to the whole process group, as a terminal's Ctrl-C sends it, while a task runs.
+
+    The test-only ``sleeper`` family blocks in its first task (after the pooled ``minkowski``
+    tasks, if given, are stored), so the interrupt always lands mid-run, whatever the machine's
+    speed or the state of numba's cache."""
     import os
     import signal
     import time
     from pathlib import Path
 
-    target = tmp_path / "out"
-    argv = ["bench", "--suite", "quick", "--family", "recursive", "--jobs", "2"]
+    from tests.bench import test_only_families as test_only
+
+    target, mark = tmp_path / "out", tmp_path / "blocking"
+    argv = ["bench", "--suite", "tiny", "--jobs", "2", "--out", str(target)]
+    argv += [arg for name in families for arg in ("--family", name)]
+    code = (
+        "from optbound.bench import registry; "
+        "registry.FAMILIES['sleeper'] = 'tests.bench.test_only_families:SLEEPER'; "
+        f"from optbound.cli import main; raise SystemExit(main({argv}))"
+    )
     proc = subprocess.Popen(
-        [sys.executable, "-m", "optbound", *argv, "--out", str(target)],
+        [sys.executable, "-c", code],
         cwd=Path(__file__).parents[1],
+        env={**os.environ, test_only.BLOCK_ENV: str(mark)},
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,
     )
-    deadline = time.monotonic() + 120
-    while not target.exists() and time.monotonic() < deadline:
+    deadline = time.monotonic() + 300
+    while not mark.exists():
+        assert proc.poll() is None and time.monotonic() < deadline, "the run did not block"
         time.sleep(0.05)
-    time.sleep(3)  # the pool's workers are running tasks
     os.killpg(proc.pid, signal.SIGINT)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
-    if target.exists():  # a task had finished: it is kept, to be resumed (tests/bench)
-        assert list(target.glob("tasks/*.json")), list(target.iterdir())
+    if families == ["sleeper"]:  # no task had finished: nothing is left behind
+        assert not target.exists()
+        assert err.splitlines()[-1] == "optbound bench: interrupted"
+    else:  # the stored tasks are kept, to be resumed (tests/bench/test_run_folder.py)
+        assert list(target.glob("tasks/minkowski-*.json")), list(target.iterdir())
         hint = f"; finish it with: optbound bench --resume {target}"
         assert err.splitlines()[-1] == f"optbound bench: interrupted{hint}"
-    else:
-        assert err.splitlines()[-1] == "optbound bench: interrupted"
 
 
 @pytest.fixture(scope="module")

@@ -4,6 +4,7 @@ temporary folder and found on PYTHONPATH by a child process, as a user's own mod
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
 import subprocess
@@ -193,7 +194,7 @@ def test_all_registered_expands_to_the_entry_points(monkeypatch):
 def test_the_analytic_estimator_is_proven_or_undecided_never_refuted():
     result = problems.evaluate(analytic_volume, STRIP)
     assert all(r["error"] is None and r["soundness"] != "refuted" for r in result.rows)
-    other = STRIP[0].__class__(**{**STRIP[0].__dict__, "data": {"boxes": None}})
+    other = dataclasses.replace(STRIP[0], data={"boxes": None})
     row = problems.evaluate(analytic_volume, other).rows[0]
     assert row["error"].startswith("TypeError: the analytic strip update needs")
 
