@@ -329,6 +329,9 @@ def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path, fa
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,
+        # as from a terminal: a shell's background job (e.g. CI started with `&`) inherits an
+        # ignored SIGINT, and Python then never raises KeyboardInterrupt
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     deadline = time.monotonic() + 300
     while not mark.exists():
