@@ -18,8 +18,8 @@ audited against the exact set of the problem:
 
 References
 ----------
-.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+[LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 """
 
 from __future__ import annotations

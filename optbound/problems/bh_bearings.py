@@ -18,8 +18,8 @@ paving's boxes (``relative_bearing.best_ellipse``, both certified).
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -67,8 +67,8 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
     References
     ----------
-    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+    bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
@@ -100,8 +100,8 @@ def instance(seed: int, variant: str) -> tuple[np.ndarray, list, np.ndarray, flo
 
     References
     ----------
-    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+    bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     if variant == "BH geometry":
         return bh.sect5_instance()

@@ -9,8 +9,8 @@ raises a TypeError, which :func:`optbound.evaluate` reports as that row's error.
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -42,8 +42,8 @@ def analytic_volume(problem: Problem) -> Ellipsoid | None:
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     return _intersect_strip(problem, "volume")
 
@@ -71,8 +71,8 @@ def analytic_trace(problem: Problem) -> Ellipsoid | None:
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     return _intersect_strip(problem, "trace")
 

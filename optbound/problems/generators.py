@@ -134,8 +134,8 @@ def strip_bounds(rng: np.random.Generator, kind: str) -> tuple[float, float]:
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     if kind == "narrow":
         width, mid = rng.uniform(0.05, 0.3), rng.uniform(-0.2, 0.2)

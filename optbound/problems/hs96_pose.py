@@ -19,8 +19,8 @@ heading (guaranteed, and defined also where HS96's linear position bound is not)
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -98,8 +98,8 @@ def instance(seed: int, count: int, delta_alpha: float) -> dict:
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     rng = np.random.default_rng(seed)
     omap = office.office_map()

@@ -27,8 +27,8 @@ decide, so a poor guess costs tightness, never soundness.
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

@@ -7,8 +7,8 @@ membership of a point and the paving can never disagree.
 
 References
 ----------
-.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+[LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
 """
 
 from __future__ import annotations
@@ -137,8 +137,8 @@ class Problem:
 
         References
         ----------
-        .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-           inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+        [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+        inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
         """
         eps = self.eps if eps is None else v.finite_scalar("eps", eps)
         if eps <= 0:

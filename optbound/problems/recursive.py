@@ -11,8 +11,8 @@ the S-procedure SDP over all k strips at once (the benchmark's "batch SDP").
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

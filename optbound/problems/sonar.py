@@ -17,10 +17,10 @@ widest side), paved at 1/RELATIVE of the hull's widest side.
 
 References
 ----------
-.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
-.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
-   localization using interval analysis", Reliable Computing, 2000.
+[LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+[KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -70,8 +70,8 @@ def tasks(suite: str, seed: int) -> list[dict]:
 
     References
     ----------
-    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+    inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     if suite not in SIZES:
         raise ValueError(f"suite must be one of {tuple(SIZES)}, got {suite!r}")
@@ -122,8 +122,8 @@ def instance(seed: int, room: str, paper_pose: bool) -> dict:
 
     References
     ----------
-    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+    inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     rng = np.random.default_rng(seed)
     world, belt = _room(room)

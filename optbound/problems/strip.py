@@ -9,8 +9,8 @@ has a closed form (:func:`~optbound.compare.size.ellipsoid_strip_volume_bracket`
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations

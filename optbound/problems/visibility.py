@@ -20,8 +20,8 @@ every point of the box. The truth lies in the set, since E⁻ ⊂ E ⊂ E⁺.
 
 References
 ----------
-.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
-   set-membership approach using a visibility information", ICINCO, 2012.
+[GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations

@@ -44,8 +44,8 @@ def system() -> LinearSystem:
 
     References
     ----------
-    .. [ABC05] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by
-       zonotopes", Automatica 41(6):1035-1043, 2005.
+    [ABC05] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by
+    zonotopes", Automatica 41(6):1035-1043, 2005.
 
     Examples
     --------

@@ -19,8 +19,8 @@ designed one), ``turn`` the motion (0: straight lines, a new random heading when
 
 References
 ----------
-.. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
-   set-membership approach using a visibility information", ICINCO, 2012.
+[GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+set-membership approach using a visibility information", ICINCO, 2012.
 """
 
 from __future__ import annotations
@@ -258,8 +258,8 @@ def simulate(
 
     References
     ----------
-    .. [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
-       set-membership approach using a visibility information", ICINCO, 2012.
+    [GLH12] R. Guyonneau, S. Lagrange, L. Hardouin, "Mobile robots pose tracking: a
+    set-membership approach using a visibility information", ICINCO, 2012.
 
     Examples
     --------

@@ -9,8 +9,8 @@ same pairs, for sweeps. The model they feed is :mod:`optbound.localization.relat
 
 References
 ----------
-.. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-   bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+[BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 """
 
 from __future__ import annotations
@@ -48,8 +48,8 @@ def sect5_instance() -> tuple[np.ndarray, list, np.ndarray, float, np.ndarray]:
 
     References
     ----------
-    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+    bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 
     Examples
     --------
@@ -94,8 +94,8 @@ def random_instance(
 
     References
     ----------
-    .. [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
-       bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
+    [BH] K. Briechle, U. D. Hanebeck, "Localization of a mobile robot using relative
+    bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
     """
     pairs = [tuple(p) for p in pairs]
     margin = np.radians(3.0)

@@ -20,8 +20,8 @@ Nothing here was tuned to reach the paper's numbers. The models it drives are
 
 References
 ----------
-.. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-   on an angle measurement technique", IFAC, 1996.
+[HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+on an angle measurement technique", IFAC, 1996.
 """
 
 from __future__ import annotations
@@ -356,8 +356,8 @@ def corrupt_scan(
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     alphas = np.asarray(alphas, dtype=float)
     truth = np.asarray(truth, dtype=int)
@@ -457,8 +457,8 @@ def track(
 
     References
     ----------
-    .. [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
-       on an angle measurement technique", IFAC, 1996.
+    [HS96] U. D. Hanebeck, G. Schmidt, "Absolute localization of fast mobile robots based
+    on an angle measurement technique", IFAC, 1996.
     """
     import time
 

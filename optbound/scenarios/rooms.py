@@ -9,10 +9,10 @@ The model they feed is :mod:`optbound.localization.sonar` (which also holds the 
 
 References
 ----------
-.. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-   inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
-.. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
-   localization using interval analysis", Reliable Computing, 2000.
+[LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+[KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+localization using interval analysis", Reliable Computing, 2000.
 """
 
 from __future__ import annotations
@@ -51,8 +51,8 @@ def triangle_sonars(
 
     References
     ----------
-    .. [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
-       inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
+    [LJMW97] O. Lévêque, L. Jaulin, D. Meizel, E. Walter, "Vehicle localization from
+    inaccurate telemetric data: a set inversion approach", IFAC SYROCO, 1997.
     """
     return [
         Sonar((0.2 * np.cos(a), 0.2 * np.sin(a)), a, half_aperture, rel_accuracy)
@@ -90,8 +90,8 @@ def belt_sonars(
 
     References
     ----------
-    .. [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
-       localization using interval analysis", Reliable Computing, 2000.
+    [KJWM00] M. Kieffer, L. Jaulin, E. Walter, D. Meizel, "Robust autonomous robot
+    localization using interval analysis", Reliable Computing, 2000.
     """
     angles = 2 * np.pi * np.arange(n) / n
     return [
