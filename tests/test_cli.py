@@ -316,11 +316,8 @@ def test_ctrl_c_prints_one_line_exits_130_and_removes_the_empty_out(tmp_path, fa
     target, mark = tmp_path / "out", tmp_path / "blocking"
     argv = ["bench", "--suite", "tiny", "--jobs", "2", "--out", str(target)]
     argv += [arg for name in families for arg in ("--family", name)]
-    code = (
-        "from optbound.bench import registry; "
-        "registry.FAMILIES['sleeper'] = 'tests.bench.test_only_families:SLEEPER'; "
-        f"from optbound.cli import main; raise SystemExit(main({argv}))"
-    )
+    main_call = f"from optbound.cli import main; raise SystemExit(main({argv}))"
+    code = test_only.REGISTER_SLEEPER + main_call
     proc = subprocess.Popen(
         [sys.executable, "-c", code],
         cwd=Path(__file__).parents[1],

@@ -12,6 +12,11 @@ from pathlib import Path
 
 from optbound.bench.family import Family
 
+#: Code that registers the sleeper in a subprocess started with ``python -c``.
+REGISTER_SLEEPER = (
+    "from optbound.bench import registry; "
+    "registry.FAMILIES['sleeper'] = 'tests.bench.test_only_families:SLEEPER'; "
+)
 KILLED = 2  # the killer's task index (and seed) whose process is killed
 #: Set in a run's environment, the path where the sleeper's first task signals that it runs,
 #: before blocking for a minute (a run to be killed while the first tasks are stored).

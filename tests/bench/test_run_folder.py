@@ -39,12 +39,6 @@ def test_a_dead_worker_fails_its_task_and_the_run_completes(target, jobs, tmp_pa
     ]
 
 
-REGISTER_SLEEPER = (
-    "from optbound.bench import registry; "
-    "registry.FAMILIES['sleeper'] = 'tests.bench.test_only_families:SLEEPER'; "
-)
-
-
 def test_a_killed_run_resumes_to_the_uninterrupted_results(tmp_path, monkeypatch):
     """SIGKILL to a real run whose pooled tasks are stored while a serial task runs;
     ``--resume`` runs only the tasks not stored, and the report's records equal those of an
@@ -52,7 +46,8 @@ def test_a_killed_run_resumes_to_the_uninterrupted_results(tmp_path, monkeypatch
     out, mark = tmp_path / "out", tmp_path / "blocking"
     argv = ["bench", "--suite", "tiny", "--family", "minkowski", "--family", "sleeper",
             "--jobs", "1", "--no-progress"]  # fmt: skip
-    code = f"{REGISTER_SLEEPER}from optbound.cli import main; main({[*argv, '--out', str(out)]})"
+    main_call = f"from optbound.cli import main; main({[*argv, '--out', str(out)]})"
+    code = test_only.REGISTER_SLEEPER + main_call
     proc = subprocess.Popen(
         [sys.executable, "-c", code],
         cwd=ROOT,
