@@ -32,6 +32,9 @@ _WALL_COLUMNS = 14
 # Columns of the per-(box, sonar) table (:func:`pose_table`): lo, hi of each quantity.
 _PX, _PY, _RX, _RY, _LX, _LY = 0, 2, 4, 6, 8, 10
 _POSE_COLUMNS = 12
+#: Most boxes :func:`relaxed_tri`'s memo keeps (about 150 bytes each).
+MEMO_SIZE = 500_000
+_NEW = (0, 0, 0)  # counts of a box not tested yet
 
 
 def wall_table(world: np.ndarray) -> np.ndarray:
@@ -188,34 +191,54 @@ def _ranges(poses, walls, far, out):
             out[k, i, 0], out[k, i, 1] = _range(poses[k, i], walls, far, -np.inf, np.inf)
 
 
+@njit(cache=True, inline="always")
+def _decide(n_true, n_false, left, t, q):
+    """Verdict of "at most q of t sonars FALSE" from the counts so far; -1 while undecided.
+
+    TRUE once ``t - q`` sonars are TRUE, FALSE once more than ``q`` are FALSE, UNKNOWN once
+    the ``left`` sonars not yet tested can reach neither, as in
+    :func:`optbound.interval.relaxed._verdict`. Each sonar's verdict depends on that sonar
+    only, so the decision is a function of the final counts: the same whichever prefix of
+    the sonars it is read from, and for every ``q`` from the same counts.
+    """
+    if n_true >= t - q:
+        return TRUE
+    if n_false > q:
+        return FALSE
+    if n_true + left < t - q and n_false + left <= q:
+        return UNKNOWN
+    return -1
+
+
 @njit(cache=True)
-def _relaxed(poses, walls, far, y_lo, y_hi, q, out):
+def _pending(state, t, q, out):
+    """Fill ``out`` (m,) with each box's verdict from its ``state`` row, -1 where undecided."""
+    for k in range(state.shape[0]):
+        out[k] = _decide(state[k, 0], state[k, 1], t - state[k, 2], t, q)
+
+
+@njit(cache=True)
+def _relaxed(poses, walls, far, y_lo, y_hi, q, state, out):
     """Fill ``out`` (m,) with the Tri of "at most q sonars inconsistent" per box.
 
-    Sonars are tested in order; a box is decided as soon as ``t - q`` are TRUE (TRUE), more
-    than ``q`` FALSE (FALSE), or neither can happen any more (UNKNOWN), as in
-    :func:`optbound.interval.relaxed._verdict`.
+    ``state`` (m, 3) holds per box the numbers of TRUE and FALSE sonars among the first
+    ``state[:, 2]`` (all 0 for a new box); the sonars are tested from there on, in order,
+    until the box is decided (:func:`_decide`), and ``state`` is updated, so that a later
+    call with another ``q`` resumes where this one stopped.
     """
     t = poses.shape[1]
     for k in range(poses.shape[0]):
-        n_true = 0
-        n_false = 0
-        verdict = UNKNOWN
-        for i in range(t):
+        n_true, n_false, i = state[k, 0], state[k, 1], state[k, 2]
+        verdict = _decide(n_true, n_false, t - i, t, q)
+        while verdict < 0:
             lo, hi = _range(poses[k, i], walls, far, y_lo[i], y_hi[i])
             if lo >= y_lo[i] and hi <= y_hi[i]:
                 n_true += 1
             elif hi < y_lo[i] or lo > y_hi[i]:
                 n_false += 1
-            left = t - i - 1
-            if n_true >= t - q:
-                verdict = TRUE
-                break
-            if n_false > q:
-                verdict = FALSE
-                break
-            if n_true + left < t - q and n_false + left <= q:
-                break
+            i += 1
+            verdict = _decide(n_true, n_false, t - i, t, q)
+        state[k, 0], state[k, 1], state[k, 2] = n_true, n_false, i
         out[k] = verdict
 
 
@@ -227,11 +250,35 @@ def range_bounds(world_table, params, far, x, y, theta) -> Interval:
     return Interval._make(out[..., 0], out[..., 1])
 
 
-def relaxed_tri(world_table, params, far, Y, q, x, y, theta) -> np.ndarray:
-    """Tri per box of "at most ``q`` of the t sonars disagree with their reading ``Y``"."""
-    poses = pose_table(params, x, y, theta)
-    out = np.empty(poses.shape[0], dtype=np.int8)
-    _relaxed(poses, world_table, far, Y[:, 0].copy(), Y[:, 1].copy(), q, out)
+def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.ndarray:
+    """Tri per box of "at most ``q`` of the t sonars disagree with their reading ``Y``".
+
+    ``memo`` (a dict, optional) keeps each box's sonar counts (:func:`_relaxed`) between
+    calls, keyed by the box's bounds: a box tested again, at another ``q`` (``q = "auto"``
+    paves the same tree for q = 0, 1, ...), resumes from its counts, and one whose counts
+    already decide it is not tested again. The verdicts are those of a fresh evaluation
+    (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes.
+    """
+    t = params.shape[0]
+    boxes = np.stack([x.lo, x.hi, y.lo, y.hi, theta.lo, theta.hi], axis=1)
+    keys = boxes.view(np.dtype((np.void, boxes.itemsize * 6))).ravel().tolist()
+    if memo:
+        state = np.array([memo.get(key, _NEW) for key in keys], dtype=np.int64).reshape(-1, 3)
+    else:
+        state = np.zeros((len(keys), 3), dtype=np.int64)
+    out = np.empty(len(keys), dtype=np.int8)
+    _pending(state, t, q, out)
+    todo = np.flatnonzero(out < 0)
+    if todo.size:
+        sub = todo if todo.size < len(keys) else slice(None)
+        poses = pose_table(params, x[sub], y[sub], theta[sub])
+        part, verdicts = state[todo], np.empty(todo.size, dtype=np.int8)
+        _relaxed(poses, world_table, far, Y[:, 0].copy(), Y[:, 1].copy(), q, part, verdicts)
+        state[todo], out[todo] = part, verdicts
+        if memo is not None:
+            if len(memo) + todo.size > MEMO_SIZE:
+                memo.clear()
+            memo.update(zip([keys[k] for k in todo.tolist()], map(tuple, part.tolist())))
     return out
 
 
