@@ -278,7 +278,8 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
         if memo is not None:
             if len(memo) + todo.size > MEMO_SIZE:
                 memo.clear()
-            memo.update(zip([keys[k] for k in todo.tolist()], map(tuple, part.tolist())))
+            done = [keys[k] for k in todo.tolist()]
+            memo.update(zip(done, map(tuple, part.tolist()), strict=True))
     return out
 
 
