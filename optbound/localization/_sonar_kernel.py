@@ -60,13 +60,23 @@ def pose_table(params: np.ndarray, x: Interval, y: Interval, theta: Interval) ->
     """(m, t, 12) per box and sonar: the apex and the cone's right and left unit vectors.
 
     ``params`` is (t, 4): each sonar's mounting ``x, y``, orientation and half-aperture.
-    Computed by the interval layer exactly as :func:`sonar._ranges` computes them.
+    Computed by the interval layer exactly as :func:`sonar._ranges` computes them. The cone's
+    unit vectors depend on the heading only: they are computed once per distinct ``theta``
+    (SIVIA's boxes share a few; the interval functions act element by element).
     """
     x, y, theta = (Interval._make(c.lo[:, None], c.hi[:, None]) for c in (x, y, theta))
     sx, sy, alpha, gamma = params.T
     apex = g.to_world((x, y, theta), (sx, sy))
-    heading = theta + alpha
-    right, left = g.unit(heading - gamma), g.unit(heading + gamma)
+    bounds = np.concatenate([theta.lo, theta.hi], axis=1)
+    _, first, row = np.unique(
+        bounds.view(np.dtype((np.void, bounds.itemsize * 2))).ravel(),
+        return_index=True,
+        return_inverse=True,
+    )
+    heading = theta[first] + alpha
+    right, left = (
+        tuple(v[row.ravel()] for v in g.unit(heading + turn)) for turn in (-gamma, gamma)
+    )
     out = np.empty((*apex[0].shape, _POSE_COLUMNS))
     for col, v in zip((_PX, _PY, _RX, _RY, _LX, _LY), (*apex, *right, *left), strict=True):
         out[..., col], out[..., col + 1] = v.lo, v.hi
