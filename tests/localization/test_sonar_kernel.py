@@ -95,6 +95,26 @@ def test_localize_paves_as_the_interval_layer():
     assert ours.contains(truth)
 
 
+def test_localize_at_another_q_resumes_the_counts_and_paves_as_a_fresh_run():
+    """The second call reuses the first's tests (their per-box sonar counts), same boxes."""
+    rng = np.random.default_rng(6)
+    belt = rooms.belt_sonars(8)
+    truth = inside_pose(rng, rooms.BELT_ROOM)
+    d = noisy(rng, simulate_ranges(rooms.BELT_ROOM, belt, truth), belt)
+    d[3] = 1.0
+    X0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
+    localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=0)
+    tests = sonar._LAST_TESTS[0][1]
+    ours = localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=1)
+    assert sonar._LAST_TESTS[0][1] is tests
+    box, _ = sonar._initial_box(X0)
+    plain = list(sonar_tests(rooms.BELT_ROOM, belt, d))
+    ref = relaxed_paving(plain, 1, box, 0.3, defer_below=sonar.DEFER_BELOW)
+    for mine, theirs in ((ours.inner, ref.inner), (ours.boundary, ref.boundary)):
+        assert np.array_equal(mine, theirs)
+    assert ours.contains(truth)
+
+
 def test_a_too_short_wall_is_refused():
     world = np.array([[[0.0, 0.0], [1e-170, 0.0]], [[0.0, 1.0], [1.0, 1.0]]])
     with pytest.raises(ValueError, match="too short"):
