@@ -272,7 +272,9 @@ def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
     also carries their compiled q-relaxed conjunction (:class:`~optbound.interval.relaxed.
     FusedTests`), which :func:`~optbound.interval.relaxed_test` uses on SIVIA's boxes: one
     compiled pass over the boxes that stops, per box, at the first sonar that decides it
-    [KJWM00]. ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
+    [KJWM00]. It keeps each box's sonar counts, so the same box tested again at another
+    ``q`` (``q = "auto"``) resumes where it stopped (same verdicts as a fresh evaluation).
+    ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
 
     Parameters
     ----------
