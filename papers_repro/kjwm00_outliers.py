@@ -38,6 +38,7 @@ from optbound.localization.sonar import (
     clearance_test,
     localize,
     measurement_box,
+    shared_counts,
     simulate_ranges,
 )
 from optbound.papers_repro._common import pyplot, run_cli, save_figure
@@ -115,7 +116,8 @@ def _pavings(case: dict, eps: float) -> dict:
 
     ``q = auto`` is the first q from 0 whose paving is not proven empty, which is exactly what
     :func:`localize` with ``q="auto"`` returns (checked by the tests); the fixed-q pavings it
-    passes on the way are reused, so a trial costs the pavings it needs once.
+    passes on the way are reused, so a trial costs the pavings it needs once; within
+    :func:`shared_counts` the pavings at different q also share their boxes' sonar counts.
     """
     sonars = case["sonars"]
     cache: dict[int, object] = {}
@@ -125,10 +127,11 @@ def _pavings(case: dict, eps: float) -> dict:
             cache[q] = localize(case["world"], sonars, case["ranges"], X0, eps, q=q)
         return cache[q]
 
-    out = {"q = 0": paving(0)}
-    out["q = auto"] = next(paving(q) for q in range(len(sonars) + 1) if not paving(q).is_empty)
-    if _fixed_q_runs(len(sonars)):
-        out[f"q = {Q_FIXED}"] = paving(Q_FIXED)
+    with shared_counts():
+        out = {"q = 0": paving(0)}
+        out["q = auto"] = next(paving(q) for q in range(len(sonars) + 1) if not paving(q).is_empty)
+        if _fixed_q_runs(len(sonars)):
+            out[f"q = {Q_FIXED}"] = paving(Q_FIXED)
     return out
 
 

@@ -27,6 +27,8 @@ the model contract of :mod:`optbound.localization`, :func:`localize` is also
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -504,20 +506,49 @@ class SonarPaving(Paving):
         return tuple(tuple(np.flatnonzero(row).tolist()) for row in seen)
 
 
-_LAST_TESTS: list = []  # [(inputs, tests)] of the last belt :func:`localize` paved
+_SHARED: list[dict] = []  # one {inputs: tests} per open :func:`shared_counts` block
 
 
-def _reused_tests(world: np.ndarray, belt: list[Sonar], ranges, d_max: float) -> FusedTests:
-    """:func:`sonar_tests`, the same object again for the same inputs as the last call.
+@contextmanager
+def shared_counts() -> Iterator[None]:
+    """Within the block, :func:`localize` calls on the same data share their sonar tests.
 
-    Its compiled test memoises each box's sonar counts (:func:`kernel.relaxed_tri`), so
-    :func:`localize` called again on the same data at another ``q`` tests no box twice.
+    The compiled test keeps each box's sonar counts (:func:`sonar_tests`), so a call at
+    another ``q`` on the same world, belt, ranges and ``d_max`` tests no box twice. The
+    pavings are those of separate calls; only the work is shared. Outside such a block every
+    call starts afresh, so that timing repeated calls measures a full paving. The block keeps
+    the tests of the latest data only.
+
+    Examples
+    --------
+    >>> room = polygon_walls([[0, 0], [4, 0], [4, 3], [0, 3]])
+    >>> belt = [Sonar((0.0, 0.0), a, 0.2, 0.02) for a in (0.0, np.pi / 2, np.pi, -np.pi / 2)]
+    >>> ranges = simulate_ranges(room, belt, np.array([1.0, 1.0, 0.1]))
+    >>> X0 = [[0.5, 1.5], [0.5, 1.5], [-0.2, 0.4]]
+    >>> with shared_counts():
+    ...     strict = localize(room, belt, ranges, X0, 0.05, q=0)
+    ...     relaxed = localize(room, belt, ranges, X0, 0.05, q=1)
+    >>> bool(strict.volume_bounds()[1] <= relaxed.volume_bounds()[1])
+    True
     """
+    _SHARED.append({})
+    try:
+        yield
+    finally:
+        _SHARED.pop()
+
+
+def _tests_for(world: np.ndarray, belt: list[Sonar], ranges, d_max: float) -> FusedTests:
+    """:func:`sonar_tests`, shared with earlier calls on the same data in :func:`shared_counts`."""
+    if not _SHARED:
+        return sonar_tests(world, belt, ranges, d_max)
+    shared = _SHARED[-1]
     inputs = (world.tobytes(), world.shape, tuple(belt), measurement_box(belt, ranges).tobytes())
     inputs += (d_max,)
-    if not _LAST_TESTS or _LAST_TESTS[0][0] != inputs:
-        _LAST_TESTS[:] = [(inputs, sonar_tests(world, belt, ranges, d_max))]
-    return _LAST_TESTS[0][1]
+    if inputs not in shared:
+        shared.clear()
+        shared[inputs] = sonar_tests(world, belt, ranges, d_max)
+    return shared[inputs]
 
 
 def _merge_across_seam(parts: list[Paving], X0: Box) -> list[Paving]:
@@ -656,7 +687,7 @@ def localize(
     world = g.as_segments(world)
     belt = _belt(sonars)
     d_max = _d_max(d_max)
-    tests = _reused_tests(world, belt, ranges, d_max)
+    tests = _tests_for(world, belt, ranges, d_max)
     if prior is not None and not callable(prior):
         raise TypeError(f"prior must be a test callable, got {type(prior).__name__}")
     contractors = sonar_contractors(world, belt, ranges, d_max) if contract else None
@@ -769,6 +800,7 @@ __all__ = [
     "measurement_box",
     "polygon_walls",
     "range_inclusion",
+    "shared_counts",
     "simulate_ranges",
     "sonar_contractors",
     "sonar_tests",

@@ -11,6 +11,7 @@ from optbound.localization.sonar import (
     Sonar,
     localize,
     range_inclusion,
+    shared_counts,
     simulate_ranges,
     sonar_tests,
 )
@@ -95,18 +96,20 @@ def test_localize_paves_as_the_interval_layer():
     assert ours.contains(truth)
 
 
-def test_localize_at_another_q_resumes_the_counts_and_paves_as_a_fresh_run():
-    """The second call reuses the first's tests (their per-box sonar counts), same boxes."""
+def test_shared_counts_resume_at_another_q_and_pave_as_a_fresh_run():
+    """In shared_counts the second call reuses the first's tests (per-box counts), same boxes."""
     rng = np.random.default_rng(6)
     belt = rooms.belt_sonars(8)
     truth = inside_pose(rng, rooms.BELT_ROOM)
     d = noisy(rng, simulate_ranges(rooms.BELT_ROOM, belt, truth), belt)
     d[3] = 1.0
     X0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
-    localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=0)
-    tests = sonar._LAST_TESTS[0][1]
-    ours = localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=1)
-    assert sonar._LAST_TESTS[0][1] is tests
+    with shared_counts():
+        localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=0)
+        (tests,) = sonar._SHARED[-1].values()
+        ours = localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=1)
+        assert list(sonar._SHARED[-1].values()) == [tests]
+    assert not sonar._SHARED  # outside the block every call starts afresh
     box, _ = sonar._initial_box(X0)
     plain = list(sonar_tests(rooms.BELT_ROOM, belt, d))
     ref = relaxed_paving(plain, 1, box, 0.3, defer_below=sonar.DEFER_BELOW)
