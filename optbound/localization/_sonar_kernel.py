@@ -269,18 +269,19 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
     already decide it is not tested again. The verdicts are those of a fresh evaluation
     (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes.
     """
-    t = params.shape[0]
-    boxes = np.stack([x.lo, x.hi, y.lo, y.hi, theta.lo, theta.hi], axis=1)
-    keys = boxes.view(np.dtype((np.void, boxes.itemsize * 6))).ravel().tolist()
+    t, m = params.shape[0], len(x.lo)
+    if memo is not None:
+        boxes = np.stack([x.lo, x.hi, y.lo, y.hi, theta.lo, theta.hi], axis=1)
+        keys = boxes.view(np.dtype((np.void, boxes.itemsize * 6))).ravel().tolist()
     if memo:
         state = np.array([memo.get(key, _NEW) for key in keys], dtype=np.int64).reshape(-1, 3)
     else:
-        state = np.zeros((len(keys), 3), dtype=np.int64)
-    out = np.empty(len(keys), dtype=np.int8)
+        state = np.zeros((m, 3), dtype=np.int64)
+    out = np.empty(m, dtype=np.int8)
     _pending(state, t, q, out)
     todo = np.flatnonzero(out < 0)
     if todo.size:
-        sub = todo if todo.size < len(keys) else slice(None)
+        sub = todo if todo.size < m else slice(None)
         poses = pose_table(params, x[sub], y[sub], theta[sub])
         part, verdicts = state[todo], np.empty(todo.size, dtype=np.int8)
         _relaxed(poses, world_table, far, Y[:, 0].copy(), Y[:, 1].copy(), q, part, verdicts)

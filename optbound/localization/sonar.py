@@ -267,16 +267,18 @@ def _initial_box(X0) -> tuple[np.ndarray, bool]:
     return np.stack([lo, hi], axis=1), bool(full)
 
 
-def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
+def sonar_tests(
+    world, sonars, ranges, d_max: float = D_MAX, *, keep_counts: bool = False
+) -> FusedTests:
     """One three-valued SIVIA test per sonar: ``f_i(q) in [d_i (1 -+ alpha_i)]``.
 
     Each test evaluates :func:`geometry.nearest_in_cone` with the interval layer. The list
     also carries their compiled q-relaxed conjunction (:class:`~optbound.interval.relaxed.
     FusedTests`), which :func:`~optbound.interval.relaxed_test` uses on SIVIA's boxes: one
     compiled pass over the boxes that stops, per box, at the first sonar that decides it
-    [KJWM00]. It keeps each box's sonar counts, so the same box tested again at another
-    ``q`` (``q = "auto"``) resumes where it stopped (same verdicts as a fresh evaluation).
-    ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
+    [KJWM00]. With ``keep_counts`` it keeps each box's sonar counts, so the same box tested
+    again at another ``q`` (``q = "auto"``) resumes where it stopped (same verdicts as a
+    fresh evaluation). ``list(sonar_tests(...))`` drops it (the plain, lazy numpy evaluation).
 
     Parameters
     ----------
@@ -288,6 +290,9 @@ def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
         Positive measured ranges, one per sonar.
     d_max : float
         Range returned when no reflecting face is in the cone.
+    keep_counts : bool
+        Memoise each tested box's sonar counts for the tests at other ``q`` (worth it when
+        the same boxes are tested at several ``q``; each kept box costs about 150 bytes).
 
     Returns
     -------
@@ -313,7 +318,7 @@ def sonar_tests(world, sonars, ranges, d_max: float = D_MAX) -> FusedTests:
         return constraint(f, Y[i : i + 1])
 
     walls, params = kernel.wall_table(world), _param_table(belt)
-    memo: dict = {}  # each box's sonar counts, shared by every q (kernel.relaxed_tri)
+    memo = {} if keep_counts else None  # each box's sonar counts, for every q
 
     def fused(q: int):
         def test(x, y, theta):
@@ -538,16 +543,22 @@ def shared_counts() -> Iterator[None]:
         _SHARED.pop()
 
 
-def _tests_for(world: np.ndarray, belt: list[Sonar], ranges, d_max: float) -> FusedTests:
-    """:func:`sonar_tests`, shared with earlier calls on the same data in :func:`shared_counts`."""
+def _tests_for(
+    world: np.ndarray, belt: list[Sonar], ranges, d_max: float, several_q: bool
+) -> FusedTests:
+    """:func:`sonar_tests`, shared with earlier calls on the same data in :func:`shared_counts`.
+
+    They keep their boxes' counts when they will be used at several ``q`` (``q = "auto"``,
+    or in a :func:`shared_counts` block).
+    """
     if not _SHARED:
-        return sonar_tests(world, belt, ranges, d_max)
+        return sonar_tests(world, belt, ranges, d_max, keep_counts=several_q)
     shared = _SHARED[-1]
     inputs = (world.tobytes(), world.shape, tuple(belt), measurement_box(belt, ranges).tobytes())
     inputs += (d_max,)
     if inputs not in shared:
         shared.clear()
-        shared[inputs] = sonar_tests(world, belt, ranges, d_max)
+        shared[inputs] = sonar_tests(world, belt, ranges, d_max, keep_counts=True)
     return shared[inputs]
 
 
@@ -687,7 +698,7 @@ def localize(
     world = g.as_segments(world)
     belt = _belt(sonars)
     d_max = _d_max(d_max)
-    tests = _tests_for(world, belt, ranges, d_max)
+    tests = _tests_for(world, belt, ranges, d_max, several_q=isinstance(q, str))
     if prior is not None and not callable(prior):
         raise TypeError(f"prior must be a test callable, got {type(prior).__name__}")
     contractors = sonar_contractors(world, belt, ranges, d_max) if contract else None

@@ -69,14 +69,15 @@ def test_fused_relaxed_test_equals_the_plain_one(seed):
     truth = inside_pose(rng, room)
     d = noisy(rng, simulate_ranges(world, belt, truth), belt)
     d[rng.integers(6)] = rng.uniform(0.5, 8.0)
-    tests = sonar_tests(world, belt, d)
-    assert isinstance(tests, FusedTests) and len(tests) == 6
     boxes = _boxes(rng, 500)
     boxes[:100] = truth[:, None] + np.array([-1.0, 1.0]) * rng.uniform(0, 0.3, (100, 3, 1))
     coords = [Interval(boxes[:, k, 0], boxes[:, k, 1]) for k in range(3)]
-    for q in range(7):
-        fused, plain = relaxed_test(tests, q)(*coords), relaxed_test(list(tests), q)(*coords)
-        assert np.array_equal(fused, plain)
+    for keep_counts in (False, True):  # with kept counts, every q after the first resumes
+        tests = sonar_tests(world, belt, d, keep_counts=keep_counts)
+        assert isinstance(tests, FusedTests) and len(tests) == 6
+        for q in range(7):
+            fused, plain = relaxed_test(tests, q)(*coords), relaxed_test(list(tests), q)(*coords)
+            assert np.array_equal(fused, plain)
 
 
 def test_localize_paves_as_the_interval_layer():
