@@ -23,7 +23,7 @@ ATTACHMENT_DIR = "papers"
 #: Rough seconds of one quick script on one core, warm numba cache, its imports included:
 #: the longest-first scheduler starts the long ones first. Scripts not listed: DEFAULT_COST.
 QUICK_COST = {
-    "kjwm00_outliers": 11.0,
+    "kjwm00_outliers": 10.0,
     "glh12_visibility": 13.6,
     "alamo05_linear": 13.0,
     "bh_relative_bearing": 3.4,
