@@ -517,11 +517,11 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
                     t[MARGIN + k] = -1.0
 
 
-@njit(cache=True, error_model="numpy")
-def workspace(n):
+def workspace(n: int) -> tuple:
     """Scratch of one thread: lane vectors (8, n, W), lane matrices (3, n, n, W), the per-lane
     scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
-    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
+    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,)). Made in
+    Python (once per thread and dimension, ``threads.workspace``), not compiled."""
     return (
         np.zeros((8, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
         np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
