@@ -419,13 +419,6 @@ def p_xy_psi(C1, C2, planar, heading, p_trace):
     return (1.0 - best) / best
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
-def _validate_block(c, C, L, m, code, scratch):
-    """``check_ellipsoids`` compiled once (called for both summands); scratch is
-    (CHECK_ROWS W,)."""
-    check_ellipsoids(c, C, L, m, code, scratch)
-
-
 @njit(cache=True, error_model="numpy", inline="always")
 def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
     """The certified sums of the m <= W instances of a block (lane k = instance k of the
@@ -440,8 +433,8 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
     load_matrices(C1, m, C1s)
     load_vectors(c2, m, c2s)
     load_matrices(C2, m, C2s)
-    _validate_block(c1s, C1s, L1, m, codes[0], check)
-    _validate_block(c2s, C2s, L2, m, codes[1], check)
+    check_ellipsoids(c1s, C1s, L1, m, codes[0], check)
+    check_ellipsoids(c2s, C2s, L2, m, codes[1], check)
     code1, code2 = codes
     for k in range(m):
         c = code1[k]
@@ -534,6 +527,7 @@ def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
     """:func:`sum_blocks` with the calling thread's work space (:func:`thread_work`): the
     entry point of both :func:`minkowski_sum` (a batch of one: the same compiled code, so
     single and batched results agree bitwise) and :func:`minkowski_sum_batch`; both pass
-    their inputs read-only, so that numba compiles it once. Returns the first instance with a non-zero code, or -1."""
+    their inputs read-only, so that numba compiles it once. Returns the first instance with a
+    non-zero code, or -1."""
     wk = thread_work(c1.shape[1])
     return sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)
