@@ -90,7 +90,7 @@ GROUPS: dict[str, tuple[float, Callable[[], None], str]] = {
     "minkowski": (30.0, _minkowski, "optbound.analytic._kernels.minkowski_kernel:sum_blocks"),
     "optimal": (22.0, _optimal, "optbound.optimal.khachiyan:_iterate"),
     "strip": (20.0, _strip, "optbound.analytic._kernels.strip_kernel:fuse_range"),
-    "reference": (6.0, _reference, "optbound.bench.analytic_reference:minkowski_range"),
+    "reference": (6.0, _reference, "optbound.bench.analytic_reference:minkowski_blocks"),
 }
 
 
