@@ -1,5 +1,6 @@
 """The cold-cache warm-up: which groups it finds uncompiled, and that it never stops a run."""
 
+import importlib
 import json
 import os
 import subprocess
@@ -35,3 +36,21 @@ def test_compile_cold_runs_each_cold_group_once_and_reports_failures(monkeypatch
     assert done.keys() == {"ok", "bad"} and isinstance(done["ok"], float)
     assert done["bad"] == "ValueError: no solver"
     assert warmup.compile_cold(1) == {}  # one process: nothing to split
+
+
+def test_groups_probe_distinct_cached_kernels():
+    """Each group names real cached kernels, and no kernel module is probed by two groups (the
+    groups are disjoint: one process compiles each kernel). Nothing is compiled here."""
+    from numba.core.caching import FunctionCache
+    from numba.core.registry import CPUDispatcher
+
+    modules = []
+    for cost, calls, probes in warmup.GROUPS.values():
+        assert cost > 0 and callable(calls) and probes
+        for probe in probes:
+            module, _, kernel = probe.partition(":")
+            dispatcher = getattr(importlib.import_module(module), kernel)
+            assert isinstance(dispatcher, CPUDispatcher)
+            assert isinstance(dispatcher._cache, FunctionCache)  # @njit(cache=True)
+            modules.append(module)
+    assert len(modules) == len(set(modules))
