@@ -25,7 +25,7 @@ from numba.core import event
 ENV = "OPTBOUND_COMPILE_NOTICE"
 #: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, in all the
 #: run's processes, as measured by ``python -m benchmarks.compile_cost --suite quick --jobs 2``
-#: (107 s on a 2-core Intel Xeon at load 4-7, of which 6.5 s for the speed benchmark's
+#: (105 s on a 2-core Intel Xeon at load 5-6, of which 6 s for the speed benchmark's
 #: compiled baseline). With two or more workers the warm-up (``optbound.bench.warmup``)
 #: spreads it over two processes, so the wall time is about half of it on an idle machine.
 COMPILE_CPU_SECONDS = 105
