@@ -244,6 +244,35 @@ def _travel(distance, shape: tuple[int, ...], allowed: str) -> np.ndarray:
     return d
 
 
+def _check_heading_error(heading_error) -> float:
+    if (
+        not isinstance(heading_error, int | float)
+        or not np.isfinite(heading_error)
+        or heading_error < 0
+    ):
+        raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
+    return heading_error
+
+
+def _displacements(d: np.ndarray, th: np.ndarray, heading_error: float):
+    """Interval ``d (cos θ, sin θ)`` with ``θ ∈ [th - δ, th + δ]``, element by element.
+
+    ``d``: travel intervals of shape ``th.shape + (2,)``. The result does not depend on the
+    boxes, so :func:`track` evaluates it for all its steps in one call (the interval
+    operations are elementwise: the same bits as step by step).
+    """
+    theta = Interval(th) + Interval(-heading_error, heading_error)
+    step = Interval(d[..., 0], d[..., 1])
+    return step * np.cos(theta), step * np.sin(theta)
+
+
+def _moved(b: np.ndarray, dx: Interval, dy: Interval) -> np.ndarray:
+    """The boxes ``b`` (m, 2, 2) shifted by the displacement intervals ``dx``, ``dy`` (m,)."""
+    x = Interval(b[:, 0, 0], b[:, 0, 1]) + dx
+    yy = Interval(b[:, 1, 0], b[:, 1, 1]) + dy
+    return np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+
+
 def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     """Interval odometry with a compass [GLH12, Alg. 1, l. 3]: ``x + d (cos θ, sin θ)``.
 
@@ -278,17 +307,7 @@ def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     th = np.asarray(heading, dtype=float)
     if th.shape != (m,) or not np.all(np.isfinite(th)):
         raise ValueError(f"heading must be ({m},) finite readings")
-    if (
-        not isinstance(heading_error, int | float)
-        or not np.isfinite(heading_error)
-        or heading_error < 0
-    ):
-        raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
-    theta = Interval(th) + Interval(-heading_error, heading_error)
-    step = Interval(d[:, 0], d[:, 1])
-    x = Interval(b[:, 0, 0], b[:, 0, 1]) + step * np.cos(theta)
-    yy = Interval(b[:, 1, 0], b[:, 1, 1]) + step * np.sin(theta)
-    return np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+    return _moved(b, *_displacements(d, th, _check_heading_error(heading_error)))
 
 
 def track(
@@ -389,10 +408,13 @@ def track(
     dist = _travel(
         dist[:, None] if dist.ndim == 2 else dist, (steps, m), "(2,), (K, 2) or (K, m, 2)"
     )
+    if not np.all(np.isfinite(th)):
+        raise ValueError(f"headings must be ({steps}, {m}) finite readings")
+    dx, dy = _displacements(dist, th, _check_heading_error(heading_error))
     out = np.empty((steps + 1, m, 2, 2))
     out[0] = b
     for k in range(steps):
-        cur = odometry(out[k], dist[k], th[k], heading_error)
+        cur = _moved(out[k], dx[k], dy[k])
         if room is not None:
             cur[..., 0] = np.maximum(cur[..., 0], room[:, 0])
             cur[..., 1] = np.minimum(cur[..., 1], room[:, 1])
@@ -422,24 +444,27 @@ def measure(points, obstacles) -> np.ndarray:
     Parameters
     ----------
     points
-        (m, 2) robot positions.
+        (m, 2) robot positions, or (K, m, 2): K teams (e.g. the steps of a run) measured in
+        one call.
     obstacles
         As for :func:`visibility_test` (typically ``Environment.exact``).
 
     Returns
     -------
-    (m, m) bool array
+    (m, m) or (K, m, m) bool array
         Symmetric, True on the diagonal.
     """
     pts = real_array("points", points, "an (m, 2) array")
-    if pts.ndim != 2 or pts.shape[1] != 2:
-        raise ValueError(f"points must have shape (m, 2), got {pts.shape}")
-    m = len(pts)
+    if pts.ndim not in (2, 3) or pts.shape[-1] != 2:
+        raise ValueError(f"points must have shape (m, 2) or (K, m, 2), got {pts.shape}")
+    m = pts.shape[-2]
     i, j = np.triu_indices(m, 1)
-    boxes = np.repeat(pts[:, :, None], 2, axis=2)
-    seen = visibility_test(boxes[i], boxes[j], obstacles) == Tri.TRUE
-    y = np.eye(m, dtype=bool)
-    y[i, j] = y[j, i] = seen
+    boxes = np.repeat(pts[..., None], 2, axis=-1)
+    b1, b2 = boxes[..., i, :, :].reshape(-1, 2, 2), boxes[..., j, :, :].reshape(-1, 2, 2)
+    seen = visibility_test(b1, b2, obstacles) == Tri.TRUE
+    y = np.zeros((*pts.shape[:-2], m, m), dtype=bool)
+    y[..., np.arange(m), np.arange(m)] = True
+    y[..., i, j] = y[..., j, i] = seen.reshape(*pts.shape[:-2], len(i))
     return y
 
 
