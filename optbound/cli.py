@@ -327,7 +327,7 @@ def _bench(args: argparse.Namespace) -> int:
         from optbound.bench.user_estimators import run_estimators
 
         results["estimators"] = run_estimators(estimators, args.suite, args.seed, args.family)
-    path = _write(results, out)
+    path = _write(results, out, jobs=args.jobs)
     _print_summary(results, path)
     if readme is not None and report.update_readme(readme, results):
         print(f"Headline numbers written into {readme}")
@@ -354,7 +354,7 @@ def _repro(args: argparse.Namespace) -> int:
         command=command,
         folder=args.folder,
     )
-    path = _write(results, out)
+    path = _write(results, out, jobs=args.jobs)
     _print_summary(results, path)
     return 0
 
@@ -411,14 +411,15 @@ def _run(args: argparse.Namespace, suite: str, seed: int, **selection) -> dict:
     return results
 
 
-def _write(results: dict, out: Path, save: bool = True) -> Path:
-    """Write the report (and, if ``save``, results.json); a filesystem error is a CommandError."""
+def _write(results: dict, out: Path, save: bool = True, jobs: int = 1) -> Path:
+    """Write the report (and, if ``save``, results.json), drawing its figures in ``jobs``
+    processes; a filesystem error is a CommandError."""
     from optbound import report
 
     try:
         if save:
             report.save_results(results, out)
-        return report.write_report(results, out)
+        return report.write_report(results, out, jobs=jobs)
     except OSError as exc:
         raise CommandError(f"cannot write the report into {str(out)!r}: {exc}") from None
 
@@ -430,7 +431,8 @@ def _report(args: argparse.Namespace) -> int:
         results = report.load_results(args.dir)
     except ValueError as exc:
         args.subparser.error(str(exc))
-    path = _write(results, args.dir, save=False)
+    # The figures are drawn over as many processes as the run had.
+    path = _write(results, args.dir, save=False, jobs=results["meta"].get("jobs", 1))
     _print_summary(results, path)
     return 0
 

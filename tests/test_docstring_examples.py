@@ -56,6 +56,7 @@ ENTRY_POINTS = [
     "optbound.scenarios.office:office_map",
     "optbound.scenarios.office:simulate",
     "optbound.report.document:write_report",
+    "optbound.report.drawing:Drawings",
     "optbound.report.results:save_results",
     "optbound.report.readme:headline_refusal",
     "optbound.report.summary:ratio_stats",

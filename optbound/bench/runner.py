@@ -31,7 +31,6 @@ import warnings
 from collections.abc import Callable
 from concurrent.futures.process import BrokenProcessPool
 from datetime import datetime, timezone
-from pathlib import Path
 
 import numpy as np
 from threadpoolctl import threadpool_limits
@@ -44,6 +43,7 @@ from optbound.bench.family import SUITES, Family
 from optbound.bench.progress import Progress
 from optbound.bench.registry import families as registered_families
 from optbound.bench.run_folder import RunFolder
+from optbound.bench.target import processor_name
 from optbound.report.results import SCHEMA
 
 
@@ -173,7 +173,7 @@ def run_suite(
         "python": platform.python_version(),
         "numpy": np.__version__,
         "machine": f"{platform.system()} {platform.machine()}",
-        "processor": _processor(),
+        "processor": processor_name(),
     }
     return {"schema": SCHEMA, "meta": meta, "families": out}
 
@@ -184,17 +184,6 @@ def _load_average() -> list[float] | None:
         return [round(x, 2) for x in os.getloadavg()]
     except (AttributeError, OSError):
         return None
-
-
-def _processor() -> str:
-    """The CPU model name (from /proc/cpuinfo on Linux), else ``platform.processor()``."""
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
 def _family_entry(fam: Family) -> dict:

@@ -18,6 +18,12 @@ least 20 ms (a sustained rate):
 ``python -m optbound.bench.speed_analytic [--suite quick]`` prints the ratio table, the JIT
 warm-up (a fresh compile in a subprocess with an empty cache) and the margin distribution;
 ``--phases`` the strip rate at B = 1e3 over 20 s (see :func:`phases`).
+
+Sampling in ``optbound bench`` (:data:`SAMPLING`): the full suite takes the median of 7
+alternating rounds, each sample >= 20 ms of back-to-back calls (a batch of 1e5 or more is one
+call), and each SDP time is the best of 3 batches of >= 50 ms; the quick and tiny suites 5
+rounds of >= 10 ms samples and SDP batches of >= 20 ms (one or two solves). Every task notes
+the instruction set numba compiled for (:func:`optbound.bench.target.numba_target`).
 """
 
 from __future__ import annotations
@@ -45,6 +51,13 @@ BATCHES = {
     "full": (10**3, 10**4, 10**5, 10**6),
 }
 REPEATS = 7
+SAMPLE_SECONDS = 0.02
+#: Per suite: alternating rounds, seconds per sample, seconds per batch of SDP solves.
+SAMPLING = {
+    "tiny": {"rounds": 5, "sample": 0.01, "sdp_batch": 0.02},
+    "quick": {"rounds": 5, "sample": 0.01, "sdp_batch": 0.02},
+    "full": {"rounds": REPEATS, "sample": SAMPLE_SECONDS, "sdp_batch": 0.05},
+}
 
 
 def tasks(suite: str, seed: int) -> list[dict]:
@@ -60,12 +73,13 @@ def tasks(suite: str, seed: int) -> list[dict]:
     Returns
     -------
     list of dict
-        Two JSON-able tasks, with their ``"seed"``, ``"what"`` and ``"batches"``.
+        Two JSON-able tasks, with their ``"seed"``, ``"what"``, ``"batches"`` and the
+        suite's sampling (:data:`SAMPLING`).
     """
     s1, s2 = task_seeds(seed, NAME, 2)
     return [
-        {"seed": s1, "what": "strip", "batches": list(BATCHES[suite])},
-        {"seed": s2, "what": "minkowski", "batches": list(BATCHES[suite])},
+        {"seed": s1, "what": "strip", "batches": list(BATCHES[suite]), **SAMPLING[suite]},
+        {"seed": s2, "what": "minkowski", "batches": list(BATCHES[suite]), **SAMPLING[suite]},
     ]
 
 
@@ -158,8 +172,8 @@ def alternating(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
     return t_ours, t_ref
 
 
-def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
-    """Time functions in turn, each sample the mean over back-to-back calls filling >= 20 ms.
+def interleaved_calls(*fns, repeat: int = REPEATS, sample: float = SAMPLE_SECONDS) -> list[float]:
+    """Time functions in turn, each sample the mean over back-to-back calls filling >= ``sample`` s.
 
     As :func:`interleaved`, but results are dropped at once and the number of calls is set
     by the first function: a sustained rate, not the latency of one call after idling.
@@ -170,6 +184,8 @@ def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
         The calls to time, without arguments.
     repeat : int
         Rounds.
+    sample : float
+        Minimum seconds of a sample of the first function.
 
     Returns
     -------
@@ -177,7 +193,7 @@ def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
         Median seconds per call of each function, in order.
     """
     number = 1
-    while per_call(fns[0], repeat=1, min_time=0.0) * number < 0.02:
+    while per_call(fns[0], repeat=1, min_time=0.0) * number < sample:
         number *= 2
 
     def looped(fn):
@@ -190,7 +206,9 @@ def interleaved_calls(*fns, repeat: int = REPEATS) -> list[float]:
     return [t / number for t in interleaved(*map(looped, fns), repeat=repeat)]
 
 
-def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, float]:
+def alternating_calls(
+    ours, reference, repeat: int = REPEATS, sample: float = SAMPLE_SECONDS
+) -> tuple[float, float]:
     """Time ``ours`` and ``reference`` with :func:`interleaved_calls`.
 
     Parameters
@@ -199,13 +217,15 @@ def alternating_calls(ours, reference, repeat: int = REPEATS) -> tuple[float, fl
         The calls to time, without arguments.
     repeat : int
         Rounds.
+    sample : float
+        Minimum seconds per sample.
 
     Returns
     -------
     tuple of float
         Median seconds per call of ``ours`` and of ``reference``.
     """
-    t_ours, t_ref = interleaved_calls(ours, reference, repeat=repeat)
+    t_ours, t_ref = interleaved_calls(ours, reference, repeat=repeat, sample=sample)
     return t_ours, t_ref
 
 
@@ -264,20 +284,22 @@ def _one_call_records(what: str, ours: float, ref: float) -> list[dict]:
     ]  # fmt: skip
 
 
-def _timings(one, ours, reference, inputs, batches) -> dict:
+def _timings(one, ours, reference, inputs, batches, sampling) -> dict:
     """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
     batch size, ``ours(*inputs[:count])`` against ``reference(*inputs[:count])`` (both
-    return new arrays)."""
-    out = {"one": alternating_calls(*one)}
+    return new arrays); ``sampling`` the keyword arguments of :func:`alternating_calls`."""
+    out = {"one": alternating_calls(*one, **sampling)}
     for count in batches:
         args = tuple(x[:count] for x in inputs)
         out[count] = alternating_calls(
-            lambda args=args: ours(*args), lambda args=args: reference(*args)
+            lambda args=args: ours(*args), lambda args=args: reference(*args), **sampling
         )
     return out
 
 
-def strip_timings(rng: np.random.Generator, batches) -> dict:
+def strip_timings(
+    rng: np.random.Generator, batches, repeat: int = REPEATS, sample: float = SAMPLE_SECONDS
+) -> dict:
     """Time our strip update against the plain numba reference: one call and batches.
 
     Parameters
@@ -286,6 +308,8 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
         Draws the instances (:func:`batch_instances`).
     batches : sequence of int
         Batch sizes.
+    repeat, sample
+        Rounds and seconds per sample (:func:`alternating_calls`).
 
     Returns
     -------
@@ -303,10 +327,15 @@ def strip_timings(rng: np.random.Generator, batches) -> dict:
         lambda: analytic.intersect_strip(E, S),
         lambda: ref.strip_range(c[:1], C[:1], a[:1], b[:1], oc, oC, 0, 1),
     )
-    return _timings(one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches)
+    sampling = {"repeat": repeat, "sample": sample}
+    return _timings(
+        one, analytic.intersect_strip_batch, ref.strip_batch, (c, C, a, b), batches, sampling
+    )
 
 
-def minkowski_timings(rng: np.random.Generator, batches) -> dict:
+def minkowski_timings(
+    rng: np.random.Generator, batches, repeat: int = REPEATS, sample: float = SAMPLE_SECONDS
+) -> dict:
     """Time the volume-optimal Minkowski sum as :func:`strip_timings` does the strip.
 
     Parameters
@@ -315,6 +344,8 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
         Draws the instances (:func:`batch_instances`).
     batches : sequence of int
         Batch sizes.
+    repeat, sample
+        Rounds and seconds per sample (:func:`alternating_calls`).
 
     Returns
     -------
@@ -334,7 +365,10 @@ def minkowski_timings(rng: np.random.Generator, batches) -> dict:
         lambda: ref.minkowski_range(c1[:1], C1[:1], c2[:1], C2[:1], oc, oC, 0, 1),
     )
     inputs = (c1, C1, c2, C2)
-    return _timings(one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches)
+    sampling = {"repeat": repeat, "sample": sample}
+    return _timings(
+        one, analytic.minkowski_sum_batch, ref.minkowski_batch, inputs, batches, sampling
+    )
 
 
 STRIP_CRITERIA = (
@@ -408,10 +442,13 @@ def run_strip(task: dict) -> list[dict]:
     rng = np.random.default_rng(task["seed"])
     E = random_ellipsoid(rng, DIM, 1e2)
     S = random_strip(rng, E, "narrow")
+    sampling = {**SAMPLING["full"], **task}
     sdp = per_call(
-        lambda: optimal.outer_ellipsoid(intersection=[E, S], objective="volume"), repeat=3
+        lambda: optimal.outer_ellipsoid(intersection=[E, S], objective="volume"),
+        repeat=3,
+        min_time=sampling["sdp_batch"],
     )
-    timings = strip_timings(rng, task["batches"])
+    timings = strip_timings(rng, task["batches"], sampling["rounds"], sampling["sample"])
     out = _one_call_records("strip update", *timings.pop("one"))
     out.append(sdp_record("SDP outer_ellipsoid, one solve", sdp, out[-1]))
     for count, (ours, ref) in timings.items():
@@ -436,8 +473,13 @@ def run_minkowski(task: dict) -> list[dict]:
 
     rng = np.random.default_rng(task["seed"])
     E1, E2 = random_ellipsoid(rng, DIM, 1e2), random_ellipsoid(rng, DIM, 1e2, scale=0.1)
-    sdp = per_call(lambda: optimal.minkowski_outer(E1, E2, objective="volume"), repeat=3)
-    timings = minkowski_timings(rng, task["batches"])
+    sampling = {**SAMPLING["full"], **task}
+    sdp = per_call(
+        lambda: optimal.minkowski_outer(E1, E2, objective="volume"),
+        repeat=3,
+        min_time=sampling["sdp_batch"],
+    )
+    timings = minkowski_timings(rng, task["batches"], sampling["rounds"], sampling["sample"])
     out = _one_call_records("Minkowski sum", *timings.pop("one"))
     out.append(sdp_record("SDP minkowski_outer, one solve", sdp, out[-1]))
     for count, (ours, ref) in timings.items():
@@ -485,10 +527,10 @@ def run(task: dict) -> dict:
     Returns
     -------
     dict
-        ``{"records": [...]}``.
+        ``{"records": [...], "notes": [...]}``: the note names the instruction set.
     """
     runner = run_strip if task["what"] == "strip" else run_minkowski
-    return {"records": runner(task)}
+    return {"records": runner(task), "notes": [f"Compiled by numba for {numba_target()}."]}
 
 
 def _margin_row(operation: str, cond: float, margin: np.ndarray, shapes: np.ndarray) -> tuple:

@@ -17,6 +17,14 @@ Run: ``python -m optbound.bench.speed_hs96 [--full]``. As the family ``speed_hs9
 ``associate``; quick adds the tracker on 10 scans; full the tracker on 40 scans and both
 office reproductions. Every part returns :func:`optbound.bench.timing.speed_record` s whose
 ``ratio`` is reference time / ours (or target / ours where the target is the reference).
+
+Sampling: each per-call time is the median over batches of back-to-back calls
+(:func:`optbound.bench.timing.median_per_call`). Full suite: ``linear_position`` and lstsq 7
+batches of >= 50 ms each, the tracker's bare calls 7 of >= 50 ms, the tracker runs 3 of one
+run each. Quick (and tiny) suite: 5 batches of >= 20 ms for ``linear_position`` and lstsq,
+3 of >= 20 ms for the bare calls (a microsecond call still averages over thousands of calls
+per batch). ``associate``: 3 batches per pose, 7 poses, of >= 20 ms (full, tiny) or >= 10 ms
+(quick; a call takes about a millisecond).
 """
 
 from __future__ import annotations
@@ -33,7 +41,7 @@ import numpy as np
 
 from optbound import analytic
 from optbound.bench.family import Family
-from optbound.bench.timing import speed_record
+from optbound.bench.timing import median_per_call, speed_record
 from optbound.localization.association import associate
 from optbound.localization.landmark_map import LandmarkMap
 from optbound.localization.landmarks import linear_position
@@ -50,37 +58,19 @@ LINEAR_TARGET, ASSOCIATE_TARGET, REALTIME_TARGET = 50e-6, 0.1, 10.0
 REPRO_TARGETS = {True: 20.0, False: 120.0}  # quick / full office reproduction, seconds
 
 
-def median_per_call(fn, repeat: int = REPEAT, min_time: float = 0.05) -> float:
-    """Time ``fn``: the median over ``repeat`` batches of the seconds per call.
-
-    Parameters
-    ----------
-    fn : callable
-        The call to time, without arguments.
-    repeat : int
-        Number of batches.
-    min_time : float
-        Minimum seconds per batch (the batch size doubles until reached).
-
-    Returns
-    -------
-    float
-        Median seconds per call.
-    """
-    timer = timeit.Timer(fn)
-    number = 1
-    while timer.timeit(number) < min_time:
-        number *= 2
-    return statistics.median(t / number for t in timer.repeat(repeat, number))
-
-
-def bench_linear(rng: np.random.Generator) -> list[dict]:
+def bench_linear(
+    rng: np.random.Generator, repeat: int = REPEAT, min_time: float = 0.05
+) -> list[dict]:
     """Time ``linear_position`` (N = 10 bearings) against one numpy least-squares solve.
 
     Parameters
     ----------
     rng : numpy.random.Generator
         Draws the landmarks and the reference's matrix.
+    repeat : int
+        Batches per timing (their median counts).
+    min_time : float
+        Minimum seconds per batch.
 
     Returns
     -------
@@ -91,9 +81,9 @@ def bench_linear(rng: np.random.Generator) -> list[dict]:
     L = np.column_stack([6 * np.cos(phi), 6 * np.sin(phi)])
     alphas = np.arctan2(L[:, 1] - 0.4, L[:, 0] + 0.3) - 0.2
     linear_position(L, alphas)  # compile / load the numba cache outside the timing
-    ours = median_per_call(lambda: linear_position(L, alphas))
+    ours = median_per_call(lambda: linear_position(L, alphas), repeat, min_time)
     H, z = rng.normal(size=(9, 2)), rng.normal(size=9)
-    ref = median_per_call(lambda: np.linalg.lstsq(H, z, rcond=None))
+    ref = median_per_call(lambda: np.linalg.lstsq(H, z, rcond=None), repeat, min_time)
     return [
         speed_record(NAME, "one numpy lstsq (9 x 2), reference", ref),
         speed_record(
@@ -107,13 +97,15 @@ def bench_linear(rng: np.random.Generator) -> list[dict]:
     ]
 
 
-def bench_associate(rng: np.random.Generator) -> list[dict]:
+def bench_associate(rng: np.random.Generator, min_time: float = 0.02) -> list[dict]:
     """Time ``associate`` on 8 bearings (1 false) of the office's 22 landmarks, at 7 poses.
 
     Parameters
     ----------
     rng : numpy.random.Generator
         Draws the poses, the landmarks seen, the noise.
+    min_time : float
+        Minimum seconds per batch (3 batches per pose, their median counts).
 
     Returns
     -------
@@ -145,7 +137,7 @@ def bench_associate(rng: np.random.Generator) -> list[dict]:
         )
         args = (prior, np.mod(np.r_[alphas, false], 2 * np.pi), omap, office.DELTA_ALPHA)
         result = associate(*args)
-        times.append(median_per_call(lambda a=args: associate(*a), repeat=3, min_time=0.02))
+        times.append(median_per_call(lambda a=args: associate(*a), repeat=3, min_time=min_time))
         nodes.append(result.nodes_expanded)
         unpruned = result.nodes_unpruned
         found += any(np.array_equal(a.pairs[:7], keep) for a in result.associations)
@@ -185,7 +177,7 @@ def _scans(rng, omap: LandmarkMap, n: int):
 
 
 def bench_tracker(
-    rng: np.random.Generator, n_scans: int = SCANS, repeat: int = REPEAT
+    rng: np.random.Generator, n_scans: int = SCANS, repeat: int = REPEAT, min_time: float = 0.05
 ) -> list[dict]:
     """Time tracker runs per criterion against their bare analytic calls.
 
@@ -196,7 +188,9 @@ def bench_tracker(
     n_scans : int
         Scans of all 22 landmarks per run.
     repeat : int
-        Batches per timed reference call.
+        Batches per timed reference call (their median counts).
+    min_time : float
+        Minimum seconds per batch of reference calls.
 
     Returns
     -------
@@ -230,10 +224,12 @@ def bench_tracker(
                     E, S, criterion=c, dims=(0, 1)
                 ),
                 repeat,
+                min_time,
             )
             + median_per_call(
                 lambda E=E, D=D: analytic.minkowski_sum(E, D, criterion="size_xy_psi"),
                 repeat,
+                min_time,
             )
         )
         real = len(scans) / office.SCAN_RATE
@@ -327,8 +323,12 @@ def table(records: list[dict]) -> str:
 # --------------------------------------------------------------------------- bench family
 #: Parts per suite, as (part, keyword arguments of its ``bench_*`` function).
 PARTS = {
-    "tiny": (("linear", {}), ("associate", {})),
-    "quick": (("linear", {}), ("associate", {}), ("tracker", {"n_scans": 10, "repeat": 3})),
+    "tiny": (("linear", {"repeat": 5, "min_time": 0.02}), ("associate", {})),
+    "quick": (
+        ("linear", {"repeat": 5, "min_time": 0.02}),
+        ("associate", {"min_time": 0.01}),
+        ("tracker", {"n_scans": 10, "repeat": 3, "min_time": 0.02}),
+    ),
     "full": (("linear", {}), ("associate", {}), ("tracker", {}), ("repro", {"full": True})),
 }
 COST = {"linear": 2.0, "associate": 1.0, "tracker": 3.0, "repro": 130.0}

@@ -6,6 +6,9 @@ width (8 doubles per AVX-512 register, 4 per AVX2 one), so every speed figure na
 
 from __future__ import annotations
 
+import platform
+from pathlib import Path
+
 #: The vector extensions reported, narrowest first.
 VECTOR_FEATURES = ("sse4.2", "avx", "avx2", "fma", "avx512f", "avx512vl")
 _NAMES = {"avx512f": "AVX-512", "avx2": "AVX2", "avx": "AVX", "sse4.2": "SSE4.2"}
@@ -32,3 +35,21 @@ def numba_target() -> str:
     present = [f for f in VECTOR_FEATURES if features.get(f)]
     widest = next((_NAMES[f] for f in reversed(present) if f in _NAMES), "no SIMD extension")
     return f"host CPU {host}, {widest} ({', '.join(present)})"
+
+
+def processor_name() -> str:
+    """Name the CPU model the run is on.
+
+    Returns
+    -------
+    str
+        The model name of ``/proc/cpuinfo`` on Linux, else ``platform.processor()``, else
+        ``"unknown"``.
+    """
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"

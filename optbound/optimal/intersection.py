@@ -318,8 +318,10 @@ def outer_ellipsoid(
         explain_failure(normalized, form_errors, solver, err)
 
     refuse_empty(normalized, form_errors, template.tau.value)
+    # W is the read-only Cholesky factor, or a new array for the projection: a writable copy
+    # in both cases compiles ``ellipsoid_in_x`` once.
     candidate = Ellipsoid._from_kernel(
-        *_small.ellipsoid_in_x(template.M.value, template.bt.value, center, W)
+        *_small.ellipsoid_in_x(template.M.value, template.bt.value, center, np.array(W))
     )
     tau = np.maximum(template.tau.value, 0.0)
     corner = np.zeros((n + 1, n + 1))

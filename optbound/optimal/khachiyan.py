@@ -187,10 +187,17 @@ def _iterate(
     refresh: int,
 ) -> bool:
     """Forward and away steps, or exchange steps, on ``u`` (in place) until the tolerance
-    holds; whether it did."""
+    holds; whether it did.
+
+    The products ``q_i^T z`` of a step are accumulated column by column over a transposed
+    copy of Q: the same sums in the same order as a loop per point, but every column is one
+    pass over contiguous memory that the compiler vectorises across the points.
+    """
     m, d = Q.shape
+    QT = np.ascontiguousarray(Q.T)
     X_inv = np.empty((d, d))
     w = np.empty(m)
+    along_up, along_down = np.empty(m), np.empty(m)
     for it in range(max_iter):
         if it % refresh == 0:
             _refresh(Q, u, X_inv, w)
@@ -203,7 +210,7 @@ def _iterate(
         if w[up] <= (1.0 + tol) * d and w[down] >= (1.0 - away_tol) * d:
             return True
         if not exchange:
-            X_inv = _todd_yildirim_step(Q, u, X_inv, w, up, down)
+            _todd_yildirim_step(Q, QT, u, X_inv, w, up, down, along_up)
             continue
         # Not converged, so w[up] >= d > w[down] or w[up] > d >= w[down] (sum u_i w_i = d):
         # the exchange raises det X for small delta.
@@ -219,23 +226,42 @@ def _iterate(
         u[down] = max(u[down] - delta, 0.0)
         # Sherman-Morrison twice: + delta q_up q_up^T, then - delta q_down q_down^T.
         den_up = 1.0 + delta * w[up]
-        X_inv = X_inv - delta * np.outer(z_up, z_up) / den_up
+        _rank_one(X_inv, z_up, -delta, den_up)
         z_down = X_inv @ Q[down]
         den_down = 1.0 - delta * _quad(X_inv, Q[down])
-        X_inv = X_inv + delta * np.outer(z_down, z_down) / den_down
+        _rank_one(X_inv, z_down, delta, den_down)
+        _products(QT, z_up, along_up)
+        _products(QT, z_down, along_down)
         for i in range(m):
-            a_up, a_down = 0.0, 0.0
-            for a in range(d):
-                a_up += Q[i, a] * z_up[a]
-                a_down += Q[i, a] * z_down[a]
+            a_up, a_down = along_up[i], along_down[i]
             w[i] += delta * (a_down * a_down / den_down - a_up * a_up / den_up)
     return False
 
 
 @njit(cache=True)
-def _todd_yildirim_step(Q, u, X_inv, w, up: int, down: int) -> np.ndarray:
+def _rank_one(X: np.ndarray, z: np.ndarray, factor: float, denom: float) -> None:
+    """``X + factor z z^T / denom`` in place, entry by entry as numpy's
+    ``X + factor * np.outer(z, z) / denom`` rounds it (``-factor``: the same as subtracting)."""
+    d = z.shape[0]
+    for a in range(d):
+        for b in range(d):
+            X[a, b] = X[a, b] + factor * (z[a] * z[b]) / denom
+
+
+@njit(cache=True)
+def _products(QT: np.ndarray, z: np.ndarray, out: np.ndarray) -> None:
+    """``out_i = sum_a Q[i, a] z_a``, summed over ``a`` in order, from ``QT = Q^T``."""
+    out[:] = 0.0
+    for a in range(QT.shape[0]):
+        row, za = QT[a], z[a]
+        for i in range(row.shape[0]):
+            out[i] += row[i] * za
+
+
+@njit(cache=True)
+def _todd_yildirim_step(Q, QT, u, X_inv, w, up: int, down: int, along: np.ndarray) -> None:
     """A forward step to ``up`` or an away step from ``down``, whichever violates more (in
-    place on u and w); the new ``X^{-1}``."""
+    place on u, ``X^{-1}`` and w; ``along`` is a buffer of m)."""
     m, d = Q.shape
     j = up if w[up] - d >= d - w[down] else down
     step = (w[j] - d) / (d * (w[j] - 1.0))
@@ -246,12 +272,13 @@ def _todd_yildirim_step(Q, u, X_inv, w, up: int, down: int) -> np.ndarray:
     # Sherman-Morrison for X' = (1 - s) X + s q_j q_j^T.
     z = X_inv @ Q[j]
     denom = (1.0 - step) + step * w[j]
+    _products(QT, z, along)
     for i in range(m):
-        qz = 0.0
-        for a in range(d):
-            qz += Q[i, a] * z[a]
+        qz = along[i]
         w[i] = (w[i] - step * qz * qz / denom) / (1.0 - step)
-    return (X_inv - step * np.outer(z, z) / denom) / (1.0 - step)
+    for a in range(d):
+        for b in range(d):
+            X_inv[a, b] = (X_inv[a, b] - step * (z[a] * z[b]) / denom) / (1.0 - step)
 
 
 def khachiyan_mvee(points: np.ndarray, tol: float = 1e-7, max_iter: int = 100_000) -> Ellipsoid:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from optbound.report import figures
+from optbound.report.drawing import Drawings
 from optbound.report.estimation import estimation_section
 from optbound.report.estimators import estimators_section
 from optbound.report.headline import HEADERS, headline_rows
@@ -56,7 +57,7 @@ BELOW_ONE_NOTE = (
 )
 
 
-def write_report(results: dict, out_dir: str | Path) -> Path:
+def write_report(results: dict, out_dir: str | Path, jobs: int = 1) -> Path:
     """Write report.md, the PNG figures and the CSV files of ``results`` into ``out_dir``.
 
     Only the results dict is read, so ``optbound report DIR`` can rebuild everything from
@@ -68,6 +69,9 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
         The results dict that ``optbound bench`` saves (:func:`~optbound.report.load_results`).
     out_dir : str or Path
         The output directory, created if needed.
+    jobs : int
+        Processes to draw the figures in (:class:`~optbound.report.drawing.Drawings`); the
+        files are the same for any value.
 
     Returns
     -------
@@ -95,12 +99,13 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
         markdown_table(HEADERS, headline_rows(results)),
     ]
     pictures = []
+    drawings = Drawings()
     for name, fam in results["families"].items():
         parts.append(f"## {fam['title']}")
-        parts.extend(_family_section(name, fam, out))
+        parts.extend(_family_section(name, fam, out, drawings))
         pictures.extend(fam["figures"])
     if pictures:
-        figures.instance_pictures(pictures, out / "instances_2d.png")
+        drawings.add(figures.instance_pictures, out / "instances_2d.png", figures=pictures)
         parts += [
             "## Pictures of 2-D instances",
             "The exact set is shaded grey (prior ellipse ∩ strips, on a fine grid; or the "
@@ -110,6 +115,7 @@ def write_report(results: dict, out_dir: str | Path) -> Path:
         ]
     parts += estimators_section(results)
     parts += ["## About the references", REFERENCES_NOTE]
+    drawings.draw(jobs)
     path = out / REPORT_FILE
     path.write_text("\n\n".join(parts) + "\n")
     return path
@@ -148,15 +154,15 @@ def _wall_time(meta: dict) -> str:
     )
 
 
-def _family_section(name: str, fam: dict, out: Path) -> list[str]:
+def _family_section(name: str, fam: dict, out: Path, drawings: Drawings) -> list[str]:
     if fam["status"] != "ok":
         return [f"Skipped: {fam['reason']}."]
     parts = []
     if fam["records"]:
         if fam["kind"] == "tightness":
-            parts += _tightness_section(name, fam["records"], out)
+            parts += _tightness_section(name, fam["records"], out, drawings)
         elif fam["kind"] == "recursive":
-            parts += _recursive_section(fam["records"], out)
+            parts += _recursive_section(fam["records"], out, drawings)
         elif fam["kind"] == "papers":
             parts += papers_section(fam["records"])
         elif fam["kind"] == "estimation":
@@ -175,7 +181,7 @@ def _family_section(name: str, fam: dict, out: Path) -> list[str]:
     return parts
 
 
-def _tightness_section(name: str, records: list[dict], out: Path) -> list[str]:
+def _tightness_section(name: str, records: list[dict], out: Path, drawings: Drawings) -> list[str]:
     checked = any("outside" in rec for rec in records)
     rows = []
     for (criterion, reference), recs in group(records, ("criterion", "reference")).items():
@@ -212,7 +218,12 @@ def _tightness_section(name: str, records: list[dict], out: Path) -> list[str]:
         "lowest instance",
         "SDP refused",
     ] + (["sampled points outside"] if checked else [])
-    png = figures.ratio_histograms(records, out / f"hist_{name}.png", f"{name}: ratio − 1")
+    png = drawings.add(
+        figures.ratio_histograms,
+        out / f"hist_{name}.png",
+        records=records,
+        title=f"{name}: ratio − 1",
+    )
     parts = [markdown_table(headers, rows)]
     below = headers.index("below 1")
     if any(row[below] for row in rows):
@@ -228,7 +239,7 @@ def _tightness_section(name: str, records: list[dict], out: Path) -> list[str]:
         _matrix(records, "variant"),
         "Median (max) ratio by dimension:",
         _matrix(records, "dim", prefix="n = "),
-        f"![{name} ratio histograms]({png.name})",
+        f"![{name} ratio histograms]({png})",
     ]
 
 
@@ -248,8 +259,8 @@ def _median_max(records: list[dict], field: str = "ratio") -> str:
     return f"{fmt_ratio(s['median'])} ({fmt_ratio(s['max'])})" if s["n"] else "–"
 
 
-def _recursive_section(records: list[dict], out: Path) -> list[str]:
-    png = figures.recursive_plot(records, out / "recursive.png")
+def _recursive_section(records: list[dict], out: Path, drawings: Drawings) -> list[str]:
+    png = drawings.add(figures.recursive_plot, out / "recursive.png", records=records)
     parts = [
         "Volume of the recursive analytic filter (one strip at a time, minimum-volume λ "
         "[HS96, eq. (26)]) divided by the volume of the batch SDP over the prior and all k "
@@ -274,7 +285,7 @@ def _recursive_section(records: list[dict], out: Path) -> list[str]:
                 f"of this table and of the figure's dotted lines, counted under \"no lower "
                 f'bound": {where}.'
             )
-    return [*parts, f"![recursive tightness]({png.name})"]
+    return [*parts, f"![recursive tightness]({png})"]
 
 
 def _k_table(records: list[dict], field: str) -> str:

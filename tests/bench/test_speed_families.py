@@ -5,7 +5,7 @@ import time
 import pytest
 
 from optbound.bench import sivia_codac, speed_sdp, speed_sivia
-from optbound.bench.timing import per_call
+from optbound.bench.timing import batch_times, per_call
 
 
 def test_missing_codac_becomes_a_note_not_a_failure(monkeypatch):
@@ -53,6 +53,16 @@ def test_sdp_cache_measures_clarabels_own_time():
 def test_per_call_measures_seconds_per_call():
     seconds = per_call(lambda: time.sleep(0.002), repeat=2, min_time=0.01)
     assert 0.002 <= seconds < 0.05
+
+
+def test_batch_times_counts_the_calibrating_batch_as_a_sample():
+    calls = []
+    times = batch_times(lambda: calls.append(time.sleep(0.002)), repeat=3, min_time=0.005)
+    assert len(times) == 3 and all(0.002 <= t < 0.05 for t in times)
+    # Calibration batches of 1, 2, ..., N calls (N a power of two); the one of N calls reached
+    # min_time and is the first sample, so only 2 more batches of N run: 4 N - 1 calls in all
+    # (5 N - 1 if the calibrating batch were not counted).
+    assert (len(calls) + 1) % 4 == 0 and ((len(calls) + 1) // 4).bit_count() == 1
 
 
 def test_one_analytic_call_is_measured_once_and_the_sdp_ratio_uses_it():

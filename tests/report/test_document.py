@@ -59,6 +59,15 @@ def test_rebuilding_gives_the_same_report(tmp_path):
     assert write_report(sample_results(), tmp_path).read_text() == first
 
 
+def test_figures_drawn_over_processes_are_the_same_files(tmp_path):
+    one = write_report(sample_results(), tmp_path / "one", jobs=1).parent
+    two = write_report(sample_results(), tmp_path / "two", jobs=2).parent
+    names = sorted(path.name for path in one.iterdir())
+    assert [name for name in names if name.endswith(".png")]
+    assert names == sorted(path.name for path in two.iterdir())
+    assert all((one / name).read_bytes() == (two / name).read_bytes() for name in names)
+
+
 def test_a_familys_attachments_are_shown_in_its_section(tmp_path):
     results = sample_results()
     results["families"]["recursive"]["attachments"] = ["own/picture.png"]
