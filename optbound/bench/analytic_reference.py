@@ -69,12 +69,13 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(**_OPTIONS)
+@njit(**_OPTIONS, _nrt=False)
 def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and the same work space ``wk`` (``minkowski_kernel.thread_work``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
-    member ``reference.minkowski_member``. The solver's work space has the tuple lengths
+    member ``reference.minkowski_member``. Its views are not reference counted (as ours and
+    the strip reference's are not). The solver's work space has the tuple lengths
     ``sum_blocks`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
     mats, vecs, rows, _, _ = wk
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
