@@ -14,7 +14,14 @@ argument types is compiled several times.
 The suite's kernels are the same at every size, so the ``tiny`` suite (seconds of work)
 compiles what ``quick`` compiles; ``--suite quick`` checks that on a quiet machine.
 
-Run: ``python -m benchmarks.compile_cost [--suite tiny|quick]``.
+With ``--jobs N`` (N > 1) the child runs the real ``optbound bench --jobs N`` instead, with its
+cold-cache warm-up (``optbound.bench.warmup``) and its pool of task workers, and every process
+of the run logs its compiles (``benchmarks/_compile_log/sitecustomize.py``, on the child's
+``PYTHONPATH`` only). The report then gives the compile CPU per process, the dispatchers
+compiled in more than one process (the same work done twice), and the compiles left to the task
+workers and the parent (kernels no warm-up group covers).
+
+Run: ``python -m benchmarks.compile_cost [--suite tiny|quick] [--jobs N]``.
 """
 
 from __future__ import annotations
@@ -88,13 +95,95 @@ def measure(suite: str) -> dict:
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
+_HOOK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "_compile_log")
+
+
+def measure_jobs(suite: str, jobs: int) -> dict:
+    """Every compile of ``optbound bench --jobs jobs`` in a child with an empty numba cache."""
+    with tempfile.TemporaryDirectory() as tmp:
+        log = os.path.join(tmp, "compiles.jsonl")
+        path = os.pathsep.join(filter(None, [_HOOK, os.environ.get("PYTHONPATH")]))
+        env = {**os.environ, "NUMBA_CACHE_DIR": os.path.join(tmp, "cache"),
+               "OPTBOUND_COMPILE_LOG": log, "PYTHONPATH": path}  # fmt: skip
+        env.pop("OPTBOUND_COMPILE_LOG_ROOT", None)
+        command = [sys.executable, "-m", "optbound.cli", "bench", "--suite", suite]
+        command += ["--jobs", str(jobs), "--no-progress", "--force", "--out", f"{tmp}/out"]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        start = time.perf_counter()
+        done = subprocess.run(command, env=env, capture_output=True, text=True)
+        wall = time.perf_counter() - start
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        if done.returncode != 0:
+            raise RuntimeError(f"optbound bench failed:\n{done.stderr[-3000:]}")
+        with open(log) as fh:
+            events = [json.loads(line) for line in fh]
+    run_cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    return {"events": events, "run_cpu": run_cpu, "run_wall": wall}
+
+
+def report_jobs(result: dict, suite: str, jobs: int) -> None:
+    """Print the per-process compile table, the duplicates and the compiles left to tasks."""
+    events = result["events"]
+    procs: dict = defaultdict(lambda: {"roles": set(), "cpu": 0.0, "n": 0})
+    for e in events:
+        proc = procs[e["pid"]]
+        proc["roles"].add(e["role"].split(":")[0] if e["role"].startswith("task") else e["role"])
+        proc["n"] += 1
+        proc["cpu"] += e["inclusive"] if e["top"] else 0.0
+    total = sum(p["cpu"] for p in procs.values())
+    print(f"bench --suite {suite} --jobs {jobs} with an empty numba cache: {total:.1f} s CPU "
+          f"compiling in {len(procs)} processes ({len(events)} compiles); the whole run "
+          f"{result['run_cpu']:.1f} s CPU, {result['run_wall']:.1f} s wall")  # fmt: skip
+    print("\n| process | role | compiles | compile CPU s |")
+    print("|---|---|---|---|")
+    for pid, p in sorted(procs.items(), key=lambda kv: -kv[1]["cpu"]):
+        print(f"| {pid} | {', '.join(sorted(p['roles']))} | {p['n']} | {p['cpu']:.2f} |")
+    where: dict = defaultdict(lambda: defaultdict(float))  # (name, types) -> pid -> self CPU
+    for e in events:
+        where[e["name"], e["types"]][e["pid"]] += e["self"]
+    dup = {key: pids for key, pids in where.items() if len(pids) > 1}
+    extra = sum(sum(p.values()) - max(p.values()) for p in dup.values())
+    print(f"\nCompiled in more than one process: {len(dup)} specialisations, {extra:.2f} s CPU "
+          "beyond one compile each")  # fmt: skip
+    print("\n| dispatcher | types | processes | self CPU s (sum) |")
+    print("|---|---|---|---|")
+    for (name, types), pids in sorted(dup.items(), key=lambda kv: -sum(kv[1].values())):
+        kinds = types if len(types) <= 60 else types[:57] + "..."
+        print(f"| {name} | {kinds} | {len(pids)} | {sum(pids.values()):.2f} |")
+    per_name: dict = defaultdict(set)
+    for e in events:
+        per_name[e["name"]].add(e["types"])
+    multi = {name: t for name, t in per_name.items() if len(t) > 1}
+    print(f"\nDispatchers compiled for more than one type signature: {len(multi)}")
+    for name, kinds in sorted(multi.items(), key=lambda kv: -len(kv[1])):
+        print(f"- {name}: {len(kinds)}")
+    late = [e for e in events if not e["role"].startswith("warmup")]
+    print(f"\nCompiled outside the warm-up (task workers, the parent): {len(late)} compiles, "
+          f"{sum(e['self'] for e in late):.2f} s self CPU")  # fmt: skip
+    print("\n| role:family | dispatcher | types | self CPU s |")
+    print("|---|---|---|---|")
+    for e in sorted(late, key=lambda e: -e["self"]):
+        kinds = e["types"] if len(e["types"]) <= 50 else e["types"][:47] + "..."
+        print(f"| {e['role']} | {e['name']} | {kinds} | {e['self']:.2f} |")
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--suite", choices=("tiny", "quick"), default="tiny")
+    parser.add_argument("--jobs", type=int, default=1, help="> 1: the real run, all processes")
     parser.add_argument("--top", type=int, default=40, help="rows shown (largest self time)")
     parser.add_argument("--json", help="also write the raw measurement to this file")
     args = parser.parse_args(argv)
     load = os.getloadavg()[0]
+    if args.jobs > 1:
+        result = measure_jobs(args.suite, args.jobs)
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(result, f, indent=1)
+        print(f"numba target: {numba_target()}; load average {load:.1f} at start, "
+              f"{os.getloadavg()[0]:.1f} at end, on {os.cpu_count()} cores")  # fmt: skip
+        report_jobs(result, args.suite, args.jobs)
+        return
     result = measure(args.suite)
     if args.json:
         with open(args.json, "w") as f:

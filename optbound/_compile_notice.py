@@ -23,11 +23,12 @@ from pathlib import Path
 from numba.core import event
 
 ENV = "OPTBOUND_COMPILE_NOTICE"
-#: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, as measured by
-#: ``python -m benchmarks.compile_cost`` (86 s, of which 5 s for the speed benchmark's
-#: compiled baseline, on a 2-core Intel Xeon at load 6-8); one process compiling on an idle
-#: core takes about this long in wall time too.
-COMPILE_CPU_SECONDS = 85
+#: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, in all the
+#: run's processes, as measured by ``python -m benchmarks.compile_cost --suite quick --jobs 2``
+#: (105 s on a 2-core Intel Xeon at load 5-6, of which 6 s for the speed benchmark's
+#: compiled baseline). With two or more workers the warm-up (``optbound.bench.warmup``)
+#: spreads it over two processes, so the wall time is about half of it on an idle machine.
+COMPILE_CPU_SECONDS = 105
 MESSAGE = (
     "optbound: compiling numerical kernels once (about {seconds} s of CPU in all, first run "
     "only; later runs load them from numba's cache) ..."

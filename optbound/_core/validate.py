@@ -145,8 +145,11 @@ def points(name: str, value, dim: int) -> tuple[np.ndarray, bool]:
 def dims_index(name: str, dims, dim: int) -> np.ndarray:
     """Validate a list of distinct coordinate indices into a ``dim``-dimensional space.
 
-    A tuple of Python ints (the common case, e.g. ``(0, 1)`` in a tracker's every update) is
-    validated once and cached: the returned array is then shared and read-only.
+    The result is always a new read-only int64 array, whatever form ``dims`` came in (tuple,
+    list, array of any integer type): the compiled kernels that take it then see one array
+    type, and are compiled once for it rather than once per form. A tuple of Python ints (the
+    common case, e.g. ``(0, 1)`` in a tracker's every update) is validated once and cached:
+    the returned array is then shared.
     """
     if type(dims) is tuple and all(type(d) is int for d in dims):
         return _int_tuple_index(name, dims, dim)
@@ -155,9 +158,7 @@ def dims_index(name: str, dims, dim: int) -> np.ndarray:
 
 @functools.lru_cache(maxsize=256)
 def _int_tuple_index(name: str, dims: tuple[int, ...], dim: int) -> np.ndarray:
-    idx = _dims_index(name, dims, dim)
-    idx.flags.writeable = False
-    return idx
+    return _dims_index(name, dims, dim)
 
 
 def _dims_index(name: str, dims, dim: int) -> np.ndarray:
@@ -166,6 +167,8 @@ def _dims_index(name: str, dims, dim: int) -> np.ndarray:
         raise ValueError(f"{name} must be a non-empty sequence of integer coordinates, got {dims}")
     if np.any(idx < 0) or np.any(idx >= dim) or len(set(idx.tolist())) != idx.size:
         raise ValueError(f"{name} must be distinct coordinates in [0, {dim}), got {dims}")
+    idx = idx.astype(np.int64)  # a copy: the caller's array keeps its flags
+    idx.flags.writeable = False
     return idx
 
 

@@ -146,6 +146,7 @@ def _mode(criterion: str, kappa, dims, n_batch: int, n: int):
 
 
 _NO_DIMS = np.zeros(0, np.int64)
+_NO_DIMS.flags.writeable = False  # the array type of ``dims_index``: one compiled kernel
 
 
 def _read_only(arr: np.ndarray) -> np.ndarray:

@@ -166,6 +166,7 @@ def _mode(criterion, dims, lam, n_batch, n):
 
 
 _NO_DIMS = np.zeros(0, np.int64)
+_NO_DIMS.flags.writeable = False  # the array type of ``dims_index``: one compiled kernel
 _NO_LAMBDAS = np.zeros(1)  # the kernel reads lambdas in the GIVEN mode only
 
 

@@ -23,7 +23,7 @@ from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
-from optbound.analytic._kernels.minkowski_kernel import block_work, p_volume_lanes
+from optbound.analytic._kernels.minkowski_kernel import p_volume_lanes, thread_work
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 # Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
@@ -69,14 +69,15 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
-@njit(**_OPTIONS)
-def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
+@njit(**_OPTIONS, _nrt=False)
+def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
-    same blocks of W lanes and work space (``analytic._kernels.minkowski_kernel.sum_range``),
+    same blocks of W lanes and the same work space ``wk`` (``minkowski_kernel.thread_work``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
-    member ``reference.minkowski_member``. The solver's work space has the tuple lengths
-    ``sum_range`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
-    mats, vecs, rows, _, _ = block_work(c1.shape[1], min(W, stop - start))
+    member ``reference.minkowski_member``. Its views are not reference counted (as ours and
+    the strip reference's are not). The solver's work space has the tuple lengths
+    ``sum_blocks`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
+    mats, vecs, rows, _, _ = wk
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
@@ -91,6 +92,23 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start, stop):
         for k in range(m):
             i = base + k
             minkowski_member(c1[i], C1[i], c2[i], C2[i], p[k], out_c[i], out_C[i])
+
+
+def minkowski_range(c1, C1, c2, C2, out_c, out_C, start: int, stop: int) -> None:
+    """:func:`minkowski_blocks` on ``start..stop`` (a slice of ``analytic._kernels.threads``)
+    with the calling thread's work space, as ``minkowski_kernel.sum_range`` does ours.
+
+    Parameters
+    ----------
+    c1, C1, c2, C2 : numpy.ndarray
+        ``(B, n)`` centres and ``(B, n, n)`` shapes of the summands.
+    out_c, out_C : numpy.ndarray
+        ``(B, n)`` and ``(B, n, n)`` outputs, written on ``start..stop``.
+    start, stop : int
+        The instances to sum.
+    """
+    wk = thread_work(c1.shape[1])
+    minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop)
 
 
 def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:

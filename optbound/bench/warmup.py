@@ -1,4 +1,4 @@
-"""Compile the suite's largest kernels once, spread over the worker processes, before any task.
+"""Compile the suite's kernels once, spread over the worker processes, before any task.
 
 With an empty numba cache (the first run after an install, or after a kernel source changed),
 the tasks' first calls compile the kernels. Tasks start two at a time on two workers, and the
@@ -6,14 +6,17 @@ first tasks of the suite mostly need the same kernels (the strip and Minkowski u
 SDP references' helpers), so each worker compiled them at the same moment: the same minutes of
 CPU spent twice, and the serial families after the pool compiled theirs on one core.
 
-Here the kernels are split into disjoint groups, each compiled by a few calls on one small
-instance; when numba's cache lacks them, the groups run on a pool of their own (longest
-first) before the suite's tasks start. Each group writes numba's on-disk cache, so every
-process after it (the task workers, the parent running the serial families) loads its kernels
-instead of compiling them. Kernels no group covers still compile on first use, as before. A
-group whose probe kernel is already cached is skipped, so a warm run starts no pool. The
-calls' results are discarded: only which machine code exists changes, never what a task
-computes.
+Here the kernels the quick suite uses are split into disjoint groups, each compiled by a few
+calls on one small instance; when numba's cache lacks them, the groups run on a pool of their
+own (longest first) before the suite's tasks start. The small kernels every group calls (the
+domain check behind every ``Ellipsoid``) are compiled first, once, in the parent: the workers
+inherit them (forked) or load them from the cache, instead of each compiling its own copy.
+Kernels shared by two groups' calls are in one group (the strip and Minkowski updates share
+their lane helpers), so no kernel is compiled by two processes. Each group writes numba's
+on-disk cache, so every process after it (the task workers, the parent running the serial
+families) loads its kernels instead of compiling them. A group whose probe kernels are all
+cached is skipped, so a warm run starts no pool. The calls' results are discarded: only which
+machine code exists changes, never what a task computes.
 """
 
 from __future__ import annotations
@@ -39,24 +42,55 @@ def _batch(n_batch: int = 1, n: int = 3) -> tuple:
     return np.zeros((n_batch, n)), np.repeat(np.eye(n)[None], n_batch, axis=0)
 
 
-def _minkowski() -> None:
-    """``analytic.minkowski_sum`` (every criterion the suite uses) and its batch form."""
-    from optbound import analytic
+def _shared() -> None:
+    """The domain check (``_core.domain.check_ellipsoid``) behind every group's ellipsoids."""
+    _ellipsoids()
+
+
+def _analytic() -> None:
+    """``analytic.minkowski_sum`` (every criterion the suite uses), ``intersect_strip`` and
+    their batch forms: one group, since the two kernels share their lane and cubic helpers."""
+    from optbound import Strip, analytic
 
     E1, E2 = _ellipsoids()
     for criterion in ("volume", "trace"):
         analytic.minkowski_sum(E1, E2, criterion=criterion)
     analytic.minkowski_sum(E1, E2, criterion="size_xy_psi", dims=([0, 1], [2]))
     analytic.minkowski_sum_batch(*_batch(), *_batch())
+    analytic.intersect_strip(E1, Strip([1.0, 0.0, 0.0], 0.5))
+    analytic.intersect_strip(E1, Strip([1.0, 0.0, 0.0], 0.5), criterion="projection", dims=(0, 1))
+    analytic.intersect_strip_batch(*_batch(), [1.0, 0.0, 0.0], 0.5)
 
 
-def _strip() -> None:
-    """``analytic.intersect_strip`` and its batch form (one compiled entry point for all)."""
-    from optbound import Strip, analytic
+def _localization() -> None:
+    """The localization models' kernels: polygon and visibility predicates [GLH12], the
+    landmark solve [HS96], the affine map's inflation, a strip's quadratic form."""
+    from optbound import QuadraticSet
+    from optbound.analytic.affine import affine_map
+    from optbound.localization import landmarks, visibility
+    from optbound.localization.environment import Environment
 
     E1, _ = _ellipsoids()
-    analytic.intersect_strip(E1, Strip([1.0, 0.0, 0.0], 0.5))
-    analytic.intersect_strip_batch(*_batch(), [1.0, 0.0, 0.0], 0.5)
+    affine_map(E1, np.eye(3))
+    QuadraticSet.from_bounds(np.array([1.0, 0.0, 0.0]), -1.0, 1.0)
+    landmarks.linear_position([[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]], [0.1, 1.2, 2.3])
+    square = np.array([[2.0, -1.0], [3.0, -1.0], [3.0, 1.0], [2.0, 1.0]])
+    env = Environment.from_polygons([square], 0.1)
+    boxes = np.array([[[0.0, 1.0], [-0.5, 0.5]], [[4.0, 5.0], [-0.5, 0.5]]])
+    visibility.visibility_test(boxes[:1], boxes[1:], env.outer)
+    visibility.luvia(0, [False, False], boxes, env, 0.5)
+
+
+def _sonar() -> None:
+    """The sonar belt's compiled q-relaxed test [LJMW97], [KJWM00]."""
+    from optbound.interval import Interval
+    from optbound.localization import sonar
+
+    world = np.array([[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [4.0, 4.0]], [[4.0, 4.0], [0.0, 0.0]]])
+    belt = [sonar.Sonar((0.0, 0.0), angle, 0.2, 0.05) for angle in (0.0, 2.0)]
+    tests = sonar.sonar_tests(world, belt, [1.0, 1.5])
+    box = [Interval(np.array([lo]), np.array([lo + 0.1])) for lo in (1.0, 1.0, 0.3)]
+    tests.fused(1)(*box)
 
 
 def _optimal() -> None:
@@ -84,14 +118,33 @@ def _reference() -> None:
 
 
 #: name -> (compile CPU seconds, roughly: the order they are submitted in; the group's calls;
-#: ``"module:kernel"``, a kernel of the group whose presence in numba's cache means the group
-#: is compiled).
-GROUPS: dict[str, tuple[float, Callable[[], None], str]] = {
-    "minkowski": (30.0, _minkowski, "optbound.analytic._kernels.minkowski_kernel:sum_blocks"),
-    "optimal": (22.0, _optimal, "optbound.optimal.khachiyan:_iterate"),
-    "strip": (20.0, _strip, "optbound.analytic._kernels.strip_kernel:fuse_range"),
-    "reference": (6.0, _reference, "optbound.bench.analytic_reference:minkowski_range"),
+#: ``"module:kernel"`` names of kernels of the group (one per source file it compiles most
+#: of) whose presence in numba's cache means the group is compiled).
+GROUPS: dict[str, tuple[float, Callable[[], None], tuple[str, ...]]] = {
+    "analytic": (
+        44.0,
+        _analytic,
+        (
+            "optbound.analytic._kernels.minkowski_kernel:sum_blocks",
+            "optbound.analytic._kernels.strip_kernel:fuse_range",
+        ),
+    ),
+    "optimal": (28.0, _optimal, ("optbound.optimal.khachiyan:_iterate",)),
+    "sonar": (12.0, _sonar, ("optbound.localization._sonar_kernel:_relaxed",)),
+    "localization": (
+        9.0,
+        _localization,
+        (
+            "optbound.localization.visibility:_luvia_kernel",
+            "optbound.localization.geometry.polygons:_segments_meet_polygons",
+            "optbound.localization.landmarks:_solve",
+        ),
+    ),
+    "reference": (6.5, _reference, ("optbound.bench.analytic_reference:minkowski_blocks",)),
 }
+#: Calls run in the parent, before the groups, when any group is cold: kernels several
+#: groups would otherwise each compile.
+SHARED: Callable[[], None] = _shared
 
 
 def is_cached(dispatcher) -> bool:
@@ -122,14 +175,15 @@ def cold_groups() -> list[str]:
     Returns
     -------
     list of str
-        Names of :data:`GROUPS` whose probe kernel is not cached (:func:`is_cached`).
+        Names of :data:`GROUPS` with a probe kernel that is not cached (:func:`is_cached`).
     """
-    cold = []
-    for name, (_, _, probe) in GROUPS.items():
-        module, _, kernel = probe.partition(":")
-        if not is_cached(getattr(importlib.import_module(module), kernel)):
-            cold.append(name)
+    cold = [name for name, (_, _, probes) in GROUPS.items() if not all(map(_cached, probes))]
     return sorted(cold, key=lambda name: -GROUPS[name][0])
+
+
+def _cached(probe: str) -> bool:
+    module, _, kernel = probe.partition(":")
+    return is_cached(getattr(importlib.import_module(module), kernel))
 
 
 def compile_group(name: str) -> tuple[str, float | str]:
@@ -161,8 +215,9 @@ def compile_group(name: str) -> tuple[str, float | str]:
 def compile_cold(jobs: int) -> dict[str, float | str]:
     """Compile the groups missing from numba's cache on a pool of ``jobs`` processes.
 
-    The groups run longest first, and all of them are waited for. With ``jobs == 1`` or a
-    warm cache, nothing runs: one process compiles each kernel once anyway, on first use.
+    :data:`SHARED` runs first, here, then the groups, longest first, and all of them are
+    waited for. With ``jobs == 1`` or a warm cache, nothing runs: one process compiles each
+    kernel once anyway, on first use.
 
     Parameters
     ----------
@@ -178,6 +233,10 @@ def compile_cold(jobs: int) -> dict[str, float | str]:
     names = cold_groups() if jobs > 1 else []
     if not names:
         return {}
+    try:
+        SHARED()
+    except Exception:  # never stops the run: whoever needs the kernels compiles them
+        pass
     done: dict[str, float | str] = {}
     with executor("process", min(jobs, len(names))) as pool:
         futures = {

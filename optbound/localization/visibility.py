@@ -119,6 +119,14 @@ def _consistent(box, i, y, boxes, inner, outer, pending) -> int:
 
 
 @njit(cache=True)
+def _grow(arr, size: int):
+    """``arr`` with its first axis enlarged to ``size`` (the first rows copied)."""
+    out = np.empty((size, *arr.shape[1:]), dtype=arr.dtype)
+    out[: len(arr)] = arr
+    return out
+
+
+@njit(cache=True)
 def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
     """Hull of the boxes kept by [GLH12, Algorithm 2], written into ``hull`` (empty: inf).
 
@@ -126,50 +134,84 @@ def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
     by its own depth-first pass that visits the more extreme child first and skips any box
     not sticking out beyond the hull found so far: its kept sub-boxes could not move that
     side. Same bisections, same tests, same hull as Algorithm 2, for a fraction of the tests.
+    The passes share one bisection tree: a box tested in an earlier pass keeps its verdict
+    and its children (a node's verdict depends on its box and the measurements still
+    pending from its ancestors only).
     """
     m = len(boxes)
-    cap = 2 * (max_depth + 2)  # a depth-first stack holds at most one sibling per level
-    stack = np.empty((cap, 2, 2))
-    stack_pending = np.empty((cap, m), dtype=np.bool_)
-    stack_depth = np.empty(cap, dtype=np.int64)
+    cap = 64
+    box_of = np.empty((cap, 2, 2))
+    pending_of = np.empty((cap, m), dtype=np.bool_)  # per node: undecided measurements
+    verdict_of = np.full(cap, -1, dtype=np.int64)  # -1: not tested yet
+    child_of = np.full(cap, -1, dtype=np.int64)  # its low child (the high one follows)
+    depth_of = np.empty(cap, dtype=np.int64)
+    box_of[0] = boxes[i]
+    pending_of[0] = True
+    pending_of[0, i] = False
+    depth_of[0] = 0
+    nodes = 1
+    stack = np.empty(2 * (max_depth + 2), dtype=np.int64)  # one sibling per level
     hull[:, 0] = np.inf
     hull[:, 1] = -np.inf
     for d in range(4):
         a, side = d // 2, d % 2
-        stack[0] = boxes[i]
-        stack_pending[0] = True
-        stack_pending[0, i] = False
-        stack_depth[0] = 0
+        stack[0] = 0
         n = 1
         while n > 0:
             n -= 1
-            box = stack[n].copy()
-            pending = stack_pending[n].copy()
-            depth = stack_depth[n]
+            node = stack[n]
+            box = box_of[node]
             if (box[a, 0] >= hull[a, 0]) if side == 0 else (box[a, 1] <= hull[a, 1]):
                 continue  # cannot move this side of the hull
-            verdict = _consistent(box, i, y, boxes, inner, outer, pending)
+            verdict = verdict_of[node]
+            if verdict < 0:
+                verdict = _consistent(box, i, y, boxes, inner, outer, pending_of[node])
+                verdict_of[node] = verdict
             if verdict == 0:
                 continue
             w0, w1 = box[0, 1] - box[0, 0], box[1, 1] - box[1, 0]
-            if verdict == 1 and w0 * w1 > eps and depth < max_depth:
-                ax = 0 if w0 >= w1 else 1  # the wider side, as np.argmax would pick
-                mid = 0.5 * (box[ax, 0] + box[ax, 1])
-                low, high = box.copy(), box.copy()
-                low[ax, 1] = mid
-                high[ax, 0] = mid
+            if verdict == 1 and w0 * w1 > eps and depth_of[node] < max_depth:
+                low = child_of[node]
+                if low < 0:
+                    if nodes + 2 > cap:
+                        cap *= 2
+                        box_of, pending_of = _grow(box_of, cap), _grow(pending_of, cap)
+                        verdict_of, child_of = _grow(verdict_of, cap), _grow(child_of, cap)
+                        depth_of = _grow(depth_of, cap)
+                        verdict_of[nodes:] = -1
+                        child_of[nodes:] = -1
+                        box = box_of[node]
+                    ax = 0 if w0 >= w1 else 1  # the wider side, as np.argmax would pick
+                    mid = 0.5 * (box[ax, 0] + box[ax, 1])
+                    low = nodes
+                    for k in range(low, low + 2):
+                        box_of[k] = box
+                        pending_of[k] = pending_of[node]
+                        depth_of[k] = depth_of[node] + 1
+                    box_of[low, ax, 1] = mid
+                    box_of[low + 1, ax, 0] = mid
+                    child_of[node] = low
+                    nodes += 2
                 # Push the less extreme child first so that the more extreme one pops first.
-                first, second = (high, low) if side == 0 else (low, high)
-                stack[n] = first
-                stack[n + 1] = second
-                for k in range(n, n + 2):
-                    stack_pending[k] = pending
-                    stack_depth[k] = depth + 1
+                stack[n], stack[n + 1] = (low + 1, low) if side == 0 else (low, low + 1)
                 n += 2
             else:
                 for k in range(2):
                     hull[k, 0] = min(hull[k, 0], box[k, 0])
                     hull[k, 1] = max(hull[k, 1], box[k, 1])
+
+
+@njit(cache=True)
+def _sweep_kernel(y, cur, inner, outer, eps, max_depth) -> int:
+    """One team sweep of :func:`track`: LUVIA for robot 0, 1, ... in turn, each box replaced
+    in ``cur`` by its hull as soon as it is found; -1, or the first robot refuted."""
+    hull = np.empty((2, 2))
+    for i in range(len(cur)):
+        _luvia_kernel(i, y[i], cur, inner, outer, eps, max_depth, hull)
+        if hull[0, 0] > hull[0, 1]:
+            return i
+        cur[i] = hull
+    return -1
 
 
 def _luvia(i: int, y: np.ndarray, boxes: np.ndarray, env: Environment, eps: float, max_depth: int):
@@ -244,6 +286,35 @@ def _travel(distance, shape: tuple[int, ...], allowed: str) -> np.ndarray:
     return d
 
 
+def _check_heading_error(heading_error) -> float:
+    if (
+        not isinstance(heading_error, int | float)
+        or not np.isfinite(heading_error)
+        or heading_error < 0
+    ):
+        raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
+    return heading_error
+
+
+def _displacements(d: np.ndarray, th: np.ndarray, heading_error: float):
+    """Interval ``d (cos θ, sin θ)`` with ``θ ∈ [th - δ, th + δ]``, element by element.
+
+    ``d``: travel intervals of shape ``th.shape + (2,)``. The result does not depend on the
+    boxes, so :func:`track` evaluates it for all its steps in one call (the interval
+    operations are elementwise: the same bits as step by step).
+    """
+    theta = Interval(th) + Interval(-heading_error, heading_error)
+    step = Interval(d[..., 0], d[..., 1])
+    return step * np.cos(theta), step * np.sin(theta)
+
+
+def _moved(b: np.ndarray, dx: Interval, dy: Interval) -> np.ndarray:
+    """The boxes ``b`` (m, 2, 2) shifted by the displacement intervals ``dx``, ``dy`` (m,)."""
+    x = Interval(b[:, 0, 0], b[:, 0, 1]) + dx
+    yy = Interval(b[:, 1, 0], b[:, 1, 1]) + dy
+    return np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+
+
 def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     """Interval odometry with a compass [GLH12, Alg. 1, l. 3]: ``x + d (cos θ, sin θ)``.
 
@@ -278,17 +349,7 @@ def odometry(boxes, distance, heading, heading_error: float) -> np.ndarray:
     th = np.asarray(heading, dtype=float)
     if th.shape != (m,) or not np.all(np.isfinite(th)):
         raise ValueError(f"heading must be ({m},) finite readings")
-    if (
-        not isinstance(heading_error, int | float)
-        or not np.isfinite(heading_error)
-        or heading_error < 0
-    ):
-        raise ValueError(f"heading_error must be finite and >= 0, got {heading_error!r}")
-    theta = Interval(th) + Interval(-heading_error, heading_error)
-    step = Interval(d[:, 0], d[:, 1])
-    x = Interval(b[:, 0, 0], b[:, 0, 1]) + step * np.cos(theta)
-    yy = Interval(b[:, 1, 0], b[:, 1, 1]) + step * np.sin(theta)
-    return np.stack([np.stack([x.lo, x.hi], -1), np.stack([yy.lo, yy.hi], -1)], axis=1)
+    return _moved(b, *_displacements(d, th, _check_heading_error(heading_error)))
 
 
 def track(
@@ -389,10 +450,14 @@ def track(
     dist = _travel(
         dist[:, None] if dist.ndim == 2 else dist, (steps, m), "(2,), (K, 2) or (K, m, 2)"
     )
+    if not np.all(np.isfinite(th)):
+        raise ValueError(f"headings must be ({steps}, {m}) finite readings")
+    dx, dy = _displacements(dist, th, _check_heading_error(heading_error))
+    inner, outer = env.packed_inner, env.packed_outer
     out = np.empty((steps + 1, m, 2, 2))
     out[0] = b
     for k in range(steps):
-        cur = odometry(out[k], dist[k], th[k], heading_error)
+        cur = _moved(out[k], dx[k], dy[k])
         if room is not None:
             cur[..., 0] = np.maximum(cur[..., 0], room[:, 0])
             cur[..., 1] = np.minimum(cur[..., 1], room[:, 1])
@@ -400,11 +465,9 @@ def track(
                 raise ValueError(f"step {k}: a robot's box misses region")
         for _ in range(passes if m > 1 else 0):
             before = cur.copy()
-            for i in range(m):
-                box = _luvia(i, vis[k, i], cur, env, eps, max_depth)
-                if box is None:
-                    raise ValueError(f"step {k}: every position of robot {i} is refuted")
-                cur[i] = box
+            refuted = _sweep_kernel(vis[k], cur, inner, outer, eps, max_depth)
+            if refuted >= 0:
+                raise ValueError(f"step {k}: every position of robot {refuted} is refuted")
             if np.array_equal(before, cur):
                 break
         out[k + 1] = cur
@@ -422,24 +485,27 @@ def measure(points, obstacles) -> np.ndarray:
     Parameters
     ----------
     points
-        (m, 2) robot positions.
+        (m, 2) robot positions, or (K, m, 2): K teams (e.g. the steps of a run) measured in
+        one call.
     obstacles
         As for :func:`visibility_test` (typically ``Environment.exact``).
 
     Returns
     -------
-    (m, m) bool array
+    (m, m) or (K, m, m) bool array
         Symmetric, True on the diagonal.
     """
     pts = real_array("points", points, "an (m, 2) array")
-    if pts.ndim != 2 or pts.shape[1] != 2:
-        raise ValueError(f"points must have shape (m, 2), got {pts.shape}")
-    m = len(pts)
+    if pts.ndim not in (2, 3) or pts.shape[-1] != 2:
+        raise ValueError(f"points must have shape (m, 2) or (K, m, 2), got {pts.shape}")
+    m = pts.shape[-2]
     i, j = np.triu_indices(m, 1)
-    boxes = np.repeat(pts[:, :, None], 2, axis=2)
-    seen = visibility_test(boxes[i], boxes[j], obstacles) == Tri.TRUE
-    y = np.eye(m, dtype=bool)
-    y[i, j] = y[j, i] = seen
+    boxes = np.repeat(pts[..., None], 2, axis=-1)
+    b1, b2 = boxes[..., i, :, :].reshape(-1, 2, 2), boxes[..., j, :, :].reshape(-1, 2, 2)
+    seen = visibility_test(b1, b2, obstacles) == Tri.TRUE
+    y = np.zeros((*pts.shape[:-2], m, m), dtype=bool)
+    y[..., np.arange(m), np.arange(m)] = True
+    y[..., i, j] = y[..., j, i] = seen.reshape(*pts.shape[:-2], len(i))
     return y
 
 

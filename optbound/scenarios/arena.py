@@ -306,8 +306,7 @@ def simulate(
         offset[:] = 0.5
     lo = truth[0] - offset
     boxes0 = np.stack([lo, lo + 1.0], axis=-1)
-    vis = np.array([measure(truth[k + 1], env.exact) for k in range(steps)])
-    vis = vis.reshape(steps, n_robots, n_robots)
+    vis = measure(truth[1:], env.exact)
     distance = np.array([STEP - STEP_ERROR, STEP + STEP_ERROR])
     heading = true_heading + noise
     return Run(env, truth, boxes0, distance, heading, vis, setting.heading_error)

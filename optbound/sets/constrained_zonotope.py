@@ -102,6 +102,7 @@ class ConstrainedZonotope(ConvexSet):
         for arr in (self._c, self._G, self._A, self._b):
             arr.setflags(write=False)
         self._polygons = None  # 2-D certified polygons, built on first use
+        self._vertex_cache = None  # 2-D vertex search (vertices, LP solutions), on first use
 
     @classmethod
     def _compacted(cls, c, G, A, b) -> ConstrainedZonotope:
@@ -653,11 +654,18 @@ class ConstrainedZonotope(ConvexSet):
         ValueError
             If the set is not 2-D.
         """
-        return self._vertex_search()[0]
+        return self._vertex_search()[0].copy()
 
     def _vertex_search(self) -> tuple[np.ndarray, list[np.ndarray]]:
         """:meth:`vertices` and, per vertex, the LP solution ``xi`` it came from (a point
-        of the set up to the LP tolerance; the certified inner polygon starts from them)."""
+        of the set up to the LP tolerance; the certified inner polygon starts from them).
+        Searched once per set (the set is immutable)."""
+        if self._vertex_cache is None:
+            self._vertex_cache = self._search_vertices()
+        return self._vertex_cache
+
+    def _search_vertices(self) -> tuple[np.ndarray, list[np.ndarray]]:
+        """The LP search of :meth:`_vertex_search` (:meth:`vertices` describes it)."""
         if self.dim != 2:
             raise ValueError(f"vertices() is for 2-D sets, this one has dim {self.dim}")
         xis: dict[tuple, np.ndarray] = {}  # the rounded point (as _ccw_unique rounds) -> xi

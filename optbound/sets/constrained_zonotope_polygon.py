@@ -11,7 +11,8 @@ proven, so two proven ones are built around it:
   box is clipped by each edge half-plane in exact rational arithmetic;
 - **inner**: the convex hull of points *proven* in the set: each support LP's solution
   ``xi`` of the vertex search is made to satisfy ``A xi = b`` exactly
-  (``xi + A^T (A A^T)^{-1} (b - A xi)`` in ``Fraction``), then pulled towards an interior
+  (``xi + A^T (A A^T)^{-1} (b - A xi)`` in integer arithmetic on the floats' common power
+  of two), then pulled towards an interior
   ``xi_0`` (the least-infinity-norm solution, repaired the same way) until ``|xi| <= 1``
   holds exactly; the point ``c + G xi`` is then in the set with every float read as exact.
 
@@ -284,11 +285,15 @@ def clip(P: list[Point], a: Fraction, b: Fraction, h: Fraction) -> list[Point]:
 
 
 def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
-    """Points proven in ``cz`` from the LP solutions ``xis`` (module docstring); their hull."""
+    """Points proven in ``cz`` from the LP solutions ``xis`` (module docstring); their hull.
+
+    The exact arithmetic runs on integers (:func:`_dyadic`): each repaired ``xi`` is a list
+    of numerators over one denominator, and the point ``c + G z`` with
+    ``z = xi_0 + t (xi - xi_0)`` is evaluated as ``c + G xi_0 + t G (xi - xi_0)``, the same
+    rational numbers.
+    """
     from scipy.optimize import linprog
 
-    A = [[Fraction(float(x)) for x in row] for row in cz.A]
-    b = [Fraction(float(x)) for x in cz.b]
     m = cz.n_generators
     # xi_0: min t s.t. A xi = b, |xi_j| <= t (the least-infinity-norm solution).
     res = linprog(
@@ -302,61 +307,125 @@ def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
     )
     if res.status != 0:
         return []
-    xi0 = _repair(A, b, res.x[:m])
-    if xi0 is None or max(abs(x) for x in xi0) >= 1:
+    project = _projector(cz.A, cz.b)
+    start = _repair(project, res.x[:m])
+    if start is None or max(abs(x) for x in start[0]) >= start[1]:
         return []  # no interior point proven
+    n0, d0 = start
     c = [Fraction(float(x)) for x in cz.center]
-    G = [[Fraction(float(x)) for x in row] for row in cz.generators]
+    G, eg = _dyadic_rows(cz.generators)
+    base = [ci + Fraction(_dot(row, n0), d0 << eg) for ci, row in zip(c, G, strict=True)]
     points = []
     for xi in xis:
-        xi = _repair(A, b, xi)
-        if xi is None:
+        repaired = _repair(project, xi)
+        if repaired is None:
             continue
-        step = [x - x0 for x, x0 in zip(xi, xi0, strict=True)]
+        n, d = repaired
+        step = [nj * d0 - n0j * d for nj, n0j in zip(n, n0, strict=True)]  # over d d0
         t = min(
             [Fraction(1)]
-            + [((1 if s > 0 else -1) - x0) / s for s, x0 in zip(step, xi0, strict=True) if s]
-        )
-        z = [x0 + t * s for x0, s in zip(xi0, step, strict=True)]
+            + [Fraction(((1 if s > 0 else -1) * d0 - n0j) * d, s)
+               for s, n0j in zip(step, n0, strict=True) if s]
+        )  # fmt: skip
         points.append(
             tuple(
-                ci + sum(g * zj for g, zj in zip(row, z, strict=True))
-                for ci, row in zip(c, G, strict=True)
+                bk + t * Fraction(_dot(row, step), (d * d0) << eg)
+                for bk, row in zip(base, G, strict=True)
             )
         )
     return convex_hull(points)
 
 
-def _repair(A: list, b: list, xi: np.ndarray) -> list[Fraction] | None:
-    """``xi + A^T (A A^T)^{-1} (b - A xi)`` in exact arithmetic (solves ``A xi = b``);
-    None if ``A A^T`` is singular."""
-    x = [Fraction(float(v)) for v in xi]
-    if not A:
-        return x
-    r = [
-        bi - sum(a * xj for a, xj in zip(row, x, strict=True)) for row, bi in zip(A, b, strict=True)
-    ]
-    M = [[sum(p * q for p, q in zip(ri, rj, strict=True)) for rj in A] for ri in A]
-    y = _solve(M, r)
-    if y is None:
+def _dyadic(values) -> tuple[list[int], int]:
+    """Floats as integers over one power of two: ``values[k] == ints[k] / 2**e`` exactly."""
+    ratios = [float(v).as_integer_ratio() for v in values]
+    e = max((d.bit_length() - 1 for _, d in ratios), default=0)
+    return [n << (e - d.bit_length() + 1) for n, d in ratios], e
+
+
+def _dyadic_rows(M: np.ndarray) -> tuple[list[list[int]], int]:
+    """A float matrix as integer rows over one power of two (:func:`_dyadic`)."""
+    ints, e = _dyadic(np.ravel(M))
+    cols = M.shape[1] if M.ndim == 2 else 0
+    return [ints[k * cols : (k + 1) * cols] for k in range(M.shape[0])], e
+
+
+def _dot(u: list[int], v: list[int]) -> int:
+    return sum(a * b for a, b in zip(u, v, strict=True))
+
+
+@dataclass(frozen=True)
+class _Projector:
+    """``xi -> xi + A^T (A A^T)^{-1} (b - A xi)`` on integers: ``A = rows / 2**ea``,
+    ``b = b_ints / 2**eb`` and ``Q = rows^T adj``, where ``adj = L (rows rows^T)^{-1}`` is an
+    integer matrix and ``L > 0``."""
+
+    rows: list[list[int]]
+    ea: int
+    b_ints: list[int]
+    eb: int
+    Q: list[list[int]]
+    L: int
+
+
+def _projector(A: np.ndarray, b: np.ndarray) -> _Projector | None:
+    """The exact projector onto ``A xi = b`` (:class:`_Projector`); None if ``A A^T`` is
+    singular (the repair then fails for every ``xi``)."""
+    rows, ea = _dyadic_rows(A)
+    b_ints, eb = _dyadic(b)
+    inverse = _scaled_inverse([[_dot(ri, rj) for rj in rows] for ri in rows])
+    if inverse is None:
         return None
-    return [xj + sum(A[i][j] * y[i] for i in range(len(A))) for j, xj in enumerate(x)]
+    adj, L = inverse
+    n, cols = len(rows), (len(rows[0]) if rows else 0)
+    Q = [[sum(rows[k][j] * adj[k][i] for k in range(n)) for i in range(n)] for j in range(cols)]
+    return _Projector(rows, ea, b_ints, eb, Q, L)
 
 
-def _solve(M: list, r: list) -> list[Fraction] | None:
-    """Gaussian elimination in ``Fraction`` (None if singular)."""
+def _scaled_inverse(M: list[list[int]]) -> tuple[list[list[int]], int] | None:
+    """``(X, L)`` with ``M X = L I``, ``L > 0``, for an integer matrix ``M``; None if singular.
+
+    Fraction-free Gauss-Jordan elimination (Bareiss): every division is exact, so the
+    numbers stay integers of the size of ``M``'s minors; at the end the left block is
+    ``d I`` with ``d = ±det M`` and the right block ``d M^{-1}``.
+    """
     n = len(M)
-    aug = [[*row, ri] for row, ri in zip(M, r, strict=True)]
-    for col in range(n):
-        piv = next((i for i in range(col, n) if aug[i][col] != 0), None)
+    aug = [[*row, *(int(i == j) for j in range(n))] for i, row in enumerate(M)]
+    prev = 1
+    for k in range(n):
+        piv = next((i for i in range(k, n) if aug[i][k] != 0), None)
         if piv is None:
             return None
-        aug[col], aug[piv] = aug[piv], aug[col]
+        aug[k], aug[piv] = aug[piv], aug[k]
+        pk = aug[k]
         for i in range(n):
-            if i != col and aug[i][col] != 0:
-                f = aug[i][col] / aug[col][col]
-                aug[i] = [x - f * y for x, y in zip(aug[i], aug[col], strict=True)]
-    return [aug[i][n] / aug[i][i] for i in range(n)]
+            if i != k:
+                ri, f = aug[i], aug[i][k]
+                aug[i] = [(pk[k] * x - f * y) // prev for x, y in zip(ri, pk, strict=True)]
+        prev = pk[k]
+    sign = 1 if prev > 0 else -1
+    return [[sign * x for x in row[n:]] for row in aug], sign * prev
+
+
+def _repair(project: _Projector | None, xi: np.ndarray) -> tuple[list[int], int] | None:
+    """``xi + A^T (A A^T)^{-1} (b - A xi)`` in exact arithmetic (solves ``A xi = b``) as
+    integer numerators over one positive denominator; None if ``A A^T`` is singular."""
+    if project is None:
+        return None
+    x, ex = _dyadic(xi)
+    if not project.rows:
+        return x, 1 << ex
+    # r = b - A x = r_ints / 2**e
+    e = max(project.eb, project.ea + ex)
+    r = [
+        (bi << (e - project.eb)) - (_dot(row, x) << (e - project.ea - ex))
+        for row, bi in zip(project.rows, project.b_ints, strict=True)
+    ]
+    # A^T y = 2**ea Q r / (L 2**e); over the denominator L 2**(e + ex):
+    scale, shift = project.L << e, project.ea + ex
+    return [xj * scale + (_dot(q, r) << shift) for xj, q in zip(x, project.Q, strict=True)], (
+        scale << ex
+    )
 
 
 def convex_hull(points: list[Point]) -> list[Point]:

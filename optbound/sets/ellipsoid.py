@@ -65,12 +65,15 @@ class Ellipsoid(ConvexSet):
         n = c.shape[0]
         if C.shape != (n, n):
             raise ValueError(f"shape must have shape {(n, n)}, got {C.shape}")
+        # The stored copies, C-ordered and writable until ``_set``, are what is checked: the
+        # compiled check then sees one array type whatever the input's layout and flags.
+        c, C = np.array(c, order="C"), np.array(C, order="C")
         L = np.zeros((n, n))
         raise_for(check_ellipsoid(c, C, L), "center", "shape")
         if not np.array_equal(C, C.T):  # asymmetry at rounding level: symmetrize, refactor
             C = 0.5 * (C + C.T)
             raise_for(check_ellipsoid(c, C, L), "center", "shape")
-        self._set(c.copy(), C.copy(), L)
+        self._set(c, C, L)
 
     def _set(self, center: np.ndarray, shape: np.ndarray, chol: np.ndarray) -> None:
         self._center, self._shape, self._chol = center, shape, chol
@@ -367,7 +370,8 @@ class Ellipsoid(ConvexSet):
             shape = self._shape * factor * factor
         try:
             # Float64 arrays of matching shapes: the checks of ``__init__`` without conversions.
-            return Ellipsoid._from_floats(self._center, shape)
+            # A writable centre: the compiled check's array type for new ellipsoids.
+            return Ellipsoid._from_floats(self._center.copy(), shape)
         except ValueError as err:
             raise ValueError(
                 f"factor={factor} takes the ellipsoid out of the domain: {err}"

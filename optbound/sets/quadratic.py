@@ -203,8 +203,9 @@ class QuadraticSet:
     @classmethod
     def _from_valid_bounds(cls, a: np.ndarray, lo: float, hi: float) -> QuadraticSet:
         """``from_bounds`` for a finite non-zero float64 ``a`` and finite ``lo <= hi`` that
-        the caller has validated (e.g. a clipped ``Strip``)."""
-        F = _bounds_form(a, lo, hi)
+        the caller has validated (e.g. a clipped ``Strip``). ``a`` is passed to the compiled
+        form as a C-ordered writable copy, one array type whatever the caller's flags."""
+        F = _bounds_form(np.array(a, order="C"), lo, hi)
         # Finite inputs can still overflow (lo * hi): then the checking constructor refuses F.
         return cls._trusted(F) if np.isfinite(F).all() else cls(F)
 

@@ -259,6 +259,17 @@ def test_measure_sees_through_free_space_only():
     assert y.tolist() == [[True, False, True], [False, True, True], [True, True, True]]
 
 
+def test_measure_of_a_run_is_the_measure_of_each_step():
+    run = arena.simulate(4, 6, 5, 1)
+    env = run.env.exact
+    ys = v.measure(run.truth, env)
+    assert ys.shape == (6, 4, 4)
+    for k, pts in enumerate(run.truth):
+        np.testing.assert_array_equal(ys[k], v.measure(pts, env))
+    with pytest.raises(ValueError, match="points"):
+        v.measure(run.truth[None], env)
+
+
 def test_fixpoint_sweeps_keep_the_exact_truth_and_refine_one_sweep():
     """Team contraction to a fixpoint: measurements from exact rational visibility on E, the
     truth stays in every box, and every box lies in the one-sweep box from the same input."""

@@ -426,3 +426,29 @@ def test_recursion_is_sound_and_rounding_generators_do_not_accumulate():
     for _ in range(10):
         Z = Z.affine_map(M).minkowski_sum(W)
     assert Z.n_generators == 2 + 10 * 3
+
+
+def test_scaled_inverse_is_exact_and_finds_singular_matrices():
+    """``M X = L I`` with ``L > 0`` in integers (the inner polygon's exact repairs use it)."""
+    from optbound.sets.constrained_zonotope_polygon import _scaled_inverse
+
+    rng = np.random.default_rng(3)
+    for n in range(5):
+        for _ in range(20):
+            M = rng.integers(-6, 7, (n, n)).tolist()
+            X_L = _scaled_inverse(M)
+            if X_L is None:
+                assert n > 0 and round(np.linalg.det(np.array(M, dtype=float))) == 0
+                continue
+            X, L = X_L
+            assert L > 0
+            for i in range(n):
+                for j in range(n):
+                    assert sum(M[i][k] * X[k][j] for k in range(n)) == (L if i == j else 0)
+    big = [[2**60 + 1, 3], [5, 2**61]]  # entries far beyond float64 precision
+    X, L = _scaled_inverse(big)
+    assert [[sum(big[i][k] * X[k][j] for k in range(2)) for j in range(2)] for i in range(2)] == [
+        [L, 0],
+        [0, L],
+    ]
+    assert _scaled_inverse([[1, 2], [2, 4]]) is None

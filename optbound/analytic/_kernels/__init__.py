@@ -31,7 +31,11 @@ vectorization of the lane loops. Never ``fastmath``: every error bound assumes I
 round-to-nearest of each operation, and the vector body and scalar remainder of a lane loop
 must give the same bits. ``nogil=True`` on the entry points run by threads; ``_nrt=False`` on
 the loops that take views (no atomic reference count per view, a cache line the threads would
-share); ``inline="always"`` for the steps of a block, so that LLVM sees one loop nest.
+share); ``inline="always"`` for the per-lane scalar helpers (``midrad``, ``strip_kernel.
+locate``) and the Minkowski sum's steps, so that LLVM sees one loop nest. The strip's steps
+(``_validate`` ... ``_finish``), called once per block, are compiled functions of their own
+(``_nrt=False``): numba inlines by copying and typing their IR in the caller, which costs
+more compile time than a call per block of W instances costs at run time.
 
 One compiled entry point per update (``strip_kernel.fuse_range``, ``minkowski_kernel.
 sum_blocks``), with the loop over the blocks written in it, and single calls passing through

@@ -121,13 +121,14 @@ def cholesky_lanes(A, L, m, pivot, at):
                 L[i, j, k] = 0.0
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def check_ellipsoids(c, C, L, m, code, s):
     """``_core.domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
     (n, n, W); writes the Cholesky factors into L and the error codes (same codes and the same
     precedence as the scalar check) into ``code`` (W,) int. ``s`` is (CHECK_ROWS W,) scratch:
     rows at constant offsets (rows as views of a 2-D array would need run-time overlap checks,
-    which keep a loop scalar once there are too many).
+    which keep a loop scalar once there are too many). Called once per block, not inlined: the
+    strip and Minkowski kernels (both summands) pass the same types and share one compile.
 
     Every condition is accumulated branch-free and decided once at the end: ``0 * x`` is NaN
     exactly when x is inf or NaN, so a sum of them flags a non-finite entry."""

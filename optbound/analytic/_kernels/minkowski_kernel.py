@@ -419,13 +419,6 @@ def p_xy_psi(C1, C2, planar, heading, p_trace):
     return (1.0 - best) / best
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
-def _validate_block(c, C, L, m, code, scratch):
-    """``check_ellipsoids`` compiled once (called for both summands); scratch is
-    (CHECK_ROWS W,)."""
-    check_ellipsoids(c, C, L, m, code, scratch)
-
-
 @njit(cache=True, error_model="numpy", inline="always")
 def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
     """The certified sums of the m <= W instances of a block (lane k = instance k of the
@@ -440,8 +433,8 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
     load_matrices(C1, m, C1s)
     load_vectors(c2, m, c2s)
     load_matrices(C2, m, C2s)
-    _validate_block(c1s, C1s, L1, m, codes[0], check)
-    _validate_block(c2s, C2s, L2, m, codes[1], check)
+    check_ellipsoids(c1s, C1s, L1, m, codes[0], check)
+    check_ellipsoids(c2s, C2s, L2, m, codes[1], check)
     code1, code2 = codes
     for k in range(m):
         c = code1[k]
@@ -487,37 +480,26 @@ def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
         margin_out[k] = margin[k] if r == 0 else 0.0
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _four(stack, first, shape):
-    """Four arrays of ``shape``: ``stack[first:first + 4]`` unless the stack is empty, else
-    new allocations."""
-    if stack.shape[0] == 0:
-        return (np.empty(shape), np.empty(shape), np.empty(shape), np.empty(shape))
-    return (stack[first], stack[first + 1], stack[first + 2], stack[first + 3])
+def block_work(n: int, lanes: int = W) -> tuple:
+    """Work space of one thread for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs,
+    rows, codes, check), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,),
+    two integer rows and the scratch of ``check_ellipsoids``.
+
+    Every array is allocated separately: a lane loop storing to one row of an array while
+    reading another is not vectorized by LLVM (their distance depends on the runtime stride).
+    Made in Python, not compiled: it runs once per thread and dimension
+    (:func:`thread_work`), where compiling its ~40 allocations would cost more than it saves."""
+    mats = tuple(np.empty((n, n, lanes)) for _ in range(12))
+    vecs = tuple(np.empty((n, lanes)) for _ in range(8))
+    rows = tuple(np.empty(lanes) for _ in range(24))
+    codes = (np.empty(lanes, np.int64), np.empty(lanes, np.int64))
+    return mats, vecs, rows, codes, np.empty(CHECK_ROWS * W)
 
 
-@njit(cache=True, error_model="numpy")
-def block_work(n, lanes):
-    """Work space of one slice for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs, rows,
-    codes, check), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,), two
-    integer rows and the scratch of ``check_ellipsoids``.
-
-    For full blocks (lanes = W) every array is allocated separately: a lane loop storing to
-    one row of an array while reading another is not vectorized by LLVM (their distance
-    depends on the runtime stride). A smaller slice (the bench's reference on a short batch)
-    gets views of three stacks instead, since ~40 allocations would dominate its time; its
-    loops run in scalar code either way. Same types, same compiled kernel, the same bits."""
-    mat, vec, row = (n, n, lanes), (n, lanes), (lanes,)
-    k = 1 if lanes < W else 0
-    mats, vecs, rows = np.empty((12 * k, *mat)), np.empty((8 * k, *vec)), np.empty((24 * k, lanes))
-    return (
-        _four(mats, 0, mat) + _four(mats, 4, mat) + _four(mats, 8, mat),
-        _four(vecs, 0, vec) + _four(vecs, 4, vec),
-        _four(rows, 0, row) + _four(rows, 4, row) + _four(rows, 8, row)
-        + _four(rows, 12, row) + _four(rows, 16, row) + _four(rows, 20, row),
-        (np.empty(lanes, np.int64), np.empty(lanes, np.int64)),
-        np.empty(CHECK_ROWS * W),
-    )  # fmt: skip
+def thread_work(n: int) -> tuple:
+    """The calling thread's :func:`block_work` for full blocks in dimension n (made once per
+    thread and dimension by ``threads.workspace``)."""
+    return workspace(block_work, n)
 
 
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
@@ -541,16 +523,11 @@ def sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop
     return first_error(out[2], start, stop)
 
 
-def _work(n: int) -> tuple:
-    """The work space of full blocks in dimension n (``threads.workspace``'s factory)."""
-    return block_work(n, W)
-
-
 def sum_range(c1, C1, c2, C2, mode, p_in, planar, heading, out, start, stop):
-    """:func:`sum_blocks` with the calling thread's work space (made once per thread and
-    dimension by ``threads.workspace``): the entry point of both :func:`minkowski_sum` (a
-    batch of one: the same compiled code, so single and batched results agree bitwise) and
-    :func:`minkowski_sum_batch`; both pass their inputs read-only, so that numba compiles
-    it once. Returns the first instance with a non-zero code, or -1."""
-    wk = workspace(_work, c1.shape[1])
+    """:func:`sum_blocks` with the calling thread's work space (:func:`thread_work`): the
+    entry point of both :func:`minkowski_sum` (a batch of one: the same compiled code, so
+    single and batched results agree bitwise) and :func:`minkowski_sum_batch`; both pass
+    their inputs read-only, so that numba compiles it once. Returns the first instance with a
+    non-zero code, or -1."""
+    wk = thread_work(c1.shape[1])
     return sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop)

@@ -121,7 +121,7 @@ N_ROWS = S6 // W + 1
 OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _validate(c, C, a, t, mode, m, L, code, scratch):
     """Step 1 for the block: ``check_ellipsoid``'s codes, then the strip's (b in row ``STRIP_B``)
     and lambda's (row ``LAM_IN``). ``scratch`` is (CHECK_ROWS W,)."""
@@ -147,7 +147,7 @@ def _validate(c, C, a, t, mode, m, L, code, scratch):
             code[k] = r
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _offsets(c, a, t, m):
     """``eps = b - a^T c`` per lane in twice the working precision (Dot2 of Ogita, Rump & Oishi
     2005), with the certified radius ``reps = 2 U |eps| + 2 gamma_{n+1}^2 (|b| + sum |a_i
@@ -173,7 +173,7 @@ def _offsets(c, a, t, m):
         t[REPS + k] = 2.0 * U * abs(res) + 2.0 * g * g * t[mag + k] + TINY
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _project(C, a, m, wh, wl, we, t):
     """Step 2's ``w = C a`` and ``G = a^T C a`` per lane in twice the working precision (Dot2):
     a plain dot product has a relative error of cond(C) U when a is close to a thin axis of E,
@@ -334,7 +334,7 @@ def _shape_factor(gam, mid, half, G, G_lo, rG):
     return Kh, Kl, rK, oh + ol
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _member_centre(c, a, C, wh, wl, we, t, m, out_c):
     """Step 5's centre ``c + gam mid w`` in midpoint-radius arithmetic (``dd``: the squared
     norm of its radii), and per lane ``|out_c|_inf``, ``|a|^2``, ``|wh|^2``, ``tr C``."""
@@ -392,7 +392,7 @@ def _margin_terms(Kh, Kl, rK, om, gam, tr_inv, aa, trace_c, ww, dd, cmax):
     return lmin, lref, rho, centre, Sh, Sl, Sa, alpha, beta, gamma, widen
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
     """Step 5's shape for the lanes with ``t[ACTIVE + k] != 0``: writes the inflated shape into T
     (n, n, W) and returns its margin per lane in ``t[MARGIN]`` (-1.0 if it cannot be
@@ -517,11 +517,11 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
                     t[MARGIN + k] = -1.0
 
 
-@njit(cache=True, error_model="numpy")
-def workspace(n):
+def workspace(n: int) -> tuple:
     """Scratch of one thread: lane vectors (8, n, W), lane matrices (3, n, n, W), the per-lane
     scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
-    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,))."""
+    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,)). Made in
+    Python (once per thread and dimension, ``threads.workspace``), not compiled."""
     return (
         np.zeros((8, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
         np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
@@ -529,7 +529,7 @@ def workspace(n):
     )  # fmt: skip
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
     """Step 4 for the block: ``t[LAM]`` and ``t[GAM] = lam / ((1 + lam Gn) half^2)`` per lane
     (lambda = 0 where there is nothing to fuse: an error, no reduction, inconsistent)."""
@@ -564,7 +564,7 @@ def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
         t[GAM + k] = x / ((1.0 + x * gn) * (t[HALF + k] * t[HALF + k]))
 
 
-@njit(cache=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", _nrt=False)
 def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
     """Step 6 and the block's outputs: a lane whose member was not certified falls back to E
     (lambda = 0); a lane with an error or proven disjoint gets zeros and ``empty``."""

@@ -11,6 +11,7 @@ eqs. (19)-(20)] with the compiled outward-rounded interval operations of
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import lru_cache
 
 import numpy as np
 from numba import njit
@@ -64,13 +65,24 @@ def as_polygons(polygons, name: str = "obstacles") -> list[np.ndarray]:
 
 
 def _check_simple(poly: np.ndarray, name: str) -> None:
-    """Raise unless no two non-adjacent edges meet and the area is not zero, decided exactly.
+    """Raise unless no two non-adjacent edges meet and the area is not zero, decided exactly
+    (:func:`_simplicity_defect`)."""
+    defect = _simplicity_defect(poly.tobytes(), poly.shape[0])
+    if defect is not None:
+        raise ValueError(f"{name} {defect}")
+
+
+@lru_cache(maxsize=256)
+def _simplicity_defect(vertices: bytes, k: int) -> str | None:
+    """Why the polygon of ``k`` float64 vertices (C-order bytes) is not simple, or None.
 
     The compiled interval ``intersect`` [GLH12, eq. (19)] clears most edge pairs at once; the
     pairs it cannot separate (meeting, touching, collinear or close) are decided with
     :func:`~.primitives.intersect` in Fractions. The area is the shoelace sum in Fractions.
+    Kept by the vertices' bytes: the same obstacles are validated by every call of the
+    public predicates (e.g. once per step of a simulation), and the verdict is exact.
     """
-    k = poly.shape[0]
+    poly = np.frombuffer(vertices).reshape(k, 2)
     a, b = _edge_boxes(poly)
     lo, _ = intersect_boxes(a, b, a, b)
     i, j = np.triu_indices(k, 2)
@@ -78,12 +90,13 @@ def _check_simple(poly: np.ndarray, name: str) -> None:
     v = [(Fraction(float(x)), Fraction(float(y))) for x, y in poly]
     for e1, e2 in zip(i[keep], j[keep], strict=True):
         if lo[e1, e2] <= 0.0 and _segments_meet(v[e1], v[(e1 + 1) % k], v[e2], v[(e2 + 1) % k]):
-            raise ValueError(
-                f"{name} is self-intersecting: its edges {e1} and {e2} meet; an obstacle must "
+            return (
+                f"is self-intersecting: its edges {e1} and {e2} meet; an obstacle must "
                 "be a simple polygon"
             )
     if sum(v[n][0] * v[n - 1][1] - v[n - 1][0] * v[n][1] for n in range(k)) == 0:
-        raise ValueError(f"{name} has zero area (its vertices are collinear)")
+        return "has zero area (its vertices are collinear)"
+    return None
 
 
 def _segments_meet(p1, p2, p3, p4) -> bool:
