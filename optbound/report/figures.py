@@ -122,7 +122,9 @@ def _gap_panel(ax, records: list[dict], criterion: str, reference: str) -> None:
     every = np.concatenate(gaps)
     linear = float(np.min(np.abs(every))) >= LINEAR_FROM
     bins = np.linspace(min(0.0, every.min()), every.max(), 25) if linear else _gap_bins(every)
-    ax.hist(gaps, bins=bins, stacked=True, label=[str(key[0]) for key in by_variant])
+    labels = [str(key[0]) for key in by_variant]
+    # One filled outline per variant, not one bar patch per bin: the same stack, drawn faster.
+    ax.hist(gaps, bins=bins, stacked=True, histtype="stepfilled", label=labels)
     if not linear:
         ax.set_xscale("symlog", linthresh=GAP_FLOOR, linscale=0.5)
     ax.axvline(0.0, color="k", lw=0.8)
