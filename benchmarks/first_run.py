@@ -96,7 +96,7 @@ def main(argv=None) -> None:
                 met += f" (load {r['load'][0]:.1f} at the start: not a valid test)"
             verdicts.append(f"{label} {r['wall']:.1f} s against {target:g} s: {met}")
     if args.suite == "quick" and args.jobs == 2:
-        print("Issue 23's targets (2 cores, load <= 1.5): " + "; ".join(verdicts))
+        print("Targets of issue 23 (2 cores, load <= 1.5): " + "; ".join(verdicts))
 
 
 if __name__ == "__main__":

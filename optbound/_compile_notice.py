@@ -25,13 +25,13 @@ from numba.core import event
 ENV = "OPTBOUND_COMPILE_NOTICE"
 #: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, in all the
 #: run's processes, as measured by ``python -m benchmarks.compile_cost --suite quick --jobs 2``
-#: (105 s on a 2-core Intel Xeon at load 5-6, of which 6 s for the speed benchmark's
-#: compiled baseline). With two or more workers the warm-up (``optbound.bench.warmup``)
-#: spreads it over two processes, so the wall time is about half of it on an idle machine.
-COMPILE_CPU_SECONDS = 105
+#: (82 s on the 2-core Intel Xeon test host at load 0.7, numba 0.68). With two or more workers
+#: the warm-up (``optbound.bench.warmup``) splits it over two processes, so the first run waits
+#: about half of it longer than later runs (``python -m benchmarks.first_run``).
+COMPILE_CPU_SECONDS = 85
 MESSAGE = (
-    "optbound: compiling numerical kernels once (about {seconds} s of CPU in all, first run "
-    "only; later runs load them from numba's cache) ..."
+    "optbound: compiling numerical kernels once (first run only: about {seconds} s of CPU, "
+    "spread over the worker processes; later runs load them from numba's cache) ..."
 )
 
 

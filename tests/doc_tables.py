@@ -12,6 +12,9 @@ rewrites them in place, in whichever page (README.md or ``docs/**/*.md``) holds 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import functools
+import io
 import re
 from collections.abc import Callable
 from pathlib import Path
@@ -175,6 +178,34 @@ def _bench_profile() -> str:
     )
 
 
+@functools.cache
+def _first_run_output() -> list[str]:
+    """The lines ``python -m benchmarks.first_run`` prints (a cold and a warm bench; minutes),
+    measured once for both blocks that quote it."""
+    from benchmarks import first_run
+
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        first_run.main([])
+    return [line for line in printed.getvalue().splitlines() if not line.startswith("  stderr")]
+
+
+def _first_run() -> str:
+    """The first and second ``optbound bench``'s wall and CPU times, as first_run prints them."""
+    lines = _first_run_output()
+    return (
+        "Output of `python -m tests.doc_tables first-run`:\n\n```text\n"
+        + "\n".join(lines)
+        + "\n```"
+    )
+
+
+def _first_run_verdict() -> str:
+    """first_run's last line: both runs' wall times against issue 23's targets."""
+    host = _first_run_output()[0].split("; ", 1)[1]
+    return f"{_first_run_output()[-1]} (on {host}; `python -m benchmarks.first_run`)"
+
+
 GENERATORS: dict[str, Callable[[], str]] = {
     "battery": _battery,
     "clip-effect": _clip_effect,
@@ -183,6 +214,8 @@ GENERATORS: dict[str, Callable[[], str]] = {
     "speed-analytic": _speed_analytic,
     "margin": _margin,
     "bench-profile": _bench_profile,
+    "first-run": _first_run,
+    "first-run-verdict": _first_run_verdict,
 }
 
 
