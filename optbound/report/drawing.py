@@ -36,8 +36,9 @@ class Drawings:
 
     def __init__(self) -> None:
         self.calls: list[tuple[Callable[..., Path], dict]] = []
+        self.costs: list[float] = []
 
-    def add(self, draw: Callable[..., Path], path: Path, **arguments) -> str:
+    def add(self, draw: Callable[..., Path], path: Path, cost: float = 1.0, **arguments) -> str:
         """Queue ``draw(path=path, **arguments)``.
 
         Parameters
@@ -47,6 +48,9 @@ class Drawings:
             and returns it.
         path : Path
             The PNG file it writes.
+        cost : float
+            Its rough cost relative to the others: over several processes the costliest are
+            drawn first, so that no long figure starts last.
         **arguments
             Its other arguments, by name.
 
@@ -56,6 +60,7 @@ class Drawings:
             The file name the figure will have, for the Markdown that shows it.
         """
         self.calls.append((draw, {**arguments, "path": path}))
+        self.costs.append(cost)
         return Path(path).name
 
     def draw(self, jobs: int = 1) -> None:
@@ -76,7 +81,9 @@ class Drawings:
             for draw, arguments in self.calls:
                 draw(**arguments)
             return
+        order = sorted(range(len(self.calls)), key=lambda i: -self.costs[i])
         context = multiprocessing.get_context("fork")
         with ProcessPoolExecutor(workers, mp_context=context) as pool:
-            for future in [pool.submit(draw, **arguments) for draw, arguments in self.calls]:
+            futures = [pool.submit(self.calls[i][0], **self.calls[i][1]) for i in order]
+            for future in futures:
                 future.result()
