@@ -52,6 +52,8 @@ BATCHES = {
 }
 REPEATS = 7
 SAMPLE_SECONDS = 0.02
+#: Seconds of discarded one-call calls before the one-call timing (each of ours, reference).
+WARM_UP_SECONDS = 0.1
 #: Per suite: alternating rounds, seconds per sample, seconds per batch of SDP solves.
 SAMPLING = {
     "tiny": {"rounds": 5, "sample": 0.01, "sdp_batch": 0.02},
@@ -288,6 +290,10 @@ def _timings(one, ours, reference, inputs, batches, sampling) -> dict:
     """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
     batch size, ``ours(*inputs[:count])`` against ``reference(*inputs[:count])`` (both
     return new arrays); ``sampling`` the keyword arguments of :func:`alternating_calls`."""
+    for call in one:  # the first ~0.1 s of calls in a process run at half speed: discarded
+        warm_until = time.perf_counter() + WARM_UP_SECONDS
+        while time.perf_counter() < warm_until:
+            call()
     out = {"one": alternating_calls(*one, **sampling)}
     for count in batches:
         args = tuple(x[:count] for x in inputs)
