@@ -53,7 +53,7 @@ BATCHES = {
 REPEATS = 7
 SAMPLE_SECONDS = 0.02
 #: Seconds of discarded one-call calls before the one-call timing (each of ours, reference).
-WARM_UP_SECONDS = 0.1
+WARM_UP_SECONDS = 0.02
 #: Per suite: alternating rounds, seconds per sample, seconds per batch of SDP solves.
 SAMPLING = {
     "tiny": {"rounds": 5, "sample": 0.01, "sdp_batch": 0.02},
@@ -290,7 +290,7 @@ def _timings(one, ours, reference, inputs, batches, sampling) -> dict:
     """Medians of ours vs the reference: ``one`` is a pair of one-call functions; for each
     batch size, ``ours(*inputs[:count])`` against ``reference(*inputs[:count])`` (both
     return new arrays); ``sampling`` the keyword arguments of :func:`alternating_calls`."""
-    for call in one:  # the first ~0.1 s of calls in a process run at half speed: discarded
+    for call in one:  # the first calls in a process run at about half speed: discarded
         warm_until = time.perf_counter() + WARM_UP_SECONDS
         while time.perf_counter() < warm_until:
             call()
