@@ -89,11 +89,7 @@ def test_localize_paves_as_the_interval_layer():
     d[[2, 7]] = [1.0, 6.5]
     X0 = [[-5.5, 5.5], [-4.5, 4.5], [-np.pi, np.pi]]
     ours = localize(rooms.BELT_ROOM, belt, d, X0, 0.2, q=2)
-    box, _ = sonar._initial_box(X0)
-    plain = list(sonar_tests(rooms.BELT_ROOM, belt, d))
-    ref = relaxed_paving(plain, 2, box, 0.2, defer_below=sonar.DEFER_BELOW)
-    for mine, theirs in ((ours.inner, ref.inner), (ours.boundary, ref.boundary)):
-        assert np.array_equal(mine, theirs)
+    _assert_paved_as_numpy(ours, belt, d, X0, 2, 0.2)
     assert ours.contains(truth)
 
 
@@ -111,12 +107,17 @@ def test_shared_counts_resume_at_another_q_and_pave_as_a_fresh_run():
         ours = localize(rooms.BELT_ROOM, belt, d, X0, 0.3, q=1)
         assert list(sonar._SHARED[-1].values()) == [tests]
     assert not sonar._SHARED  # outside the block every call starts afresh
+    _assert_paved_as_numpy(ours, belt, d, X0, 1, 0.3)
+    assert ours.contains(truth)
+
+
+def _assert_paved_as_numpy(ours, belt, d, X0, q: int, eps: float) -> None:
+    """``ours`` has the inner and boundary boxes of the numpy interval layer's q-relaxed paving."""
     box, _ = sonar._initial_box(X0)
     plain = list(sonar_tests(rooms.BELT_ROOM, belt, d))
-    ref = relaxed_paving(plain, 1, box, 0.3, defer_below=sonar.DEFER_BELOW)
+    ref = relaxed_paving(plain, q, box, eps, defer_below=sonar.DEFER_BELOW)
     for mine, theirs in ((ours.inner, ref.inner), (ours.boundary, ref.boundary)):
         assert np.array_equal(mine, theirs)
-    assert ours.contains(truth)
 
 
 def test_a_too_short_wall_is_refused():
