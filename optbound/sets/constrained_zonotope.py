@@ -34,6 +34,7 @@ from optbound.sets.certified import (
     split,
     sum_centers,
 )
+from optbound.sets.polygon_outline import PolygonOutline
 from optbound.sets.zonotope import Zonotope, as_zonotope, center_generators
 from optbound.sets.zonotope_reduction import generator_budget, reduce_generators
 
@@ -58,7 +59,7 @@ def _zeros(rows: int, cols: int) -> np.ndarray:
     return np.zeros((rows, cols))
 
 
-class ConstrainedZonotope(ConvexSet):
+class ConstrainedZonotope(PolygonOutline, ConvexSet):
     """Constrained zonotope ``{c + G xi : ||xi||_inf <= 1, A xi = b}`` [SRMB, Def. 1].
 
     Parameters
@@ -716,50 +717,6 @@ class ConstrainedZonotope(ConvexSet):
             method="highs",
         )
         return None if res.status != 0 else res.x
-
-    def boundary(self, resolution: int = 0) -> np.ndarray:
-        """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
-        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon).
-
-        Parameters
-        ----------
-        resolution : int, default 0
-            Unused (protocol compatibility).
-
-        Returns
-        -------
-        ndarray, shape (k + 1, 2)
-            The closed polygon.
-
-        Raises
-        ------
-        ValueError
-            If the set is not 2-D.
-        """
-        V = self.vertices()
-        return np.vstack([V, V[:1]])
-
-    def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
-        """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``
-        keywords; ``fill=False`` unless given).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes, optional
-            Target axes (the current axes if None).
-        dims : tuple of int, default (0, 1)
-            The two coordinates shown.
-        **kwargs
-            Passed to ``ax.fill``.
-
-        Returns
-        -------
-        list of matplotlib.patches.Polygon
-            What ``ax.fill`` returns.
-        """
-        from optbound.sets.zonotope_membership import plot_polygon
-
-        return plot_polygon(self.project(dims).vertices(), ax, kwargs)
 
 
 def _ccw_unique(pts: np.ndarray) -> np.ndarray:

@@ -24,6 +24,7 @@ from optbound.sets.certified import (
     split,
     sum_centers,
 )
+from optbound.sets.polygon_outline import PolygonOutline
 from optbound.sets.zonotope_reduction import generator_budget, reduce_generators
 
 
@@ -67,7 +68,7 @@ def center_generators(c, G, c_name: str = "c", G_name: str = "G") -> tuple[np.nd
     return c.copy(), G.copy()
 
 
-class Zonotope(ConvexSet):
+class Zonotope(PolygonOutline, ConvexSet):
     """Zonotope ``Z = <c, G> = {c + G xi : ||xi||_inf <= 1}``.
 
     Parameters
@@ -496,50 +497,6 @@ class Zonotope(ConvexSet):
         start = self._c - G.sum(axis=1)
         edges = np.hstack([G, -G]) * 2.0
         return start + np.vstack([np.zeros(2), np.cumsum(edges.T, axis=0)[:-1]])
-
-    def boundary(self, resolution: int = 0) -> np.ndarray:
-        """The closed polygon of :meth:`vertices` (first vertex repeated), for the plots'
-        ``Outlined`` protocol; ``resolution`` is unused (the outline is the exact polygon).
-
-        Parameters
-        ----------
-        resolution : int, default 0
-            Unused (protocol compatibility).
-
-        Returns
-        -------
-        ndarray, shape (k + 1, 2)
-            The closed polygon.
-
-        Raises
-        ------
-        ValueError
-            If the zonotope is not 2-D.
-        """
-        V = self.vertices()
-        return np.vstack([V, V[:1]])
-
-    def plot(self, ax=None, dims: tuple[int, int] = (0, 1), **kwargs):
-        """Draw the projection on ``dims`` as a polygon outline (matplotlib ``ax.fill``
-        keywords; ``fill=False`` unless given).
-
-        Parameters
-        ----------
-        ax : matplotlib.axes.Axes, optional
-            Target axes (the current axes if None).
-        dims : tuple of int, default (0, 1)
-            The two coordinates shown.
-        **kwargs
-            Passed to ``ax.fill``.
-
-        Returns
-        -------
-        list of matplotlib.patches.Polygon
-            What ``ax.fill`` returns.
-        """
-        from optbound.sets.zonotope_membership import plot_polygon
-
-        return plot_polygon(self.project(dims).vertices(), ax, kwargs)
 
 
 def as_zonotope(name: str, Y, dim: int) -> Zonotope:

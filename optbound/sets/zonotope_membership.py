@@ -193,28 +193,3 @@ def tri_contains(Z, boxes) -> np.ndarray:
         outside |= (s.lo > h.hi) | (s.hi < -h.hi)
         inside &= (s.hi <= h.lo) & (s.lo >= -h.lo)
     return from_masks(inside & ~outside, outside)
-
-
-def plot_polygon(vertices: np.ndarray, ax, kwargs: dict):
-    """``ax.fill`` of a polygon (``fill=False`` unless given); the current axes if ``ax`` is
-    None.
-
-    Parameters
-    ----------
-    vertices : np.ndarray, shape (k, 2)
-        Polygon vertices in order.
-    ax : matplotlib.axes.Axes or None
-        Target axes.
-    kwargs : dict
-        Keywords of ``ax.fill``.
-
-    Returns
-    -------
-    list of matplotlib.patches.Polygon
-        What ``ax.fill`` returns.
-    """
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        ax = plt.gca()
-    return ax.fill(vertices[:, 0], vertices[:, 1], **{"fill": False, **kwargs})
