@@ -366,13 +366,9 @@ def _cpu_per_call(fn, seconds: float = 0.2) -> float:
 
 def host() -> str:
     """The host name and its CPU model."""
-    model = platform.processor() or "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as info:
-            model = next(line.split(":", 1)[1].strip() for line in info if "model name" in line)
-    except (OSError, StopIteration):
-        pass
-    return f"{platform.node()}, {model}, {os.cpu_count()} CPUs"
+    from optbound.bench.target import processor_name
+
+    return f"{platform.node()}, {processor_name()}, {os.cpu_count()} CPUs"
 
 
 def _print_batches(seed: int) -> None:
