@@ -63,8 +63,9 @@ def _analytic() -> None:
 
 
 def _localization() -> None:
-    """The localization models' kernels: polygon and visibility predicates [GLH12], the
-    landmark solve [HS96], the affine map's inflation, a strip's quadratic form."""
+    """The localization models' kernels: polygon and visibility predicates and the team
+    sweep of the tracker [GLH12], the landmark solve [HS96], the affine map's inflation, a
+    strip's quadratic form."""
     from optbound import QuadraticSet
     from optbound.analytic.affine import affine_map
     from optbound.localization import landmarks, visibility
@@ -79,6 +80,8 @@ def _localization() -> None:
     boxes = np.array([[[0.0, 1.0], [-0.5, 0.5]], [[4.0, 5.0], [-0.5, 0.5]]])
     visibility.visibility_test(boxes[:1], boxes[1:], env.outer)
     visibility.luvia(0, [False, False], boxes, env, 0.5)
+    y = visibility.measure(boxes.mean(axis=-1), env.exact)
+    visibility.track(boxes, [0.9, 1.1], [[0.0, 0.0]], 0.01, y[None], env, 0.5)
 
 
 def _sonar() -> None:
@@ -99,7 +102,9 @@ def _optimal() -> None:
     from optbound import Strip, optimal
 
     E1, E2 = _ellipsoids()
-    optimal.outer_ellipsoid([E1, Strip([1.0, 0.0, 0.0], 0.5)], lower_bound=True)
+    # Two strips: the extents solve that clips their ranges runs only for two rows or more.
+    strips = [Strip([1.0, 0.0, 0.0], 0.5), Strip([0.0, 1.0, 0.0], 0.5)]
+    optimal.outer_ellipsoid([E1, *strips], lower_bound=True)
     optimal.minkowski_outer(E1, E2)
     optimal.mvee(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.5]]))
 

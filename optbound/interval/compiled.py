@@ -49,19 +49,19 @@ def up1(x):
     return fmax(x * (1.0 + np.copysign(_EPS, x)) + _TINY, -_MAX)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def isub(al, ah, bl, bh):
     """``[al, ah] - [bl, bh]``, rounded outward."""
     return down1(al - bh), up1(ah - bl)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def iadd(al, ah, bl, bh):
     """``[al, ah] + [bl, bh]``, rounded outward."""
     return down1(al + bl), up1(ah + bh)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def imul(al, ah, bl, bh):
     """``[al, ah] * [bl, bh]`` for finite bounds, rounded outward.
 
@@ -92,7 +92,7 @@ def imul(al, ah, bl, bh):
     return down1(lo), up1(hi)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def isqr(al, ah):
     """``[al, ah] ** 2`` (tight: the smallest and largest absolute values squared)."""
     mig = max(max(al, -ah), 0.0)
@@ -100,7 +100,7 @@ def isqr(al, ah):
     return max(fmin(mig * mig * (1.0 - _EPS) - _TINY, _MAX), 0.0), mag * mag * (1.0 + _EPS) + _TINY
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def isqrt(al, ah):
     """Square root on its domain (``_transcendental.sqrt``); empty ``(inf, -inf)`` if ``ah < 0``."""
     if ah < 0.0:
@@ -108,7 +108,7 @@ def isqrt(al, ah):
     return max(down1(np.sqrt(max(al, 0.0))), 0.0), up1(np.sqrt(max(ah, 0.0)))
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def idiv(al, ah, bl, bh):
     """``[al, ah] / [bl, bh]`` as ``_arith.div``: hull of the extended quotient where ``b`` holds 0.
 

@@ -18,6 +18,7 @@ import numpy as np
 from numba import njit
 
 from optbound._core import box_array, real_array
+from optbound._core.compiled_copy import copy_into
 from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.localization.environment import Environment
 from optbound.localization.geometry import (
@@ -122,7 +123,7 @@ def _consistent(box, i, y, boxes, inner, outer, pending) -> int:
 def _grow(arr, size: int):
     """``arr`` with its first axis enlarged to ``size`` (the first rows copied)."""
     out = np.empty((size, *arr.shape[1:]), dtype=arr.dtype)
-    out[: len(arr)] = arr
+    copy_into(out[: len(arr)], arr)
     return out
 
 
@@ -145,7 +146,7 @@ def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
     verdict_of = np.full(cap, -1, dtype=np.int64)  # -1: not tested yet
     child_of = np.full(cap, -1, dtype=np.int64)  # its low child (the high one follows)
     depth_of = np.empty(cap, dtype=np.int64)
-    box_of[0] = boxes[i]
+    copy_into(box_of[0], boxes[i])
     pending_of[0] = True
     pending_of[0, i] = False
     depth_of[0] = 0
@@ -185,8 +186,8 @@ def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
                     mid = 0.5 * (box[ax, 0] + box[ax, 1])
                     low = nodes
                     for k in range(low, low + 2):
-                        box_of[k] = box
-                        pending_of[k] = pending_of[node]
+                        copy_into(box_of[k], box)
+                        copy_into(pending_of[k], pending_of[node])
                         depth_of[k] = depth_of[node] + 1
                     box_of[low, ax, 1] = mid
                     box_of[low + 1, ax, 0] = mid
@@ -210,7 +211,7 @@ def _sweep_kernel(y, cur, inner, outer, eps, max_depth) -> int:
         _luvia_kernel(i, y[i], cur, inner, outer, eps, max_depth, hull)
         if hull[0, 0] > hull[0, 1]:
             return i
-        cur[i] = hull
+        copy_into(cur[i], hull)
     return -1
 
 

@@ -159,7 +159,10 @@ def core_set(points: np.ndarray) -> np.ndarray:
 @njit(cache=True)
 def _refresh(Q: np.ndarray, u: np.ndarray, X_inv: np.ndarray, w: np.ndarray) -> None:
     """``X^{-1}`` and ``w_i = q_i^T X^{-1} q_i`` from scratch (in place)."""
-    X_inv[:, :] = np.linalg.inv((Q.T * u) @ Q)
+    inverse = np.linalg.inv((Q.T * u) @ Q)  # Fortran-ordered, as numba's inverses are
+    for a in range(X_inv.shape[0]):
+        for b in range(X_inv.shape[1]):
+            X_inv[a, b] = inverse[a, b]
     for i in range(Q.shape[0]):
         w[i] = _quad(X_inv, Q[i])
 

@@ -73,6 +73,7 @@ import numpy as np
 from numba import njit
 
 from optbound._core import validate as v
+from optbound._core.compiled_copy import copy_into
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
 from optbound.optimal.khachiyan import _quad, core_set, covariance, khachiyan_weights
@@ -486,12 +487,12 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
     Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
     Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
     metric = (in_cols, mean, inv)
-    lifted[:n] = x0
+    copy_into(lifted[:n], x0)
     _apply(F, lifted, Fx0, q0)  # every ray of (b) starts at x0
     for p in range(m):
         _matvec(inv, points[p], mean, gradient)  # zero outside in_cols (scattered zeros)
-        G[:] = gradient
-        lifted[:n] = points[p]
+        copy_into(G, gradient)
+        copy_into(lifted[:n], points[p])
         _apply(F, lifted, Fx, q)  # the normals are 2 Fx[i, :n]
         scale = 1.0 + np.sqrt(_dot(points[p], points[p]))
         for i in range(k):
@@ -512,7 +513,7 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
         if shift.shape[0] == 0:
             _matvec(chol.T, gradient, zero, move)
         else:
-            move[:] = shift[p]
+            copy_into(move, shift[p])
         _matvec(chol_inv, points[p], x0, G)  # G is now y
         size = np.sqrt(_dot(move, move))
         if size > 0.0:
@@ -550,7 +551,7 @@ def _try(membership, metric, base, t, direction, points, level, p, lifted) -> bo
             value += (lifted[a] - mean[a]) * row
     if not value > level[p] or not _inside_one(membership, lifted):
         return False
-    points[p] = lifted[:n]
+    copy_into(points[p], lifted[:n])
     level[p] = value
     return True
 
