@@ -23,7 +23,12 @@ from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
-from optbound.analytic._kernels.minkowski_kernel import p_volume_lanes, thread_work
+from optbound.analytic._kernels.minkowski_kernel import (
+    NEWTON_ENTRY,
+    P_VOLUME_ENTRY,
+    call_p_volume,
+    thread_work,
+)
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 # Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
@@ -75,9 +80,10 @@ def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
     same blocks of W lanes and the same work space ``wk`` (``minkowski_kernel.thread_work``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
     member ``reference.minkowski_member``. Its views are not reference counted (as ours and
-    the strip reference's are not). The solver's work space has the tuple lengths
-    ``sum_blocks`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
-    mats, vecs, rows, _, _ = wk
+    the strip reference's are not). The solver is called as ``sum_blocks`` calls it: by
+    address (``wk``'s entries), with a work space of the same tuple lengths (7 mats, 3 vecs,
+    14 rows), so that both run one compiled solver and neither links it in."""
+    mats, vecs, rows, _, _, entries = wk
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
@@ -88,7 +94,10 @@ def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
         cholesky_lanes(C2s, L2, m, pivot, 0)
         for k in range(m):
             act[k] = 1.0
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:12], vecs[:3], rows[3:17])
+        call_p_volume(
+            entries[P_VOLUME_ENTRY],
+            (C1s, C2s, L1, L2, m, act, p, mats[5:12], vecs[:3], rows[3:17], entries[NEWTON_ENTRY]),
+        )
         for k in range(m):
             i = base + k
             minkowski_member(c1[i], C1[i], c2[i], C2[i], p[k], out_c[i], out_C[i])
