@@ -181,7 +181,7 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _strip_outputs(n_batch: int, n: int) -> tuple:
-    return ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    return ellipsoid_outputs(n_batch, n, *strip_kernel.OUT_DTYPES)
 
 
 _NO_LAM, _NO_IDX = np.zeros(1), np.zeros(0, np.int64)
@@ -224,7 +224,8 @@ def _fuse_prange(c, C, a, b, lam, idx, out, ws, slices):
     iteration per thread of numba's threading layer), each with its own workspace."""
     n_batch = c.shape[0]
     for s in prange(slices):
-        own = (ws[0][s], ws[1][s], ws[2][s], ws[3][s], ws[4][s], ws[5][s], ws[6][s], ws[7][s])
+        own = (ws[0][s], ws[1][s], ws[2][s], ws[3][s], ws[4][s], ws[5][s], ws[6][s], ws[7][s],
+               ws[8][s], ws[9][s], ws[10][s])  # fmt: skip
         start, stop = s * n_batch // slices, (s + 1) * n_batch // slices
         strip_kernel.fuse_range(
             c,
