@@ -12,7 +12,7 @@ lane-parallel p solver and evaluates the member with the plain formula.
 
 from __future__ import annotations
 
-from functools import partial
+from functools import cache, partial
 from pathlib import Path
 from types import FunctionType
 
@@ -22,13 +22,14 @@ from numba import njit, prange
 from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
-from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
+from optbound.analytic._kernels.lanes import W, cholesky_block, load_matrices
 from optbound.analytic._kernels.minkowski_kernel import (
     NEWTON_ENTRY,
     P_VOLUME_ENTRY,
     call_p_volume,
     thread_work,
 )
+from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 # Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
@@ -74,15 +75,26 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
+_call_cholesky = caller(cholesky_block)
+
+
+@cache
+def _cholesky_address() -> int:
+    """Address of ``lanes.cholesky_block`` for the work space's arrays (``native_call``)."""
+    m3, r1 = np.empty((1, 1, 1)), np.empty(1)
+    return address(cholesky_block, m3, m3, 0, r1)
+
+
 @njit(**_OPTIONS, _nrt=False)
-def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
+def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, cholesky, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and the same work space ``wk`` (``minkowski_kernel.thread_work``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
     member ``reference.minkowski_member``. Its views are not reference counted (as ours and
     the strip reference's are not). The solver is called as ``sum_blocks`` calls it: by
     address (``wk``'s entries), with a work space of the same tuple lengths (7 mats, 3 vecs,
-    14 rows), so that both run one compiled solver and neither links it in."""
+    14 rows), so that both run one compiled solver and neither links it in; the Cholesky
+    factors by address too (``cholesky``, ``lanes.cholesky_block``)."""
     mats, vecs, rows, _, _, entries = wk
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
@@ -90,8 +102,8 @@ def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
         m = min(W, stop - base)
         load_matrices(C1[base:], m, C1s)
         load_matrices(C2[base:], m, C2s)
-        cholesky_lanes(C1s, L1, m, pivot, 0)
-        cholesky_lanes(C2s, L2, m, pivot, 0)
+        _call_cholesky(cholesky, (C1s, L1, m, pivot))
+        _call_cholesky(cholesky, (C2s, L2, m, pivot))
         for k in range(m):
             act[k] = 1.0
         call_p_volume(
@@ -117,7 +129,7 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start: int, stop: int) -> None
         The instances to sum.
     """
     wk = thread_work(c1.shape[1])
-    minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop)
+    minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, _cholesky_address(), start, stop)
 
 
 def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:

@@ -10,8 +10,9 @@ costs nothing measurable at run time.
 The address is a run-time value (never a constant of the caller's code, so that numba's
 on-disk cache stays valid across processes): :func:`address` compiles (or loads from the
 cache) the callee for the argument types of the call and returns its entry point; the caller
-receives it as an argument and calls :func:`caller`'s intrinsic with it. The intrinsic checks,
-when the caller is compiled, that the callee has been compiled for exactly the types it passes.
+(an ``njit`` kernel) receives it as an argument and calls :func:`caller`'s intrinsic with
+it. The intrinsic checks, when the caller is compiled, that the callee has been compiled for
+exactly the types it passes.
 """
 
 from __future__ import annotations
