@@ -447,71 +447,6 @@ def p_xy_psi(C1, C2, planar, heading, p_trace):
     return (1.0 - best) / best
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
-    """The certified sums of the m <= W instances of a block (lane k = instance k of the
-    views c1, C1, c2, C2, p_in and out, which start at the block). ``wk`` = (mats, vecs, rows,
-    codes, check, entries) is the block work space (:func:`block_work`); the validation, the
-    p solver and the inflation are called by address (``entries``, :func:`entry_points`)."""
-    out_c, out_C, code, p_out, margin_out = out
-    mats, vecs, rows, codes, check, entries = wk
-    c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
-    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
-    p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
-    load_vectors(c1, m, c1s)
-    load_matrices(C1, m, C1s)
-    load_vectors(c2, m, c2s)
-    load_matrices(C2, m, C2s)
-    call_check(entries[CHECK_ENTRY], (c1s, C1s, L1, m, codes[0], check))
-    call_check(entries[CHECK_ENTRY], (c2s, C2s, L2, m, codes[1], check))
-    code1, code2 = codes
-    for k in range(m):
-        c = code1[k]
-        code1[k] = c if c != 0 else (code2[k] + 10 if code2[k] != 0 else 0)
-        act[k] = 1.0 if code1[k] == 0 else 0.0
-    n = c1s.shape[0]
-    if mode == P_VOLUME:
-        # Exactly the work space of its docstring (7 mats, 3 vecs, 14 rows): tuples of other
-        # lengths are other types, and each would compile the solver again.
-        call_p_volume(
-            entries[P_VOLUME_ENTRY],
-            (C1s, C2s, L1, L2, m, act, p, mats[4:11], vecs[4:7], rows[5:19], entries[NEWTON_ENTRY]),
-        )
-    elif mode == P_GIVEN:
-        for k in range(m):
-            p[k] = p_in[k]
-    else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
-        sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
-        if mode == P_XY_PSI:
-            for k in range(m):  # scalar calls: a short cubic per instance
-                if act[k] > 0.0:
-                    p[k] = p_xy_psi(C1[k], C2[k], planar, heading, p[k])
-    for k in range(m):
-        if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
-            code1[k] = BAD_KAPPA
-        onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
-    S, D = mats[4], mats[5]
-    for i in range(n):
-        for k in range(m):
-            oc[i, k], dc[i, k] = mr_add(c1s[i, k], 0.0, c2s[i, k], 0.0)
-        for j in range(i + 1):
-            for k in range(m):
-                q, rq = mr_div(C1s[i, j, k], 0.0, p[k], 0.0)
-                s, rs = mr_add(q, rq, C2s[i, j, k], 0.0)
-                S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
-    T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
-    call_inflate(entries[INFLATE_ENTRY], (S, D, oc, dc, T, mats[6], m, margin, rows[5:]))
-    store_vectors(oc, m, out_c)
-    store_matrices(T, m, out_C)
-    for k in range(m):
-        r = code1[k]
-        if r == 0 and margin[k] < 0.0:
-            r = OUT_OF_DOMAIN
-        code[k] = r
-        p_out[k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
-        margin_out[k] = margin[k] if r == 0 else 0.0
-
-
 def block_work(n: int, lanes: int = W) -> tuple:
     """Work space of one thread for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs,
     rows, codes, check, entries), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows
@@ -538,21 +473,93 @@ def thread_work(n: int) -> tuple:
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes, ``wk`` the work space :func:`block_work`; ``out`` = (centres,
-    shapes, code, p, margin). Returns the first instance with a non-zero code, or -1.
+    in blocks of W lanes, ``wk`` = (mats, vecs, rows, codes, check, entries) the work space
+    :func:`block_work`; ``out`` = (centres, shapes, code, p, margin). Returns the first
+    instance with a non-zero code, or -1. Per block (lane k = instance ``base + k``): load,
+    validate both summands, choose p, evaluate the member in midpoint-radius arithmetic,
+    inflate, store; the validation, the p solver and the inflation are called by address
+    (``entries``, :func:`entry_points`).
 
-    The only compiled entry point of the sum, with the loop over the blocks written here
-    rather than in a compiled caller: a caller would link the lane loop nests in and LLVM
-    would optimize and emit them again. Compiled without numba's reference counting
+    The only compiled entry point of the sum, with the loop over the blocks and the block's
+    steps written here rather than in a compiled caller or an inlined helper: a caller would
+    link the lane loop nests in and LLVM would optimize and emit them again, and numba
+    inlines a helper by copying and typing its IR again. Compiled without numba's reference counting
     (``_nrt=False``): every view and every work tuple taken per block would otherwise
     increment and decrement its parent's counter atomically (microseconds per block). Nothing
     here allocates. Each block is given views from its first instance (``lanes``: no
     wraparound code)."""
+    mats, vecs, rows, codes, check, entries = wk
+    c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
+    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
+    p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
     for base in range(start, stop, W):
         m = min(W, stop - base)
-        o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:])
-        _sum_block(c1[base:], C1[base:], c2[base:], C2[base:], mode, p_in[base:], planar,
-                   heading, o, m, wk)  # fmt: skip
+        C1b, C2b, p_b = C1[base:], C2[base:], p_in[base:]
+        code, p_out, margin_out = out[2][base:], out[3][base:], out[4][base:]
+        load_vectors(c1[base:], m, c1s)
+        load_matrices(C1b, m, C1s)
+        load_vectors(c2[base:], m, c2s)
+        load_matrices(C2b, m, C2s)
+        call_check(entries[CHECK_ENTRY], (c1s, C1s, L1, m, codes[0], check))
+        call_check(entries[CHECK_ENTRY], (c2s, C2s, L2, m, codes[1], check))
+        code1, code2 = codes
+        for k in range(m):
+            c = code1[k]
+            code1[k] = c if c != 0 else (code2[k] + 10 if code2[k] != 0 else 0)
+            act[k] = 1.0 if code1[k] == 0 else 0.0
+        n = c1s.shape[0]
+        if mode == P_VOLUME:
+            # Exactly the work space of its docstring (7 mats, 3 vecs, 14 rows): tuples of other
+            # lengths are other types, and each would compile the solver again.
+            call_p_volume(
+                entries[P_VOLUME_ENTRY],
+                (
+                    C1s,
+                    C2s,
+                    L1,
+                    L2,
+                    m,
+                    act,
+                    p,
+                    mats[4:11],
+                    vecs[4:7],
+                    rows[5:19],
+                    entries[NEWTON_ENTRY],
+                ),
+            )
+        elif mode == P_GIVEN:
+            for k in range(m):
+                p[k] = p_b[k]
+        else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
+            sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
+            if mode == P_XY_PSI:
+                for k in range(m):  # scalar calls: a short cubic per instance
+                    if act[k] > 0.0:
+                        p[k] = p_xy_psi(C1b[k], C2b[k], planar, heading, p[k])
+        for k in range(m):
+            if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
+                code1[k] = BAD_KAPPA
+            onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
+        S, D = mats[4], mats[5]
+        for i in range(n):
+            for k in range(m):
+                oc[i, k], dc[i, k] = mr_add(c1s[i, k], 0.0, c2s[i, k], 0.0)
+            for j in range(i + 1):
+                for k in range(m):
+                    q, rq = mr_div(C1s[i, j, k], 0.0, p[k], 0.0)
+                    s, rs = mr_add(q, rq, C2s[i, j, k], 0.0)
+                    S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
+        T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
+        call_inflate(entries[INFLATE_ENTRY], (S, D, oc, dc, T, mats[6], m, margin, rows[5:]))
+        store_vectors(oc, m, out[0][base:])
+        store_matrices(T, m, out[1][base:])
+        for k in range(m):
+            r = code1[k]
+            if r == 0 and margin[k] < 0.0:
+                r = OUT_OF_DOMAIN
+            code[k] = r
+            p_out[k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
+            margin_out[k] = margin[k] if r == 0 else 0.0
     return first_error(out[2], start, stop)
 
 
