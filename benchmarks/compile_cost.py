@@ -121,8 +121,9 @@ def measure_jobs(suite: str, jobs: int) -> dict:
     return {"events": events, "run_cpu": run_cpu, "run_wall": wall}
 
 
-def report_jobs(result: dict, suite: str, jobs: int) -> None:
-    """Print the per-process compile table, the duplicates and the compiles left to tasks."""
+def report_jobs(result: dict, suite: str, jobs: int, top: int) -> None:
+    """Print the compile CPU per process and per module (the ``top`` largest), the duplicates
+    and the compiles left to tasks."""
     events = result["events"]
     procs: dict = defaultdict(lambda: {"roles": set(), "cpu": 0.0, "n": 0})
     for e in events:
@@ -138,6 +139,13 @@ def report_jobs(result: dict, suite: str, jobs: int) -> None:
     print("|---|---|---|---|")
     for pid, p in sorted(procs.items(), key=lambda kv: -kv[1]["cpu"]):
         print(f"| {pid} | {', '.join(sorted(p['roles']))} | {p['n']} | {p['cpu']:.2f} |")
+    by_module: dict = defaultdict(float)  # numba's own overloads (string formatting, ...)
+    for e in events:  # are under their numba module: what our kernels pulled in
+        by_module[e["name"].split(".<locals>")[0].rsplit(".", 1)[0]] += e["self"]
+    print("\n| module (all processes) | self CPU s |")
+    print("|---|---|")
+    for module, spent in sorted(by_module.items(), key=lambda kv: -kv[1])[:top]:
+        print(f"| {module} | {spent:.2f} |")
     where: dict = defaultdict(lambda: defaultdict(float))  # (name, types) -> pid -> self CPU
     for e in events:
         where[e["name"], e["types"]][e["pid"]] += e["self"]
@@ -182,7 +190,7 @@ def main(argv=None) -> None:
                 json.dump(result, f, indent=1)
         print(f"numba target: {numba_target()}; load average {load:.1f} at start, "
               f"{os.getloadavg()[0]:.1f} at end, on {os.cpu_count()} cores")  # fmt: skip
-        report_jobs(result, args.suite, args.jobs)
+        report_jobs(result, args.suite, args.jobs, args.top)
         return
     result = measure(args.suite)
     if args.json:

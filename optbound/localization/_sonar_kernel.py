@@ -83,9 +83,10 @@ def pose_table(params: np.ndarray, x: Interval, y: Interval, theta: Interval) ->
     return out
 
 
-# ``_det`` and ``_norm`` are called, not inlined by numba: inlined, their twelve and two uses
-# in ``_range`` made one function that took numba and LLVM ~36 s of CPU to compile, against
-# ~9 s as calls, for the same bits and the same speed (LLVM still inlines them, at -O3).
+# ``_det`` and ``_norm`` (and the interval operations they call) are called, not inlined by
+# numba: inlined, their twelve and two uses in ``_range`` made one function that took numba
+# and LLVM ~36 s of CPU to compile, against ~2 s as calls, for the same bits and the same
+# speed (LLVM still inlines them, at -O3).
 @njit(cache=True)
 def _det(ul, uh, vl, vh, wl, wh, zl, zh):
     """``det(u, v, w, z) = u z - v w`` on intervals (:func:`geometry.det`)."""
