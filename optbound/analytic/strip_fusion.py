@@ -50,6 +50,7 @@ from optbound.analytic._kernels.strip_kernel import (
     LAM_MAX,
     LAMG_MAX,
     MIN_REL_WIDTH,
+    OUT_DTYPES,
     PROJECTION,
     ROBUST,
     ROBUST_PROJECTION,
@@ -336,7 +337,7 @@ def intersect_strip_batch(
     b = _batch.per_instance("b", b, n_batch, (), finite=False)
     mode, lams, idx = _mode(criterion, dims, lam, n_batch, n)
     steep, midp = _check_robust(steepness, midpoint)
-    out = ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    out = ellipsoid_outputs(n_batch, n, *OUT_DTYPES)
 
     def fuse(start: int, stop: int) -> int:
         ws = _threads.workspace(workspace, n)

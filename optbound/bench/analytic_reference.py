@@ -12,7 +12,7 @@ lane-parallel p solver and evaluates the member with the plain formula.
 
 from __future__ import annotations
 
-from functools import partial
+from functools import cache, partial
 from pathlib import Path
 from types import FunctionType
 
@@ -22,8 +22,14 @@ from numba import njit, prange
 from optbound import _jit_cache
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
-from optbound.analytic._kernels.lanes import W, cholesky_lanes, load_matrices
-from optbound.analytic._kernels.minkowski_kernel import p_volume_lanes, thread_work
+from optbound.analytic._kernels.lanes import W, cholesky_block, load_matrices
+from optbound.analytic._kernels.minkowski_kernel import (
+    NEWTON_ENTRY,
+    P_VOLUME_ENTRY,
+    call_p_volume,
+    thread_work,
+)
+from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 # Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the
@@ -69,26 +75,41 @@ def strip_range(c, C, a, b, out_c, out_C, start, stop):
     _strip_loop(c, C, a, b, out_c, out_C, np.empty(c.shape[1]), start, stop)
 
 
+_call_cholesky = caller(cholesky_block)
+
+
+@cache
+def _cholesky_address() -> int:
+    """Address of ``lanes.cholesky_block`` for the work space's arrays (``native_call``)."""
+    m3, r1 = np.empty((1, 1, 1)), np.empty(1)
+    return address(cholesky_block, m3, m3, 0, r1)
+
+
 @njit(**_OPTIONS, _nrt=False)
-def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop):
+def minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, cholesky, start, stop):
     """Volume-optimal Schweppe member [HS96, eq. (14)] with the same solver as ours, in the
     same blocks of W lanes and the same work space ``wk`` (``minkowski_kernel.thread_work``),
     so that the ratio compares the per-instance work only: Cholesky factors, p, the plain
     member ``reference.minkowski_member``. Its views are not reference counted (as ours and
-    the strip reference's are not). The solver's work space has the tuple lengths
-    ``sum_blocks`` passes (7 mats, 3 vecs, 14 rows), so that both use one compiled solver."""
-    mats, vecs, rows, _, _ = wk
+    the strip reference's are not). The solver is called as ``sum_blocks`` calls it: by
+    address (``wk``'s entries), with a work space of the same tuple lengths (7 mats, 3 vecs,
+    14 rows), so that both run one compiled solver and neither links it in; the Cholesky
+    factors by address too (``cholesky``, ``lanes.cholesky_block``)."""
+    mats, vecs, rows, _, _, entries = wk
     C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
     p, act, pivot = rows[0], rows[1], rows[2]
     for base in range(start, stop, W):
         m = min(W, stop - base)
         load_matrices(C1[base:], m, C1s)
         load_matrices(C2[base:], m, C2s)
-        cholesky_lanes(C1s, L1, m, pivot, 0)
-        cholesky_lanes(C2s, L2, m, pivot, 0)
+        _call_cholesky(cholesky, (C1s, L1, m, pivot))
+        _call_cholesky(cholesky, (C2s, L2, m, pivot))
         for k in range(m):
             act[k] = 1.0
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[5:12], vecs[:3], rows[3:17])
+        call_p_volume(
+            entries[P_VOLUME_ENTRY],
+            (C1s, C2s, L1, L2, m, act, p, mats[5:12], vecs[:3], rows[3:17], entries[NEWTON_ENTRY]),
+        )
         for k in range(m):
             i = base + k
             minkowski_member(c1[i], C1[i], c2[i], C2[i], p[k], out_c[i], out_C[i])
@@ -108,7 +129,7 @@ def minkowski_range(c1, C1, c2, C2, out_c, out_C, start: int, stop: int) -> None
         The instances to sum.
     """
     wk = thread_work(c1.shape[1])
-    minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, start, stop)
+    minkowski_blocks(c1, C1, c2, C2, out_c, out_C, wk, _cholesky_address(), start, stop)
 
 
 def strip_batch(c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
@@ -172,7 +193,7 @@ def minkowski_batch(c1, C1, c2, C2) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _strip_outputs(n_batch: int, n: int) -> tuple:
-    return ellipsoid_outputs(n_batch, n, np.int8, np.int8, float, float, np.bool_, float)
+    return ellipsoid_outputs(n_batch, n, *strip_kernel.OUT_DTYPES)
 
 
 _NO_LAM, _NO_IDX = np.zeros(1), np.zeros(0, np.int64)
@@ -215,7 +236,8 @@ def _fuse_prange(c, C, a, b, lam, idx, out, ws, slices):
     iteration per thread of numba's threading layer), each with its own workspace."""
     n_batch = c.shape[0]
     for s in prange(slices):
-        own = (ws[0][s], ws[1][s], ws[2][s], ws[3][s], ws[4][s], ws[5][s], ws[6][s], ws[7][s])
+        own = (ws[0][s], ws[1][s], ws[2][s], ws[3][s], ws[4][s], ws[5][s], ws[6][s], ws[7][s],
+               ws[8][s], ws[9][s], ws[10][s])  # fmt: skip
         start, stop = s * n_batch // slices, (s + 1) * n_batch // slices
         strip_kernel.fuse_range(
             c,

@@ -127,7 +127,7 @@ def _reference() -> None:
 #: of) whose presence in numba's cache means the group is compiled).
 GROUPS: dict[str, tuple[float, Callable[[], None], tuple[str, ...]]] = {
     "analytic": (
-        44.0,
+        22.0,
         _analytic,
         (
             "optbound.analytic._kernels.minkowski_kernel:sum_blocks",
@@ -145,7 +145,7 @@ GROUPS: dict[str, tuple[float, Callable[[], None], tuple[str, ...]]] = {
             "optbound.localization.landmarks:_solve",
         ),
     ),
-    "reference": (6.5, _reference, ("optbound.bench.analytic_reference:minkowski_blocks",)),
+    "reference": (3.5, _reference, ("optbound.bench.analytic_reference:minkowski_blocks",)),
 }
 #: Calls run in the parent, before the groups, when any group is cold: kernels several
 #: groups would otherwise each compile.

@@ -44,8 +44,9 @@ def _p_block(C1s, C2s, active=None) -> np.ndarray:
     act = np.ones(W) if active is None else np.asarray(active, float)
     assert np.all((pivot1[:m] > 0) & (pivot2[:m] > 0) | (act[:m] == 0))
     p = np.full(W, np.nan)
-    mats, vecs, rows, _, _ = K.block_work(n, W)
-    K.p_volume_lanes(A, B, L1, L2, m, act, p, mats[:7], vecs[:3], rows[:14])
+    mats, vecs, rows, _, _, entries = K.block_work(n, W)
+    newton = entries[K.NEWTON_ENTRY]
+    K.p_volume_lanes(A, B, L1, L2, m, act, p, mats[:7], vecs[:3], rows[:14], newton)
     return p[:m]
 
 

@@ -9,7 +9,8 @@ what makes them fast and certified in floating point:
 - ``strip_kernel``, ``strip_lambda``, ``cubic``: ellipsoid ∩ strip [HS96, eqs. (24)-(30)];
 - ``minkowski_kernel``: the Schweppe family [HS96, eq. (14)] and its volume-optimal p;
 - ``midrad``: midpoint-radius arithmetic and the certified outward margin;
-- ``threads``: a batch sliced over the cores.
+- ``threads``: a batch sliced over the cores;
+- ``native_call``: calls of a compiled step by its address, without linking it in.
 
 ``analytic._exact`` (the bounding update in exact rationals) is not here: it is the formula
 evaluated without rounding, not an acceleration.
@@ -41,7 +42,13 @@ One compiled entry point per update (``strip_kernel.fuse_range``, ``minkowski_ke
 sum_blocks``), with the loop over the blocks written in it, and single calls passing through
 it from Python as a batch of one. A compiled function calling another links the callee's
 code into its own and LLVM optimizes and emits it again: every compiled wrapper around the
-lane loop nests costs seconds of compile time on the first run, for nothing at run time.
+lane loop nests costs seconds of compile time on the first run, for nothing at run time. So
+the heavy steps called once per block (the strip's steps, ``lanes.check_ellipsoids``, the
+Minkowski p solver and ``lanes.inflate_lanes``) are called by address (``native_call``):
+each is compiled once, in its own library, and linked into no caller; their addresses come
+with the work space (``entry_points``). A step called by address takes the work space's
+arrays only, never the caller's inputs, whose types vary (read-only or not): one compiled
+signature, which the address was taken for.
 
 No allocation in loops. Scratch is made once per thread and dimension (``workspace``,
 ``block_work``); a block gets views from its first instance (``c[base:]``), indexed by the

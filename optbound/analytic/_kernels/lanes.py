@@ -122,6 +122,13 @@ def cholesky_lanes(A, L, m, pivot, at):
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
+def cholesky_block(A, L, m, pivot):
+    """:func:`cholesky_lanes` of a block as a compiled function of its own, for a caller that
+    calls it by address (``native_call``) rather than compile its lane loops again."""
+    cholesky_lanes(A, L, m, pivot, 0)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False)
 def check_ellipsoids(c, C, L, m, code, s):
     """``_core.domain.check_ellipsoid`` for the m lanes of a block: centres c (n, W), shapes C
     (n, n, W); writes the Cholesky factors into L and the error codes (same codes and the same

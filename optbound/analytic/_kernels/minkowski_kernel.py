@@ -58,6 +58,7 @@ from optbound.analytic._kernels.lanes import (
     store_vectors,
 )
 from optbound.analytic._kernels.midrad import U, mr_add, mr_div, mr_mul
+from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.threads import workspace
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)
@@ -305,9 +306,10 @@ def newton_update(m, q, rtol, rows):
     return running
 
 
-# newton_lanes and p_volume_lanes are compiled once and called, not inlined by numba (compile
-# time); _nrt=False keeps their views free of atomic reference counting. The lane helpers are
-# inlined into them.
+# newton_lanes and p_volume_lanes are compiled once, each in its own library, and called by
+# address (``native_call``), never linked into a caller (where LLVM would optimize and emit
+# their lane loop nests again); _nrt=False keeps their views free of atomic reference
+# counting. The lane helpers are inlined into them.
 @njit(cache=True, error_model="numpy", _nrt=False)
 def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
     """Root of h in ``(0, hi0]`` per lane with ``active`` > 0, from q in (0, hi0] (q (W,) is
@@ -327,11 +329,15 @@ def newton_lanes(stage, A, B, LB, T, m, q, hi0, active, mats, rows):
         running = newton_update(m, q, rtol, rows)
 
 
+_call_newton = caller(newton_lanes)
+
+
 @njit(cache=True, error_model="numpy", _nrt=False)
-def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
+def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows, newton):
     """The volume-optimal p (module docstring) of the lanes with ``active`` > 0, into p (W,):
     C1, C2 (n, n, W) the shapes, L1, L2 their Cholesky factors; 7 mats (n, n, W), 3 vecs
-    (n, W) and 14 rows are work space.
+    (n, W) and 14 rows are work space; ``newton`` is the address of :func:`newton_lanes`
+    (``entry_points()[NEWTON_ENTRY]``).
 
     Each lane solves the oriented pencil, so that its root is not small: if ``p0 =
     sqrt(tr C1 / tr C2)`` (in ``[sqrt(l_min), sqrt(l_max)]``, the root for equal eigenvalues)
@@ -373,10 +379,32 @@ def p_volume_lanes(C1, C2, L1, L2, m, active, p, mats, vecs, rows):
         hi[k] = np.sqrt(hi[k]) * 1.01
         q[k] = min(q[k], hi[k])
     # np.int64(): a typed stage number, where a literal would compile one specialization each
-    newton_lanes(np.int64(1), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:])
-    newton_lanes(np.int64(2), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:])
+    _call_newton(newton, (np.int64(1), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:]))
+    _call_newton(newton, (np.int64(2), A, B, LB, M, m, q, hi, active, mats[4:], rows[3:]))
     for k in range(m):
         p[k] = 1.0 / q[k] if swap[k] > 0.0 else q[k]
+
+
+call_p_volume = caller(p_volume_lanes)
+call_check, call_inflate = caller(check_ellipsoids), caller(inflate_lanes)
+NEWTON_ENTRY, P_VOLUME_ENTRY, CHECK_ENTRY, INFLATE_ENTRY = range(4)
+
+
+def entry_points() -> np.ndarray:
+    """The (4,) int64 addresses of the steps the sum calls by address (``native_call``), at
+    ``NEWTON_ENTRY``, ``P_VOLUME_ENTRY``, ``CHECK_ENTRY`` (``lanes.check_ellipsoids``) and
+    ``INFLATE_ENTRY`` (``lanes.inflate_lanes``), each compiled (or loaded from the cache)
+    for the argument types of its call: arrays of the work space's dtypes and dimensions,
+    tuples of its lengths, int64 counts."""
+    m3, r1 = np.empty((1, 1, 1)), np.empty(1)
+    newton = address(newton_lanes, 1, m3, m3, m3, m3, 0, r1, r1, r1, (m3,) * 3, (r1,) * 11)
+    p_volume = address(
+        p_volume_lanes, m3, m3, m3, m3, 0, r1, r1, (m3,) * 7, (np.empty((1, 1)),) * 3, (r1,) * 14, 0
+    )
+    m2, i1 = np.empty((1, 1)), np.empty(1, np.int64)
+    check = address(check_ellipsoids, m2, m3, m3, 0, i1, r1)
+    inflate = address(inflate_lanes, m3, m3, m2, m2, m3, m3, 0, r1, (r1,) * 19)
+    return np.array([newton, p_volume, check, inflate], np.int64)
 
 
 @njit(cache=True, error_model="numpy")
@@ -419,71 +447,11 @@ def p_xy_psi(C1, C2, planar, heading, p_trace):
     return (1.0 - best) / best
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def _sum_block(c1, C1, c2, C2, mode, p_in, planar, heading, out, m, wk):
-    """The certified sums of the m <= W instances of a block (lane k = instance k of the
-    views c1, C1, c2, C2, p_in and out, which start at the block). ``wk`` = (mats, vecs, rows,
-    codes, check) is the block work space (:func:`block_work`)."""
-    out_c, out_C, code, p_out, margin_out = out
-    mats, vecs, rows, codes, check = wk
-    c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
-    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
-    p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
-    load_vectors(c1, m, c1s)
-    load_matrices(C1, m, C1s)
-    load_vectors(c2, m, c2s)
-    load_matrices(C2, m, C2s)
-    check_ellipsoids(c1s, C1s, L1, m, codes[0], check)
-    check_ellipsoids(c2s, C2s, L2, m, codes[1], check)
-    code1, code2 = codes
-    for k in range(m):
-        c = code1[k]
-        code1[k] = c if c != 0 else (code2[k] + 10 if code2[k] != 0 else 0)
-        act[k] = 1.0 if code1[k] == 0 else 0.0
-    n = c1s.shape[0]
-    if mode == P_VOLUME:
-        # Exactly the work space of its docstring (7 mats, 3 vecs, 14 rows): tuples of other
-        # lengths are other types, and each would compile the solver again.
-        p_volume_lanes(C1s, C2s, L1, L2, m, act, p, mats[4:11], vecs[4:7], rows[5:19])
-    elif mode == P_GIVEN:
-        for k in range(m):
-            p[k] = p_in[k]
-    else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
-        sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
-        if mode == P_XY_PSI:
-            for k in range(m):  # scalar calls: a short cubic per instance
-                if act[k] > 0.0:
-                    p[k] = p_xy_psi(C1[k], C2[k], planar, heading, p[k])
-    for k in range(m):
-        if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
-            code1[k] = BAD_KAPPA
-        onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
-    S, D = mats[4], mats[5]
-    for i in range(n):
-        for k in range(m):
-            oc[i, k], dc[i, k] = mr_add(c1s[i, k], 0.0, c2s[i, k], 0.0)
-        for j in range(i + 1):
-            for k in range(m):
-                q, rq = mr_div(C1s[i, j, k], 0.0, p[k], 0.0)
-                s, rs = mr_add(q, rq, C2s[i, j, k], 0.0)
-                S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
-    T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
-    inflate_lanes(S, D, oc, dc, T, mats[6], m, margin, rows[5:])
-    store_vectors(oc, m, out_c)
-    store_matrices(T, m, out_C)
-    for k in range(m):
-        r = code1[k]
-        if r == 0 and margin[k] < 0.0:
-            r = OUT_OF_DOMAIN
-        code[k] = r
-        p_out[k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
-        margin_out[k] = margin[k] if r == 0 else 0.0
-
-
 def block_work(n: int, lanes: int = W) -> tuple:
     """Work space of one thread for blocks of up to ``lanes`` (<= W) lanes: (mats, vecs,
-    rows, codes, check), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows (lanes,),
-    two integer rows and the scratch of ``check_ellipsoids``.
+    rows, codes, check, entries), 12 matrices (n, n, lanes), 8 vectors (n, lanes), 24 rows
+    (lanes,), two integer rows, the scratch of ``check_ellipsoids`` and the addresses of the
+    steps called by address (:func:`entry_points`).
 
     Every array is allocated separately: a lane loop storing to one row of an array while
     reading another is not vectorized by LLVM (their distance depends on the runtime stride).
@@ -493,7 +461,7 @@ def block_work(n: int, lanes: int = W) -> tuple:
     vecs = tuple(np.empty((n, lanes)) for _ in range(8))
     rows = tuple(np.empty(lanes) for _ in range(24))
     codes = (np.empty(lanes, np.int64), np.empty(lanes, np.int64))
-    return mats, vecs, rows, codes, np.empty(CHECK_ROWS * W)
+    return mats, vecs, rows, codes, np.empty(CHECK_ROWS * W), entry_points()
 
 
 def thread_work(n: int) -> tuple:
@@ -505,21 +473,93 @@ def thread_work(n: int) -> tuple:
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def sum_blocks(c1, C1, c2, C2, mode, p_in, planar, heading, out, wk, start, stop):
     """The certified sums of instances ``start..stop`` (p_in broadcast to (B,) by the caller),
-    in blocks of W lanes, ``wk`` the work space :func:`block_work`; ``out`` = (centres,
-    shapes, code, p, margin). Returns the first instance with a non-zero code, or -1.
+    in blocks of W lanes, ``wk`` = (mats, vecs, rows, codes, check, entries) the work space
+    :func:`block_work`; ``out`` = (centres, shapes, code, p, margin). Returns the first
+    instance with a non-zero code, or -1. Per block (lane k = instance ``base + k``): load,
+    validate both summands, choose p, evaluate the member in midpoint-radius arithmetic,
+    inflate, store; the validation, the p solver and the inflation are called by address
+    (``entries``, :func:`entry_points`).
 
-    The only compiled entry point of the sum, with the loop over the blocks written here
-    rather than in a compiled caller: a caller would link the lane loop nests in and LLVM
-    would optimize and emit them again. Compiled without numba's reference counting
+    The only compiled entry point of the sum, with the loop over the blocks and the block's
+    steps written here rather than in a compiled caller or an inlined helper: a caller would
+    link the lane loop nests in and LLVM would optimize and emit them again, and numba
+    inlines a helper by copying and typing its IR again. Compiled without numba's reference counting
     (``_nrt=False``): every view and every work tuple taken per block would otherwise
     increment and decrement its parent's counter atomically (microseconds per block). Nothing
     here allocates. Each block is given views from its first instance (``lanes``: no
     wraparound code)."""
+    mats, vecs, rows, codes, check, entries = wk
+    c1s, c2s, oc, dc = vecs[0], vecs[1], vecs[2], vecs[3]
+    C1s, C2s, L1, L2 = mats[0], mats[1], mats[2], mats[3]
+    p, act, margin, onep, ronep = rows[0], rows[1], rows[2], rows[3], rows[4]
     for base in range(start, stop, W):
         m = min(W, stop - base)
-        o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:])
-        _sum_block(c1[base:], C1[base:], c2[base:], C2[base:], mode, p_in[base:], planar,
-                   heading, o, m, wk)  # fmt: skip
+        C1b, C2b, p_b = C1[base:], C2[base:], p_in[base:]
+        code, p_out, margin_out = out[2][base:], out[3][base:], out[4][base:]
+        load_vectors(c1[base:], m, c1s)
+        load_matrices(C1b, m, C1s)
+        load_vectors(c2[base:], m, c2s)
+        load_matrices(C2b, m, C2s)
+        call_check(entries[CHECK_ENTRY], (c1s, C1s, L1, m, codes[0], check))
+        call_check(entries[CHECK_ENTRY], (c2s, C2s, L2, m, codes[1], check))
+        code1, code2 = codes
+        for k in range(m):
+            c = code1[k]
+            code1[k] = c if c != 0 else (code2[k] + 10 if code2[k] != 0 else 0)
+            act[k] = 1.0 if code1[k] == 0 else 0.0
+        n = c1s.shape[0]
+        if mode == P_VOLUME:
+            # Exactly the work space of its docstring (7 mats, 3 vecs, 14 rows): tuples of other
+            # lengths are other types, and each would compile the solver again.
+            call_p_volume(
+                entries[P_VOLUME_ENTRY],
+                (
+                    C1s,
+                    C2s,
+                    L1,
+                    L2,
+                    m,
+                    act,
+                    p,
+                    mats[4:11],
+                    vecs[4:7],
+                    rows[5:19],
+                    entries[NEWTON_ENTRY],
+                ),
+            )
+        elif mode == P_GIVEN:
+            for k in range(m):
+                p[k] = p_b[k]
+        else:  # trace: kappa = sqrt(tr C2) / (sqrt(tr C1) + sqrt(tr C2)), a candidate of xy_psi
+            sqrt_trace_ratio(C1s, C2s, m, p, rows[5])
+            if mode == P_XY_PSI:
+                for k in range(m):  # scalar calls: a short cubic per instance
+                    if act[k] > 0.0:
+                        p[k] = p_xy_psi(C1b[k], C2b[k], planar, heading, p[k])
+        for k in range(m):
+            if mode == P_GIVEN and code1[k] == 0 and not (np.isfinite(p[k]) and p[k] > 0.0):
+                code1[k] = BAD_KAPPA
+            onep[k], ronep[k] = mr_add(1.0, 0.0, p[k], 0.0)
+        S, D = mats[4], mats[5]
+        for i in range(n):
+            for k in range(m):
+                oc[i, k], dc[i, k] = mr_add(c1s[i, k], 0.0, c2s[i, k], 0.0)
+            for j in range(i + 1):
+                for k in range(m):
+                    q, rq = mr_div(C1s[i, j, k], 0.0, p[k], 0.0)
+                    s, rs = mr_add(q, rq, C2s[i, j, k], 0.0)
+                    S[i, j, k], D[i, j, k] = mr_mul(onep[k], ronep[k], s, rs)
+        T = mats[7]  # not S itself: in-place updates would defeat the vectorizer's alias checks
+        call_inflate(entries[INFLATE_ENTRY], (S, D, oc, dc, T, mats[6], m, margin, rows[5:]))
+        store_vectors(oc, m, out[0][base:])
+        store_matrices(T, m, out[1][base:])
+        for k in range(m):
+            r = code1[k]
+            if r == 0 and margin[k] < 0.0:
+                r = OUT_OF_DOMAIN
+            code[k] = r
+            p_out[k] = p[k] if r == 0 or r == OUT_OF_DOMAIN else 0.0
+            margin_out[k] = margin[k] if r == 0 else 0.0
     return first_error(out[2], start, stop)
 
 

@@ -50,6 +50,7 @@ from optbound.analytic._kernels.midrad import (
     segment_scale,
     segment_term,
 )
+from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)
@@ -117,16 +118,17 @@ LAMG_MAX = 1e16
     S6,
 ) = (W * r for r in range(47))  # fmt: skip
 N_ROWS = S6 // W + 1
+# dtypes of the per-instance outputs (code, case, consistency, lam, empty, margin).
+OUT_DTYPES = (np.int8, np.int8, float, float, np.bool_, float)
 # What a lane's output is: the certified member, E itself (lambda = 0), or zeros (no ellipsoid).
 OUT_MEMBER, OUT_INPUT, OUT_NONE = 0.0, 1.0, 2.0
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def _validate(c, C, a, t, mode, m, L, code, scratch):
-    """Step 1 for the block: ``check_ellipsoid``'s codes, then the strip's (b in row ``STRIP_B``)
-    and lambda's (row ``LAM_IN``). ``scratch`` is (CHECK_ROWS W,)."""
-    n = c.shape[0]
-    check_ellipsoids(c, C, L, m, code, scratch)
+def _validate(a, t, mode, m, code):
+    """Step 1 for the block, after ``check_ellipsoids`` wrote its codes into ``code``: the
+    strip's (b in row ``STRIP_B``) and lambda's (row ``LAM_IN``) codes where it found none."""
+    n = a.shape[0]
     for k in range(m):
         t[S0 + k] = 0.0
     # No scaling is needed: |a| in [1 / MAG, MAG] puts |a|^2 in [1e-120, 1e120], far from
@@ -520,19 +522,23 @@ def _member_shape(C, wh, wl, we, t, m, T, hd, ld):
 def workspace(n: int) -> tuple:
     """Scratch of one thread: lane vectors (8, n, W), lane matrices (3, n, n, W), the per-lane
     scalars (N_ROWS W,), codes and cases (W,) each, the validation's scratch (CHECK_ROWS W,),
-    and the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n) and a vector (n,)). Made in
-    Python (once per thread and dimension, ``threads.workspace``), not compiled."""
+    the scalar criteria's (``_lam_cubic``: (4, max(n, 4), n), a vector (n,), a shape (n, n)
+    and the ``idx`` copy (n,) int64), and the addresses of the steps (:func:`entry_points`).
+    Made in Python (once per thread and dimension, ``threads.workspace``), not compiled."""
     return (
         np.zeros((8, n, W)), np.zeros((3, n, n, W)), np.zeros(N_ROWS * W),
         np.zeros(W, np.int64), np.zeros(W, np.int64), np.zeros(CHECK_ROWS * W),
-        np.zeros((4, max(n, 4), n)), np.zeros(n),
+        np.zeros((4, max(n, 4), n)), np.zeros(n), np.zeros((n, n)), np.zeros(n, np.int64),
+        entry_points(),
     )  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
+def _choose_lam(Cs, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec, Ck):
     """Step 4 for the block: ``t[LAM]`` and ``t[GAM] = lam / ((1 + lam Gn) half^2)`` per lane
-    (lambda = 0 where there is nothing to fuse: an error, no reduction, inconsistent)."""
+    (lambda = 0 where there is nothing to fuse: an error, no reduction, inconsistent). The
+    scalar criteria get lane k's shape copied from Cs into Ck (n, n): the work space's arrays
+    only, whatever the types of the caller's inputs (the step is called by address)."""
     for k in range(m):
         gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
         x = 0.0
@@ -546,9 +552,11 @@ def _choose_lam(C, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec):
             if code[k] == 0 and case[k] != INCONSISTENT and case[k] != NO_REDUCTION:
                 for i in range(n):
                     wvec[i] = wh[i, k]
+                    for j in range(n):
+                        Ck[i, j] = Cs[i, j, k]
                 Gn = t[GRAM + k] / (t[HALF + k] * t[HALF + k])
                 t[LAM + k] = _lam_cubic(
-                    C[k], wvec, t[MID + k] / t[HALF + k], t[HALF + k], Gn, mode, idx, work
+                    Ck, wvec, t[MID + k] / t[HALF + k], t[HALF + k], Gn, mode, idx, work
                 )
     if mode == ROBUST or mode == ROBUST_PROJECTION:
         for k in range(m):
@@ -613,6 +621,45 @@ def _finish(m, n, code, case, t, cs, Cs, oc, Os, out):
                 )
 
 
+_call_check, _call_validate = caller(check_ellipsoids), caller(_validate)
+_call_offsets, _call_project = caller(_offsets), caller(_project)
+_call_choose_lam, _call_finish = caller(_choose_lam), caller(_finish)
+_call_member_centre, _call_member_shape = caller(_member_centre), caller(_member_shape)
+(
+    CHECK_ENTRY,
+    VALIDATE_ENTRY,
+    OFFSETS_ENTRY,
+    PROJECT_ENTRY,
+    CHOOSE_LAM_ENTRY,
+    MEMBER_CENTRE_ENTRY,
+    MEMBER_SHAPE_ENTRY,
+    FINISH_ENTRY,
+) = range(8)
+
+
+def entry_points() -> np.ndarray:
+    """The (8,) int64 addresses of the steps :func:`fuse_range` calls by address
+    (``native_call``), at the ``*_ENTRY`` indices, each compiled (or loaded from the cache)
+    for the argument types of its call: arrays of the work space's and the outputs' dtypes
+    and dimensions (never the caller's inputs, whose types vary: read-only or not), int64
+    counts and mode, float parameters."""
+    v2, v3, t, i1 = np.empty((1, 1)), np.empty((1, 1, 1)), np.empty(1), np.empty(1, np.int64)
+    out = tuple(x[0:] for x in threads.ellipsoid_outputs(1, 1, *OUT_DTYPES))
+    return np.array(
+        [
+            address(check_ellipsoids, v2, v3, v3, 0, i1, t),
+            address(_validate, v2, t, 0, 0, i1),
+            address(_offsets, v2, v2, t, 0),
+            address(_project, v3, v2, 0, v2, v2, v2, t),
+            address(_choose_lam, v3, 0, i1, 0.0, 0.0, 0, 0, i1, i1, t, v2, v3, t, v2),
+            address(_member_centre, v2, v2, v3, v2, v2, v2, t, 0, v2),
+            address(_member_shape, v3, v2, v2, v2, t, 0, v3, v2, v2),
+            address(_finish, 0, 0, i1, i1, t, v2, v3, v2, v3, out),
+        ],
+        np.int64,
+    )
+
+
 @njit(cache=True, error_model="numpy", nogil=True, _nrt=False)
 def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws, start, stop):
     """Steps 1-6 on instances ``start..stop`` (a, b, lam broadcast to (B, ...) by the caller),
@@ -623,12 +670,18 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
     (``lanes``: no wraparound code), and each step is a loop over the lanes. This is the only
     compiled entry point of the update (single calls go through it too), with the loop over
     the blocks written here rather than in a compiled caller: a caller would link the lane loop
-    nests in and LLVM would optimize and emit them again. Compiled without numba's reference
-    counting (``_nrt=False``): every view (``V[0]``, ``t[EPS]``, ``C[k]``) would otherwise
+    nests in and LLVM would optimize and emit them again. For the same reason the steps are
+    called by address (``native_call``; ``ws``'s entries, :func:`entry_points`): each is
+    compiled once, in its own library, and none is linked in here. Compiled without numba's
+    reference counting (``_nrt=False``): every view (``V[0]``, ``t[EPS]``, ``C[k]``) would otherwise
     increment and decrement its parent's counter atomically, a cache line both threads fight
     over. Nothing here allocates."""
     n = c.shape[1]
-    V, M, t, code, case, scratch, work, wvec = ws
+    V, M, t, code, case, scratch, work, wvec, Ck, dims, entries = ws
+    for i in range(idx.size):  # a work space array: one type for the step, whatever idx's
+        dims[i] = idx[i]
+    sel = dims[: idx.size]
+    mode, steep, midp = np.int64(mode), np.float64(steep), np.float64(midp)  # the steps' types
     cs, av, wh, wl, we, oc, hd, ld = V[0], V[1], V[2], V[3], V[4], V[5], V[6], V[7]
     Cs, L, Os = M[0], M[1], M[2]
     for base in range(start, stop, W):
@@ -641,9 +694,10 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
         for k in range(m):
             t[STRIP_B + k] = bb[k]
             t[LAM_IN + k] = lam_b[k] if mode == GIVEN else 0.0
-        _validate(cs, Cs, av, t, mode, m, L, code, scratch)
-        _offsets(cs, av, t, m)
-        _project(Cs, av, m, wh, wl, we, t)
+        _call_check(entries[CHECK_ENTRY], (cs, Cs, L, m, code, scratch))
+        _call_validate(entries[VALIDATE_ENTRY], (av, t, mode, m, code))
+        _call_offsets(entries[OFFSETS_ENTRY], (cs, av, t, m))
+        _call_project(entries[PROJECT_ENTRY], (Cs, av, m, wh, wl, we, t))
         for k in range(m):
             ck, cons, mid, half, g, glo, rg = locate(
                 t[EPS + k], t[REPS + k], t[GS + k], t[GT + k], t[RG + k], halfspace, clip
@@ -651,7 +705,10 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
             case[k] = ck if code[k] == 0 else INCONSISTENT
             t[CONS + k], t[MID + k], t[HALF + k] = cons, mid, half
             t[GRAM + k], t[GRAM_LO + k], t[RG + k] = g, glo, rg
-        _choose_lam(Cb, mode, idx, steep, midp, m, n, code, case, t, wh, work, wvec)
+        _call_choose_lam(
+            entries[CHOOSE_LAM_ENTRY],
+            (Cs, mode, sel, steep, midp, m, n, code, case, t, wh, work, wvec, Ck),
+        )
         for k in range(m):
             kh, kl, rk, om = _shape_factor(
                 t[GAM + k], t[MID + k], t[HALF + k], t[GRAM + k], t[GRAM_LO + k], t[RG + k]
@@ -659,7 +716,7 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
             t[KH + k], t[KL + k], t[RK + k], t[OM + k] = kh, kl, rk, om
             ok = t[LAM + k] > 0.0 and rk >= 0.0 and kh > 2.0 * (abs(kl) + rk)
             t[ACTIVE + k] = 1.0 if ok else 0.0
-        _member_centre(cs, av, Cs, wh, wl, we, t, m, oc)
+        _call_member_centre(entries[MEMBER_CENTRE_ENTRY], (cs, av, Cs, wh, wl, we, t, m, oc))
         trace_inverse_lanes(L, m, t[TRINV : TRINV + W])  # L is not needed after this
         for k in range(m):
             terms = _margin_terms(
@@ -670,10 +727,10 @@ def fuse_range(c, C, a, b, halfspace, clip, mode, lam, idx, steep, midp, out, ws
             t[LMIN + k], t[LREF + k], t[RHO + k], t[CENTRE + k] = lmin, lref, rho, centre
             t[SH + k], t[SL + k], t[SA + k], t[WIDEN + k] = sh, sl, sa, widen
             t[ALPHA + k], t[BETA + k], t[GAMMA + k] = alpha, beta, gamma
-        _member_shape(Cs, wh, wl, we, t, m, Os, hd, ld)
+        _call_member_shape(entries[MEMBER_SHAPE_ENTRY], (Cs, wh, wl, we, t, m, Os, hd, ld))
         o = (out[0][base:], out[1][base:], out[2][base:], out[3][base:], out[4][base:],
              out[5][base:], out[6][base:], out[7][base:])  # fmt: skip
-        _finish(m, n, code, case, t, cs, Cs, oc, Os, o)
+        _call_finish(entries[FINISH_ENTRY], (m, n, code, case, t, cs, Cs, oc, Os, o))
     return first_error(out[2], start, stop)
 
 
@@ -682,7 +739,7 @@ def _single_buffers(n: int) -> tuple:
     c, C, a, b, lam and the outputs of :func:`fuse_range`."""
     return (
         np.empty((1, n)), np.empty((1, n, n)), np.empty((1, n)), np.empty(1), np.empty(1),
-        threads.ellipsoid_outputs(1, n, np.int8, np.int8, float, float, np.bool_, float),
+        threads.ellipsoid_outputs(1, n, *OUT_DTYPES),
     )  # fmt: skip
 
 
