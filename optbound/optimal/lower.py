@@ -150,7 +150,10 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     """
     F, absF, abs_sum, rel = membership
     x_abs = np.abs(x)
-    top = np.max(x_abs)
+    top = 0.0  # max |x~| in a loop: numba's np.max would be one more compiled helper
+    for v in x_abs:
+        if v > top:
+            top = v
     for i in range(F.shape[0]):
         value = _quad(F[i], x)
         if value < -2.0 * rel * abs_sum[i] * top * top:

@@ -71,8 +71,13 @@ def _bounds_form(a: np.ndarray, lo: float, hi: float) -> np.ndarray:
 
 @njit(cache=True)
 def _positive_definite_part(F: np.ndarray, rtol: float) -> bool:
-    """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|``."""
-    return np.linalg.eigvalsh(np.ascontiguousarray(F[:-1, :-1]))[0] > rtol * np.max(np.abs(F))
+    """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|`` (the
+    maximum taken in a loop: numba's ``np.max`` would be one more compiled helper)."""
+    top = 0.0
+    for i in range(F.shape[0]):
+        for j in range(F.shape[1]):
+            top = max(top, abs(F[i, j]))
+    return np.linalg.eigvalsh(np.ascontiguousarray(F[:-1, :-1]))[0] > rtol * top
 
 
 class QuadraticSet:
