@@ -158,7 +158,8 @@ def smallest_inflation(
         if not d[0] > 0:
             continue
         scaled = V / np.sqrt(d)
-        alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(scaled.T @ P @ scaled)[-1]))
+        form = np.ascontiguousarray(scaled.T) @ P @ scaled
+        alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(form)[-1]))
         if alpha < best_alpha:
             best_alpha, best_beta = alpha, beta
     return best_alpha, best_beta
@@ -174,7 +175,7 @@ def ellipsoid_in_x(
     ``_core.domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
     shape_y = np.linalg.inv(M)
     x0 = center - W @ (shape_y @ bt)
-    C = W @ shape_y @ W.T
+    C = W @ np.ascontiguousarray(shape_y) @ np.ascontiguousarray(W.T)
     C = 0.5 * (C + C.T)
     L = np.zeros_like(C)
     return x0, C, L, check_ellipsoid(x0, C, L)
