@@ -27,6 +27,17 @@ def rounding_bound(size: int, magnitude: float | np.ndarray) -> float | np.ndarr
 
 
 @njit(cache=True)
+def sum_squares(A: np.ndarray) -> float:
+    """``sum_ij A_ij^2`` (the squared Frobenius norm) of a matrix, summed in C order from 0.0 as
+    ``np.sum(A * A)`` is: the same float, without an array expression and its temporary."""
+    total = 0.0
+    for i in range(A.shape[0]):
+        for j in range(A.shape[1]):
+            total += A[i, j] * A[i, j]
+    return total
+
+
+@njit(cache=True)
 def max_eig(A: np.ndarray) -> float:
     """Largest eigenvalue of the symmetric matrix A (its lower triangle is read)."""
     return np.linalg.eigvalsh(np.ascontiguousarray(A))[-1]
@@ -39,7 +50,7 @@ def lmi_check(
     """The largest eigenvalue of ``P - G``, and the margin it must clear (be below minus it):
     ``rounding_bound`` of ``||P||_F + scale`` (the Frobenius norm bounds the spectral norm from
     above; ``scale`` bounds ``||G||``) plus ``uncertainty``."""
-    magnitude = np.sqrt(np.sum(P * P)) + scale
+    magnitude = np.sqrt(sum_squares(P)) + scale
     return max_eig(P - G), rounding_bound(P.shape[0], magnitude) + uncertainty
 
 
@@ -76,12 +87,12 @@ def in_frame(forms: np.ndarray, frame: np.ndarray) -> tuple[np.ndarray, np.ndarr
     for idx in range(k):
         scaled = _congruence(frame, forms[idx])
         magnitudes = _congruence(abs_frame, np.abs(forms[idx]))
-        norm = np.sqrt(np.sum(scaled * scaled))
+        norm = np.sqrt(sum_squares(scaled))
         for i in range(m):
             for j in range(m):
                 normalized[idx, i, j] = 0.5 * (scaled[i, j] + scaled[j, i]) / norm
         norms[idx] = norm
-        errors[idx] = rounding_bound(m, np.sqrt(np.sum(magnitudes * magnitudes))) / norm
+        errors[idx] = rounding_bound(m, np.sqrt(sum_squares(magnitudes))) / norm
     return normalized, norms, errors
 
 
@@ -106,7 +117,7 @@ def weighted_sum(weights: np.ndarray, matrices: np.ndarray) -> tuple[np.ndarray,
     magnitude = 0.0
     for idx in range(matrices.shape[0]):
         S += weights[idx] * matrices[idx]
-        magnitude += abs(weights[idx]) * np.sqrt(np.sum(matrices[idx] * matrices[idx]))
+        magnitude += abs(weights[idx]) * np.sqrt(sum_squares(matrices[idx]))
     return S, magnitude
 
 
@@ -117,7 +128,10 @@ def weighted_sum_eig(tau: np.ndarray, forms: np.ndarray, errors: np.ndarray) -> 
     ``sum_i tau_i ||F_i||_F``, Frobenius norms bounding the spectral ones from above) plus
     ``sum_i tau_i errors_i``."""
     S, magnitude = weighted_sum(tau, forms)
-    bound = rounding_bound(forms.shape[1], magnitude) + np.sum(tau * errors)
+    spread = 0.0  # sum_i tau_i errors_i, in order from 0.0 (as np.sum of the products)
+    for idx in range(tau.shape[0]):
+        spread += tau[idx] * errors[idx]
+    bound = rounding_bound(forms.shape[1], magnitude) + spread
     return np.linalg.eigvalsh(S)[0], bound
 
 
@@ -137,7 +151,10 @@ def lifted_form(chol: np.ndarray, center: np.ndarray, frame: np.ndarray) -> np.n
     P = np.empty((n + 1, n + 1))
     for i in range(n + 1):
         for j in range(i + 1):
-            P[i, j] = P[j, i] = np.sum(X[:, i] * X[:, j])
+            total = 0.0  # in order from 0.0, as np.sum of the products
+            for p in range(n):
+                total += X[p, i] * X[p, j]
+            P[i, j] = P[j, i] = total
     return P
 
 

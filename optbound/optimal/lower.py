@@ -151,9 +151,9 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     F, absF, abs_sum, rel = membership
     x_abs = np.abs(x)
     top = 0.0  # max |x~| in a loop: numba's np.max would be one more compiled helper
-    for v in x_abs:
-        if v > top:
-            top = v
+    for value_abs in x_abs:
+        if value_abs > top:
+            top = value_abs
     for i in range(F.shape[0]):
         value = _quad(F[i], x)
         if value < -2.0 * rel * abs_sum[i] * top * top:

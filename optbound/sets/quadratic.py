@@ -45,10 +45,15 @@ def _ellipsoid_form(center: np.ndarray, chol: np.ndarray) -> np.ndarray:
     F = np.empty((n + 1, n + 1))
     for i in range(n):
         for j in range(i + 1):
-            F[i, j] = F[j, i] = np.sum(X[i:, i] * X[i:, j])  # X is lower triangular
+            total = 0.0  # X is lower triangular; in order from 0.0, as np.sum of the products
+            for p in range(i, n):
+                total += X[p, i] * X[p, j]
+            F[i, j] = F[j, i] = total
     offset = -1.0
     for i in range(n):
-        Pc = np.sum(F[i, :n] * center)
+        Pc = 0.0
+        for j in range(n):
+            Pc += F[i, j] * center[j]
         F[i, n] = F[n, i] = -Pc
         offset += center[i] * Pc
     F[n, n] = offset
