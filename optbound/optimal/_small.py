@@ -51,7 +51,12 @@ def lmi_check(
     ``rounding_bound`` of ``||P||_F + scale`` (the Frobenius norm bounds the spectral norm from
     above; ``scale`` bounds ``||G||``) plus ``uncertainty``."""
     magnitude = np.sqrt(sum_squares(P)) + scale
-    return max_eig(P - G), rounding_bound(P.shape[0], magnitude) + uncertainty
+    m = P.shape[0]
+    difference = np.empty((m, m))  # P - G, in loops (no array expression)
+    for i in range(m):
+        for j in range(m):
+            difference[i, j] = P[i, j] - G[i, j]
+    return max_eig(difference), rounding_bound(m, magnitude) + uncertainty
 
 
 @njit(cache=True)
@@ -102,21 +107,25 @@ def certificate_eigs(forms: np.ndarray) -> tuple[float, float]:
     of the stack), and the smallest eigenvalue of their sum."""
     n = forms.shape[1] - 1
     lowest = np.inf
-    total = np.zeros((n, n))
+    total, part = np.zeros((n, n)), np.empty((n, n))
     for idx in range(forms.shape[0]):
-        part = np.ascontiguousarray(forms[idx, :n, :n])
+        for i in range(n):  # copied in loops (no slice copy, no array expression)
+            for j in range(n):
+                part[i, j] = forms[idx, i, j]
+                total[i, j] += part[i, j]
         lowest = min(lowest, np.linalg.eigvalsh(part)[0])
-        total += part
     return lowest, np.linalg.eigvalsh(total)[0]
 
 
 @njit(cache=True)
 def weighted_sum(weights: np.ndarray, matrices: np.ndarray) -> tuple[np.ndarray, float]:
     """``S = sum_i w_i M_i`` and ``sum_i |w_i| ||M_i||_F`` (which bounds ``||S||_2``)."""
-    S = np.zeros(matrices.shape[1:])
+    S = np.zeros((matrices.shape[1], matrices.shape[2]))
     magnitude = 0.0
     for idx in range(matrices.shape[0]):
-        S += weights[idx] * matrices[idx]
+        for i in range(S.shape[0]):  # in loops (no array expression)
+            for j in range(S.shape[1]):
+                S[i, j] += weights[idx] * matrices[idx, i, j]
         magnitude += abs(weights[idx]) * np.sqrt(sum_squares(matrices[idx]))
     return S, magnitude
 
@@ -169,13 +178,20 @@ def smallest_inflation(
     ``D^{-1/2} V^T P V D^{-1/2}``; betas whose ``R`` is not definite are skipped.
     """
     best_alpha, best_beta = np.inf, np.nan
-    shift = delta * np.eye(P.shape[0])
+    m = P.shape[0]
+    R, scaled, scaled_t = np.empty((m, m)), np.empty((m, m)), np.empty((m, m))
     for beta in betas:
-        d, V = np.linalg.eigh(fixed + beta * S - shift)
+        for i in range(m):  # R, in loops: delta I's entries are delta * 1.0 and delta * 0.0
+            for j in range(m):
+                R[i, j] = fixed[i, j] + beta * S[i, j] - delta * (1.0 if i == j else 0.0)
+        d, V = np.linalg.eigh(R)
         if not d[0] > 0:
             continue
-        scaled = V / np.sqrt(d)
-        form = np.ascontiguousarray(scaled.T) @ P @ scaled
+        for j in range(m):  # V D^{-1/2} and its transpose, both C-ordered (one BLAS layout)
+            root = np.sqrt(d[j])
+            for i in range(m):
+                scaled[i, j] = scaled_t[j, i] = V[i, j] / root
+        form = scaled_t @ P @ scaled
         alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(form)[-1]))
         if alpha < best_alpha:
             best_alpha, best_beta = alpha, beta
@@ -191,8 +207,14 @@ def ellipsoid_in_x(
     from the frame ``x = c + W y``, with the Cholesky factor and status of
     ``_core.domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
     shape_y = np.linalg.inv(M)
-    x0 = center - W @ (shape_y @ bt)
-    C = W @ np.ascontiguousarray(shape_y) @ np.ascontiguousarray(W.T)
-    C = 0.5 * (C + C.T)
-    L = np.zeros_like(C)
+    x0 = W @ (shape_y @ bt)
+    for i in range(x0.shape[0]):  # c - W y0, in place (no array expression)
+        x0[i] = center[i] - x0[i]
+    product = W @ np.ascontiguousarray(shape_y) @ np.ascontiguousarray(W.T)
+    n = product.shape[0]
+    C = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            C[i, j] = 0.5 * (product[i, j] + product[j, i])
+    L = np.zeros((n, n))
     return x0, C, L, check_ellipsoid(x0, C, L)
