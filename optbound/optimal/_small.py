@@ -40,7 +40,7 @@ def sum_squares(A: np.ndarray) -> float:
 @njit(cache=True)
 def max_eig(A: np.ndarray) -> float:
     """Largest eigenvalue of the symmetric matrix A (its lower triangle is read)."""
-    return np.linalg.eigvalsh(np.ascontiguousarray(A))[-1]
+    return np.linalg.eigvalsh(A)[-1]
 
 
 @njit(cache=True)
@@ -85,13 +85,19 @@ def in_frame(forms: np.ndarray, frame: np.ndarray) -> tuple[np.ndarray, np.ndarr
     bounds on the rounding of the congruence relative to ``F_hat_i``: ``rounding_bound`` of
     the Frobenius norm of ``|T|^T |F_i| |T|`` (an upper bound on its spectral norm)."""
     k, m = forms.shape[0], forms.shape[1]
-    abs_frame = np.abs(frame)
+    abs_frame, abs_form = np.empty((m, m)), np.empty((m, m))
+    for i in range(m):  # |T| and below |F_i|, in loops (no array expressions)
+        for j in range(m):
+            abs_frame[i, j] = abs(frame[i, j])
     normalized = np.empty((k, m, m))
     norms = np.empty(k)
     errors = np.empty(k)
     for idx in range(k):
         scaled = _congruence(frame, forms[idx])
-        magnitudes = _congruence(abs_frame, np.abs(forms[idx]))
+        for i in range(m):
+            for j in range(m):
+                abs_form[i, j] = abs(forms[idx, i, j])
+        magnitudes = _congruence(abs_frame, abs_form)
         norm = np.sqrt(sum_squares(scaled))
         for i in range(m):
             for j in range(m):

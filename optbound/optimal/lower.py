@@ -149,11 +149,12 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     ``|F_i|``, which are the costlier half.
     """
     F, absF, abs_sum, rel = membership
-    x_abs = np.abs(x)
-    top = 0.0  # max |x~| in a loop: numba's np.max would be one more compiled helper
-    for value_abs in x_abs:
-        if value_abs > top:
-            top = value_abs
+    x_abs = np.empty(x.shape[0])  # |x~| and its maximum in a loop (no array expression, no
+    top = 0.0  # compiled np.max helper)
+    for j in range(x.shape[0]):
+        x_abs[j] = abs(x[j])
+        if x_abs[j] > top:
+            top = x_abs[j]
     for i in range(F.shape[0]):
         value = _quad(F[i], x)
         if value < -2.0 * rel * abs_sum[i] * top * top:

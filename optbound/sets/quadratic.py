@@ -78,11 +78,15 @@ def _bounds_form(a: np.ndarray, lo: float, hi: float) -> np.ndarray:
 def _positive_definite_part(F: np.ndarray, rtol: float) -> bool:
     """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|`` (the
     maximum taken in a loop: numba's ``np.max`` would be one more compiled helper)."""
+    n = F.shape[0] - 1
+    A = np.empty((n, n))  # copied in loops (no slice copy)
     top = 0.0
-    for i in range(F.shape[0]):
-        for j in range(F.shape[1]):
+    for i in range(n + 1):
+        for j in range(n + 1):
             top = max(top, abs(F[i, j]))
-    return np.linalg.eigvalsh(np.ascontiguousarray(F[:-1, :-1]))[0] > rtol * top
+            if i < n and j < n:
+                A[i, j] = F[i, j]
+    return np.linalg.eigvalsh(A)[0] > rtol * top
 
 
 class QuadraticSet:
