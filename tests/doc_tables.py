@@ -222,6 +222,23 @@ def _strip_breakdown_avx2() -> str:
     )
 
 
+def _compile_cost() -> str:
+    """Compile CPU of a cold quick bench in every process, per process and per module
+    (``benchmarks/compile_cost.py --jobs 2``; a minute and a half), the duplicates' count."""
+    from benchmarks import compile_cost
+
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        compile_cost.main(["--suite", "quick", "--jobs", "2", "--top", "12"])
+    # The per-process and per-module tables and the duplicates' line; the rest (each
+    # duplicate, the compiles left to tasks) is for the one who runs the script.
+    kept = printed.getvalue().split("\n| dispatcher | types |")[0].rstrip()
+    return (
+        "Output of `python -m tests.doc_tables compile-cost` "
+        f"(`python -m benchmarks.compile_cost --suite quick --jobs 2 --top 12`, cut):\n\n{kept}"
+    )
+
+
 GENERATORS: dict[str, Callable[[], str]] = {
     "battery": _battery,
     "clip-effect": _clip_effect,
@@ -232,6 +249,7 @@ GENERATORS: dict[str, Callable[[], str]] = {
     "bench-profile": _bench_profile,
     "first-run": _first_run,
     "first-run-verdict": _first_run_verdict,
+    "compile-cost": _compile_cost,
     "strip-breakdown-avx2": _strip_breakdown_avx2,
 }
 
