@@ -27,9 +27,20 @@ def rounding_bound(size: int, magnitude: float | np.ndarray) -> float | np.ndarr
 
 
 @njit(cache=True)
+def sum_squares(A: np.ndarray) -> float:
+    """``sum_ij A_ij^2`` (the squared Frobenius norm) of a matrix, summed in C order from 0.0 as
+    ``np.sum(A * A)`` is: the same float, without an array expression and its temporary."""
+    total = 0.0
+    for i in range(A.shape[0]):
+        for j in range(A.shape[1]):
+            total += A[i, j] * A[i, j]
+    return total
+
+
+@njit(cache=True)
 def max_eig(A: np.ndarray) -> float:
     """Largest eigenvalue of the symmetric matrix A (its lower triangle is read)."""
-    return np.linalg.eigvalsh(np.ascontiguousarray(A))[-1]
+    return np.linalg.eigvalsh(A)[-1]
 
 
 @njit(cache=True)
@@ -39,8 +50,13 @@ def lmi_check(
     """The largest eigenvalue of ``P - G``, and the margin it must clear (be below minus it):
     ``rounding_bound`` of ``||P||_F + scale`` (the Frobenius norm bounds the spectral norm from
     above; ``scale`` bounds ``||G||``) plus ``uncertainty``."""
-    magnitude = np.sqrt(np.sum(P * P)) + scale
-    return max_eig(P - G), rounding_bound(P.shape[0], magnitude) + uncertainty
+    magnitude = np.sqrt(sum_squares(P)) + scale
+    m = P.shape[0]
+    difference = np.empty((m, m))  # P - G, in loops (no array expression)
+    for i in range(m):
+        for j in range(m):
+            difference[i, j] = P[i, j] - G[i, j]
+    return max_eig(difference), rounding_bound(m, magnitude) + uncertainty
 
 
 @njit(cache=True)
@@ -69,19 +85,25 @@ def in_frame(forms: np.ndarray, frame: np.ndarray) -> tuple[np.ndarray, np.ndarr
     bounds on the rounding of the congruence relative to ``F_hat_i``: ``rounding_bound`` of
     the Frobenius norm of ``|T|^T |F_i| |T|`` (an upper bound on its spectral norm)."""
     k, m = forms.shape[0], forms.shape[1]
-    abs_frame = np.abs(frame)
+    abs_frame, abs_form = np.empty((m, m)), np.empty((m, m))
+    for i in range(m):  # |T| and below |F_i|, in loops (no array expressions)
+        for j in range(m):
+            abs_frame[i, j] = abs(frame[i, j])
     normalized = np.empty((k, m, m))
     norms = np.empty(k)
     errors = np.empty(k)
     for idx in range(k):
         scaled = _congruence(frame, forms[idx])
-        magnitudes = _congruence(abs_frame, np.abs(forms[idx]))
-        norm = np.sqrt(np.sum(scaled * scaled))
+        for i in range(m):
+            for j in range(m):
+                abs_form[i, j] = abs(forms[idx, i, j])
+        magnitudes = _congruence(abs_frame, abs_form)
+        norm = np.sqrt(sum_squares(scaled))
         for i in range(m):
             for j in range(m):
                 normalized[idx, i, j] = 0.5 * (scaled[i, j] + scaled[j, i]) / norm
         norms[idx] = norm
-        errors[idx] = rounding_bound(m, np.sqrt(np.sum(magnitudes * magnitudes))) / norm
+        errors[idx] = rounding_bound(m, np.sqrt(sum_squares(magnitudes))) / norm
     return normalized, norms, errors
 
 
@@ -91,22 +113,26 @@ def certificate_eigs(forms: np.ndarray) -> tuple[float, float]:
     of the stack), and the smallest eigenvalue of their sum."""
     n = forms.shape[1] - 1
     lowest = np.inf
-    total = np.zeros((n, n))
+    total, part = np.zeros((n, n)), np.empty((n, n))
     for idx in range(forms.shape[0]):
-        part = np.ascontiguousarray(forms[idx, :n, :n])
+        for i in range(n):  # copied in loops (no slice copy, no array expression)
+            for j in range(n):
+                part[i, j] = forms[idx, i, j]
+                total[i, j] += part[i, j]
         lowest = min(lowest, np.linalg.eigvalsh(part)[0])
-        total += part
     return lowest, np.linalg.eigvalsh(total)[0]
 
 
 @njit(cache=True)
 def weighted_sum(weights: np.ndarray, matrices: np.ndarray) -> tuple[np.ndarray, float]:
     """``S = sum_i w_i M_i`` and ``sum_i |w_i| ||M_i||_F`` (which bounds ``||S||_2``)."""
-    S = np.zeros(matrices.shape[1:])
+    S = np.zeros((matrices.shape[1], matrices.shape[2]))
     magnitude = 0.0
     for idx in range(matrices.shape[0]):
-        S += weights[idx] * matrices[idx]
-        magnitude += abs(weights[idx]) * np.sqrt(np.sum(matrices[idx] * matrices[idx]))
+        for i in range(S.shape[0]):  # in loops (no array expression)
+            for j in range(S.shape[1]):
+                S[i, j] += weights[idx] * matrices[idx, i, j]
+        magnitude += abs(weights[idx]) * np.sqrt(sum_squares(matrices[idx]))
     return S, magnitude
 
 
@@ -117,7 +143,10 @@ def weighted_sum_eig(tau: np.ndarray, forms: np.ndarray, errors: np.ndarray) -> 
     ``sum_i tau_i ||F_i||_F``, Frobenius norms bounding the spectral ones from above) plus
     ``sum_i tau_i errors_i``."""
     S, magnitude = weighted_sum(tau, forms)
-    bound = rounding_bound(forms.shape[1], magnitude) + np.sum(tau * errors)
+    spread = 0.0  # sum_i tau_i errors_i, in order from 0.0 (as np.sum of the products)
+    for idx in range(tau.shape[0]):
+        spread += tau[idx] * errors[idx]
+    bound = rounding_bound(forms.shape[1], magnitude) + spread
     return np.linalg.eigvalsh(S)[0], bound
 
 
@@ -137,7 +166,10 @@ def lifted_form(chol: np.ndarray, center: np.ndarray, frame: np.ndarray) -> np.n
     P = np.empty((n + 1, n + 1))
     for i in range(n + 1):
         for j in range(i + 1):
-            P[i, j] = P[j, i] = np.sum(X[:, i] * X[:, j])
+            total = 0.0  # in order from 0.0, as np.sum of the products
+            for p in range(n):
+                total += X[p, i] * X[p, j]
+            P[i, j] = P[j, i] = total
     return P
 
 
@@ -152,13 +184,21 @@ def smallest_inflation(
     ``D^{-1/2} V^T P V D^{-1/2}``; betas whose ``R`` is not definite are skipped.
     """
     best_alpha, best_beta = np.inf, np.nan
-    shift = delta * np.eye(P.shape[0])
+    m = P.shape[0]
+    R, scaled, scaled_t = np.empty((m, m)), np.empty((m, m)), np.empty((m, m))
     for beta in betas:
-        d, V = np.linalg.eigh(fixed + beta * S - shift)
+        for i in range(m):  # R, in loops: delta I's entries are delta * 1.0 and delta * 0.0
+            for j in range(m):
+                R[i, j] = fixed[i, j] + beta * S[i, j] - delta * (1.0 if i == j else 0.0)
+        d, V = np.linalg.eigh(R)
         if not d[0] > 0:
             continue
-        scaled = V / np.sqrt(d)
-        alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(scaled.T @ P @ scaled)[-1]))
+        for j in range(m):  # V D^{-1/2} and its transpose, both C-ordered (one BLAS layout)
+            root = np.sqrt(d[j])
+            for i in range(m):
+                scaled[i, j] = scaled_t[j, i] = V[i, j] / root
+        form = scaled_t @ P @ scaled
+        alpha = np.sqrt(max(1.0, np.linalg.eigvalsh(form)[-1]))
         if alpha < best_alpha:
             best_alpha, best_beta = alpha, beta
     return best_alpha, best_beta
@@ -173,8 +213,14 @@ def ellipsoid_in_x(
     from the frame ``x = c + W y``, with the Cholesky factor and status of
     ``_core.domain.check_ellipsoid`` (for ``Ellipsoid._from_kernel``)."""
     shape_y = np.linalg.inv(M)
-    x0 = center - W @ (shape_y @ bt)
-    C = W @ shape_y @ W.T
-    C = 0.5 * (C + C.T)
-    L = np.zeros_like(C)
+    x0 = W @ (shape_y @ bt)
+    for i in range(x0.shape[0]):  # c - W y0, in place (no array expression)
+        x0[i] = center[i] - x0[i]
+    product = W @ np.ascontiguousarray(shape_y) @ np.ascontiguousarray(W.T)
+    n = product.shape[0]
+    C = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            C[i, j] = 0.5 * (product[i, j] + product[j, i])
+    L = np.zeros((n, n))
     return x0, C, L, check_ellipsoid(x0, C, L)

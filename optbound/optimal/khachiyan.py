@@ -159,7 +159,12 @@ def core_set(points: np.ndarray) -> np.ndarray:
 @njit(cache=True)
 def _refresh(Q: np.ndarray, u: np.ndarray, X_inv: np.ndarray, w: np.ndarray) -> None:
     """``X^{-1}`` and ``w_i = q_i^T X^{-1} q_i`` from scratch (in place)."""
-    inverse = np.linalg.inv((Q.T * u) @ Q)  # Fortran-ordered, as numba's inverses are
+    m, d = Q.shape
+    weighted = np.empty((d, m))  # Q^T diag(u), in loops (no array expression)
+    for a in range(d):
+        for i in range(m):
+            weighted[a, i] = Q[i, a] * u[i]
+    inverse = np.linalg.inv(weighted @ Q)  # Fortran-ordered, as numba's inverses are
     for a in range(X_inv.shape[0]):
         for b in range(X_inv.shape[1]):
             X_inv[a, b] = inverse[a, b]

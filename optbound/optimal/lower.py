@@ -149,8 +149,12 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     ``|F_i|``, which are the costlier half.
     """
     F, absF, abs_sum, rel = membership
-    x_abs = np.abs(x)
-    top = np.max(x_abs)
+    x_abs = np.empty(x.shape[0])  # |x~| and its maximum in a loop (no array expression, no
+    top = 0.0  # compiled np.max helper)
+    for j in range(x.shape[0]):
+        x_abs[j] = abs(x[j])
+        if x_abs[j] > top:
+            top = x_abs[j]
     for i in range(F.shape[0]):
         value = _quad(F[i], x)
         if value < -2.0 * rel * abs_sum[i] * top * top:
@@ -482,7 +486,8 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
     F = membership[0]  # membership: ``_membership``'s, for ``_inside_one``
     m, n = points.shape
     k = F.shape[0]
-    lifted, trial = np.ones(n + 1), np.ones(n + 1)
+    lifted, trial = np.empty(n + 1), np.empty(n + 1)
+    lifted[n] = trial[n] = 1.0  # the lifting coordinate (the rest is written before use)
     gradient, G, move = np.empty(n), np.empty(n), np.empty(n)
     Fx, q, inv_norm2 = np.empty((k, n + 1)), np.empty(k), np.empty(k)
     Fx0, q0, zero = np.empty((k, n + 1)), np.empty(k), np.zeros(n)
@@ -511,7 +516,11 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
             _try(membership, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
-            _matvec(chol.T, gradient, zero, move)
+            for a in range(n):  # chol^T gradient, as _matvec(chol.T, gradient, zero, move)
+                row = 0.0  # sums (no second, Fortran-ordered _matvec compiled)
+                for b in range(n):
+                    row += chol[b, a] * (gradient[b] - zero[b])
+                move[a] = row
         else:
             copy_into(move, shift[p])
         _matvec(chol_inv, points[p], x0, G)  # G is now y
@@ -523,7 +532,8 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
         size = np.sqrt(_dot(G, G))
         success = False
         if size > 0.0:
-            G /= size
+            for j in range(n):
+                G[j] /= size
             _matvec(chol, G, zero, move)  # move is now the ray's direction
             t = _exit(F, Fx0, q0, move)
             if np.isfinite(t):

@@ -45,10 +45,15 @@ def _ellipsoid_form(center: np.ndarray, chol: np.ndarray) -> np.ndarray:
     F = np.empty((n + 1, n + 1))
     for i in range(n):
         for j in range(i + 1):
-            F[i, j] = F[j, i] = np.sum(X[i:, i] * X[i:, j])  # X is lower triangular
+            total = 0.0  # X is lower triangular; in order from 0.0, as np.sum of the products
+            for p in range(i, n):
+                total += X[p, i] * X[p, j]
+            F[i, j] = F[j, i] = total
     offset = -1.0
     for i in range(n):
-        Pc = np.sum(F[i, :n] * center)
+        Pc = 0.0
+        for j in range(n):
+            Pc += F[i, j] * center[j]
         F[i, n] = F[n, i] = -Pc
         offset += center[i] * Pc
     F[n, n] = offset
@@ -71,8 +76,17 @@ def _bounds_form(a: np.ndarray, lo: float, hi: float) -> np.ndarray:
 
 @njit(cache=True)
 def _positive_definite_part(F: np.ndarray, rtol: float) -> bool:
-    """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|``."""
-    return np.linalg.eigvalsh(np.ascontiguousarray(F[:-1, :-1]))[0] > rtol * np.max(np.abs(F))
+    """Whether the smallest eigenvalue of ``A = F[:-1, :-1]`` exceeds ``rtol max |F|`` (the
+    maximum taken in a loop: numba's ``np.max`` would be one more compiled helper)."""
+    n = F.shape[0] - 1
+    A = np.empty((n, n))  # copied in loops (no slice copy)
+    top = 0.0
+    for i in range(n + 1):
+        for j in range(n + 1):
+            top = max(top, abs(F[i, j]))
+            if i < n and j < n:
+                A[i, j] = F[i, j]
+    return np.linalg.eigvalsh(A)[0] > rtol * top
 
 
 class QuadraticSet:
