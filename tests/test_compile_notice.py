@@ -93,3 +93,14 @@ def test_end_to_end_cold_then_warm_cache(tmp_path):
     message = _compile_notice.MESSAGE.format(seconds=_compile_notice.COMPILE_CPU_SECONDS)
     assert _run(tmp_path) == [message]
     assert _run(tmp_path) == []
+
+
+def test_the_pages_quote_the_notices_estimate():
+    # README and getting started state the compile CPU the notice prints: one number, so
+    # they cannot drift apart when it is re-measured.
+    from tests.doc_tables import ROOT
+
+    said = f"about {_compile_notice.COMPILE_CPU_SECONDS} s of CPU"
+    for page in ("README.md", "docs/getting_started.md"):
+        text = " ".join((ROOT / page).read_text().split())
+        assert said in text, f"{page} should say {said!r} (optbound._compile_notice)"
