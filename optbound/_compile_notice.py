@@ -23,12 +23,12 @@ from pathlib import Path
 from numba.core import event
 
 ENV = "OPTBOUND_COMPILE_NOTICE"
-#: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded, in all the
+#: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded up, in all the
 #: run's processes, as measured by ``python -m benchmarks.compile_cost --suite quick --jobs 2``
-#: (82 s on the 2-core Intel Xeon test host at load 0.7, numba 0.68). With two or more workers
-#: the warm-up (``optbound.bench.warmup``) splits it over two processes, so the first run waits
-#: about half of it longer than later runs (``python -m benchmarks.first_run``).
-COMPILE_CPU_SECONDS = 85
+#: (47 s on the 2-core Intel Xeon test host at load 0.5-1.5, numba 0.68). With two or more
+#: workers the warm-up (``optbound.bench.warmup``) splits it over two processes, so the first
+#: run waits about half of it longer than later runs (``python -m benchmarks.first_run``).
+COMPILE_CPU_SECONDS = 50
 MESSAGE = (
     "optbound: compiling numerical kernels once (first run only: about {seconds} s of CPU, "
     "spread over the worker processes; later runs load them from numba's cache) ..."
