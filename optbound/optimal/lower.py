@@ -149,8 +149,9 @@ def _inside_one(membership, x: np.ndarray) -> bool:
     ``|F_i|``, which are the costlier half.
     """
     F, absF, abs_sum, rel = membership
-    x_abs = np.empty(x.shape[0])  # |x~| and its maximum in a loop (no array expression, no
-    top = 0.0  # compiled np.max helper)
+    # |x~| and its maximum in a loop: no array expression, no compiled np.max helper.
+    x_abs = np.empty(x.shape[0])
+    top = 0.0
     for j in range(x.shape[0]):
         x_abs[j] = abs(x[j])
         if x_abs[j] > top:
@@ -516,8 +517,10 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
             _try(membership, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
-            for a in range(n):  # chol^T gradient, as _matvec(chol.T, gradient, zero, move)
-                row = 0.0  # sums (no second, Fortran-ordered _matvec compiled)
+            # move = chol^T gradient, summed as _matvec(chol.T, gradient, zero, move) sums, in
+            # a loop: chol.T is Fortran-ordered, and _matvec would compile a second time.
+            for a in range(n):
+                row = 0.0
                 for b in range(n):
                     row += chol[b, a] * (gradient[b] - zero[b])
                 move[a] = row
