@@ -62,7 +62,15 @@ from optbound.analytic._kernels.lanes import (
     store_vectors,
 )
 from optbound.analytic._kernels.midrad import TINY, inflate, mr_add, mr_div, mr_mul
-from optbound.analytic._kernels.strip_kernel import MIN_REL_WIDTH, locate
+from optbound.analytic._kernels.strip_kernel import (
+    LAM_IN,
+    MIN_REL_WIDTH,
+    N_ROWS,
+    STRIP_B,
+    VOLUME,
+    _validate,
+    locate,
+)
 from optbound.analytic._kernels.strip_lambda import lam_volume
 
 _OPTIONS = {"error_model": "numpy", "nogil": True, "cache": True}
@@ -204,10 +212,11 @@ def certified3_range(c, C, a, b, out_c, out_C, L, validate):
 def lanes_range(c, C, a, b, out_c, out_C, V, M, t, code, scratch, what):
     """The lane layout of our kernel (``analytic._kernels.lanes``: blocks of W instances, each
     step a loop over the lanes, general n) without its certification. ``what``: 0 loads the
-    blocks only; 1 loads and validates them as our kernel does (``check_ellipsoids``, the
-    strip's domain checks; codes in ``code``); 2 loads them and evaluates the plain formula
-    of :func:`plain3_range` (no validation, no margin) into the outputs. V (4, n, W), M
-    (2, n, n, W), t (5 W,), code (W,) int, scratch (CHECK_ROWS W,) are work space."""
+    blocks only; 1 loads and validates them with our kernel's own steps (``check_ellipsoids``,
+    then ``strip_kernel._validate``; codes in ``code``); 2 loads them and evaluates the plain
+    formula of :func:`plain3_range` (no validation, no margin) into the outputs. V (4, n, W),
+    M (2, n, n, W), t (``strip_kernel.N_ROWS`` W,: the kernel's rows), code (W,) int,
+    scratch (CHECK_ROWS W,) are work space."""
     n = c.shape[1]
     cs, av, w, oc, Cs, Os = V[0], V[1], V[2], V[3], M[0], M[1]
     G, eps, f, gam, K = 0, W, 2 * W, 3 * W, 4 * W  # rows of t
@@ -219,15 +228,10 @@ def lanes_range(c, C, a, b, out_c, out_C, V, M, t, code, scratch, what):
         bb = b[base:]
         if what == 1:
             check_ellipsoids(cs, Cs, Os, m, code, scratch)
-            for k in range(m):
-                t[G + k] = 0.0
-            for i in range(n):
-                for k in range(m):
-                    t[G + k] += av[i, k] * av[i, k]
-            for k in range(m):
-                ok = 1.0 / (MAG * MAG) <= t[G + k] <= MAG * MAG and abs(bb[k]) <= MAG * MAG
-                if code[k] == 0 and not ok:
-                    code[k] = 7
+            for k in range(m):  # the rows fuse_range fills before its validation step
+                t[STRIP_B + k] = bb[k]
+                t[LAM_IN + k] = 0.0
+            _validate(av, t, VOLUME, m, code)
         if what != 2:
             continue
         for k in range(m):
@@ -271,7 +275,7 @@ def _lanes(what: int, c, C, a, b) -> tuple[np.ndarray, np.ndarray]:
     """Run :func:`lanes_range` on a batch into new output arrays."""
     n = c.shape[1]
     out_c, out_C = np.empty(c.shape), np.empty(C.shape)
-    work = (np.empty((4, n, W)), np.empty((2, n, n, W)), np.empty(5 * W))
+    work = (np.empty((4, n, W)), np.empty((2, n, n, W)), np.empty(N_ROWS * W))
     lanes_range(c, C, a, b, out_c, out_C, *work, np.zeros(W, np.int64),
                 np.empty(CHECK_ROWS * W), what)  # fmt: skip
     return out_c, out_C
