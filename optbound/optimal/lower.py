@@ -445,6 +445,7 @@ class _Climb:
         self.F, self.x0, self.chol, self.cols, self.gen = F, x0, chol, cols, gen
         self.membership = _membership(F, 4.0 * (x0.shape[0] + 1) * EPS)
         self.chol_inv = np.linalg.inv(chol)
+        self.chol_t = np.ascontiguousarray(chol.T)  # C-ordered: one _matvec specialization
         self.in_cols = np.zeros(x0.shape[0], dtype=np.bool_)
         self.in_cols[cols] = True
 
@@ -459,6 +460,7 @@ class _Climb:
             self.membership,
             self.x0,
             self.chol,
+            self.chol_t,
             self.chol_inv,
             self.in_cols,
             points,
@@ -471,7 +473,9 @@ class _Climb:
 
 
 @njit(cache=True)
-def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, mean, inv, shift):
+def _climb_round(
+    membership, x0, chol, chol_t, chol_inv, in_cols, points, level, step, mean, inv, shift
+):
     """One ``_Climb`` round for every row of ``points`` (in place, with ``level`` and ``step``),
     compiled as one pass: per point, numpy would cost a dozen calls per round.
 
@@ -483,6 +487,7 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
     ``y = chol^{-1} (x - x0)``, by ``step |y|`` along the unit row of ``shift`` (empty: along
     the gradient of (a), whitened). A trial replaces the point if it passes the membership
     margin and lies higher in the level ``(x - mean)^T inv (x - mean)`` over ``in_cols``.
+    ``chol_t`` is ``chol^T``, C-ordered (``_matvec`` compiles for one layout).
     """
     F = membership[0]  # membership: ``_membership``'s, for ``_inside_one``
     m, n = points.shape
@@ -517,13 +522,7 @@ def _climb_round(membership, x0, chol, chol_inv, in_cols, points, level, step, m
             _try(membership, metric, points[p], t * (1.0 - _SHRINK), G, points, level, p, trial)
         # (b), from the point as (a) left it: move (whitened) is the shift, y the point.
         if shift.shape[0] == 0:
-            # move = chol^T gradient, summed as _matvec(chol.T, gradient, zero, move) sums, in
-            # a loop: chol.T is Fortran-ordered, and _matvec would compile a second time.
-            for a in range(n):
-                row = 0.0
-                for b in range(n):
-                    row += chol[b, a] * (gradient[b] - zero[b])
-                move[a] = row
+            _matvec(chol_t, gradient, zero, move)  # chol_t: chol^T, C-ordered
         else:
             copy_into(move, shift[p])
         _matvec(chol_inv, points[p], x0, G)  # G is now y
