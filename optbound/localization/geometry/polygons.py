@@ -302,6 +302,13 @@ def segment_pair_meets(b1, b2, verts, starts, bboxes) -> int:
     """
     res = 0
     for j in range(len(starts) - 1):
+        if (
+            max(b1[0, 1], b2[0, 1]) < bboxes[j, 0, 0]
+            or min(b1[0, 0], b2[0, 0]) > bboxes[j, 0, 1]
+            or max(b1[1, 1], b2[1, 1]) < bboxes[j, 1, 0]
+            or min(b1[1, 0], b2[1, 0]) > bboxes[j, 1, 1]
+        ):
+            continue
         r = _segments_meet_polygon(b1, b2, verts, starts[j], starts[j + 1], bboxes[j])
         if r == 2:
             return 2
