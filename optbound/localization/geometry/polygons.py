@@ -380,8 +380,27 @@ def segments_meet_polygons(boxes1: np.ndarray, boxes2: np.ndarray, polygons: lis
     numpy.ndarray of int8, shape (m,)
         :class:`~optbound.interval.Tri` values [GLH12, eq. (5)].
     """
+    return segments_meet_packed(boxes1, boxes2, pack_polygons(polygons))
+
+
+def segments_meet_packed(boxes1: np.ndarray, boxes2: np.ndarray, packed) -> np.ndarray:
+    """:func:`segments_meet_polygons` with the polygons packed (:func:`pack_polygons`) once
+    by a caller that tests the same obstacles many times (e.g. a simulation, every step).
+
+    Parameters
+    ----------
+    boxes1, boxes2 : numpy.ndarray, shape (m, 2, 2)
+        Validated end-point boxes.
+    packed : tuple
+        ``(verts, starts, bboxes)`` of :func:`pack_polygons`.
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        As :func:`segments_meet_polygons`.
+    """
     out = np.zeros(len(boxes1), dtype=np.int8)
-    verts, starts, bboxes = pack_polygons(polygons)
+    verts, starts, bboxes = packed
     if len(starts) > 1 and len(out):
         _segments_meet_polygons(
             np.ascontiguousarray(boxes1), np.ascontiguousarray(boxes2), verts, starts, bboxes, out
@@ -448,5 +467,6 @@ __all__ = [
     "point_in_polygon",
     "polygon_inside",
     "segment_pair_meets",
+    "segments_meet_packed",
     "segments_meet_polygons",
 ]
