@@ -116,9 +116,14 @@ def _range(pose, walls, far, y_lo, y_hi):
 
     With ``y_lo = -inf, y_hi = +inf`` the result is the enclosure, bit for bit. With a
     reading ``[y_lo, y_hi]`` only its comparisons with the reading are kept (the test's
-    Tri): a wall whose every candidate lies above ``y_hi`` (their least lower bound, the
-    minimum of the end points' distances and the perpendicular distance, exceeds it) changes
-    none of them and is skipped, and the walls stop once ``hi < y_lo`` (FALSE).
+    Tri), and a wall that cannot change the Tri is skipped: one whose every candidate lies
+    above ``y_hi`` (their least lower bound, the minimum of the end points' distances and
+    the perpendicular distance, exceeds it); and, once ``lo < y_lo`` (the Tri is then FALSE
+    if ``hi < y_lo`` at the end, else UNKNOWN), one that cannot bring ``hi`` below ``y_lo``:
+    not surely in front (no value for ``hi``), or every value for ``hi`` at least ``y_lo``
+    (the edge hits' exceed ``perp_hi``). The walls stop once ``hi < y_lo`` (FALSE). Each
+    skipped wall leaves the Tri unchanged whatever the walls after it do (``lo`` and ``hi``
+    only decrease), so the Tri is that of the enclosure.
     """
     lo = far
     hi = far
@@ -136,7 +141,8 @@ def _range(pose, walls, far, y_lo, y_hi):
         uy_lo, uy_hi = isub(pyl, pyh, a1, a1)
         s_lo, s_hi = _det(ux_lo, ux_hi, uy_lo, uy_hi, exl, exh, eyl, eyh)
         f_lo, f_hi = -s_hi, -s_lo
-        if not f_hi > 0.0:  # no candidate
+        sure_front = f_lo > 0.0
+        if not f_hi > 0.0 or (lo < y_lo and not sure_front):  # no candidate / none for hi
             continue
         perp_lo, perp_hi = idiv(f_lo, f_hi, w[_LEN], w[_LEN + 1])
         ax_lo, ax_hi = isub(a0, a0, pxl, pxh)
@@ -147,7 +153,8 @@ def _range(pose, walls, far, y_lo, y_hi):
         db_lo, db_hi = _norm(bx_lo, bx_hi, by_lo, by_hi)
         if min(min(da_lo, db_lo), perp_lo) > y_hi:
             continue
-        sure_front = f_lo > 0.0
+        if lo < y_lo and min(min(da_hi, db_hi), perp_hi) >= y_lo:
+            continue
         # In-cone determinants of the end points: det(right, p - apex), det(p - apex, left).
         ra_lo, ra_hi = _det(r0l, r0h, r1l, r1h, ax_lo, ax_hi, ay_lo, ay_hi)
         al_lo, al_hi = _det(ax_lo, ax_hi, ay_lo, ay_hi, l0l, l0h, l1l, l1h)
