@@ -20,6 +20,8 @@ decides the box (the verdicts of :func:`optbound.interval.relaxed_test`).
 
 from __future__ import annotations
 
+from itertools import repeat
+
 import numpy as np
 from numba import njit
 
@@ -40,7 +42,6 @@ _CR, _CL, _TR, _TL = 0, 2, 4, 6
 _CONE_COLUMNS = 8
 #: Most boxes :func:`relaxed_tri`'s memo keeps (about 150 bytes each).
 MEMO_SIZE = 500_000
-_NEW = (0, 0, 0)  # counts of a box not tested yet
 
 
 def wall_table(world: np.ndarray) -> np.ndarray:
@@ -323,14 +324,17 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
     calls, keyed by the box's bounds: a box tested again, at another ``q`` (``q = "auto"``
     paves the same tree for q = 0, 1, ...), resumes from its counts, and one whose counts
     already decide it is not tested again. The verdicts are those of a fresh evaluation
-    (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes.
+    (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes. A box's
+    counts are kept as one integer, their digits in base ``t + 1`` (0 for a new box).
     """
     t, m = params.shape[0], len(x.lo)
+    digits = (t + 1) ** np.arange(2, -1, -1)  # n_true, n_false, sonars tested
     if memo is not None:
         boxes = np.stack([x.lo, x.hi, y.lo, y.hi, theta.lo, theta.hi], axis=1)
         keys = boxes.view(np.dtype((np.void, boxes.itemsize * 6))).ravel().tolist()
     if memo:
-        state = np.array([memo.get(key, _NEW) for key in keys], dtype=np.int64).reshape(-1, 3)
+        packed = np.fromiter(map(memo.get, keys, repeat(0)), dtype=np.int64, count=m)
+        state = packed[:, None] // digits % (t + 1)
     else:
         state = np.zeros((m, 3), dtype=np.int64)
     out = np.empty(m, dtype=np.int8)
@@ -347,8 +351,8 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
         if memo is not None:
             if len(memo) + todo.size > MEMO_SIZE:
                 memo.clear()
-            done = [keys[k] for k in todo.tolist()]
-            memo.update(zip(done, map(tuple, part.tolist()), strict=True))
+            done = map(keys.__getitem__, todo.tolist())
+            memo.update(zip(done, (part @ digits).tolist(), strict=True))
     return out
 
 
