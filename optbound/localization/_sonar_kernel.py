@@ -8,9 +8,9 @@ in the same order with the same outward-rounded operations (:mod:`optbound.inter
 bit for bit those of the numpy interval layer), run in one compiled loop over boxes, sonars and
 walls. The tests check that the bounds equal those of the numpy evaluation.
 
-Only the heading's sines and cosines (per box and sonar) are computed outside, by the interval
-layer (:func:`geometry.to_world`, :func:`geometry.unit`); the walls' own quantities (``b - a``,
-length, inward normal) once per map. The determinants of the cone's edges with a wall's
+Only the sines and cosines of the heading and of the cone's edges are computed outside, by the
+interval layer (:func:`geometry.unit`, once per distinct heading); the walls' own quantities
+(``b - a``, length, inward normal) once per map. The determinants of the cone's edges with a wall's
 direction and normal depend on the heading only, not on the apex: they are computed once per
 distinct heading, sonar and wall (on first use) and read back for the other boxes of that
 heading (SIVIA's boxes share few headings). The q-relaxed test [KJWM00] counts, per box, the sonars
@@ -69,28 +69,61 @@ def pose_table(
     """(m, t, 12) per box and sonar: the apex and the cone's right and left unit vectors.
 
     ``params`` is (t, 4): each sonar's mounting ``x, y``, orientation and half-aperture.
-    Computed by the interval layer exactly as :func:`sonar._ranges` computes them. The cone's
-    unit vectors depend on the heading only: they are computed once per distinct ``theta``
-    (SIVIA's boxes share a few; the interval functions act element by element). Also
-    returned: each box's distinct heading (m,) and their number (for :func:`_cone`'s cache).
+    The same bounds as the interval layer's in :func:`sonar._ranges`: the heading's sines
+    and cosines and the cone's unit vectors depend on the heading only, so the interval
+    functions (which act element by element) evaluate them once per distinct ``theta``
+    (SIVIA's boxes share a few), and :func:`_poses` forms the apexes with the same outward-
+    rounded operations as :func:`geometry.to_world`. Also returned: each box's distinct
+    heading (m,) and their number (for :func:`_cone`'s cache).
     """
-    x, y, theta = (Interval._make(c.lo[:, None], c.hi[:, None]) for c in (x, y, theta))
-    sx, sy, alpha, gamma = params.T
-    apex = g.to_world((x, y, theta), (sx, sy))
-    bounds = np.concatenate([theta.lo, theta.hi], axis=1)
+    sx, sy, alpha, gamma = (np.ascontiguousarray(c) for c in params.T)
+    bounds = np.stack([theta.lo, theta.hi], axis=1)
     _, first, row = np.unique(
         bounds.view(np.dtype((np.void, bounds.itemsize * 2))).ravel(),
         return_index=True,
         return_inverse=True,
     )
-    heading = theta[first] + alpha
-    right, left = (
-        tuple(v[row.ravel()] for v in g.unit(heading + turn)) for turn in (-gamma, gamma)
-    )
-    out = np.empty((*apex[0].shape, _POSE_COLUMNS))
-    for col, v in zip((_PX, _PY, _RX, _RY, _LX, _LY), (*apex, *right, *left), strict=True):
-        out[..., col], out[..., col + 1] = v.lo, v.hi
+    n, t = first.size, len(sx)
+    heading = Interval._make(theta.lo[first, None], theta.hi[first, None])
+    # The heading and the cone's right and left edges in one array: one call of cos and sin.
+    angles = (heading, *(heading + alpha + turn for turn in (-gamma, gamma)))
+    lo, hi = (np.concatenate([getattr(a, b).ravel() for a in angles]) for b in ("lo", "hi"))
+    cos, sin = g.unit(Interval._make(lo, hi))
+    units = np.empty((n, t, _POSE_COLUMNS - _RX))
+    for j, cols in enumerate(((_RX, _RY), (_LX, _LY))):
+        part = slice(n + j * n * t, n + (j + 1) * n * t)
+        for col, v in zip(cols, (cos, sin), strict=True):
+            units[..., col - _RX] = v.lo[part].reshape(n, t)
+            units[..., col + 1 - _RX] = v.hi[part].reshape(n, t)
+    cos, sin = (np.stack([v.lo[:n], v.hi[:n]], axis=1) for v in (cos, sin))
+    out = np.empty((len(row), t, _POSE_COLUMNS))
+    xy = np.stack([x.lo, x.hi, y.lo, y.hi], axis=1)
+    _poses(xy, row.ravel(), cos, sin, sx, sy, units, out)
     return out, row.ravel(), first.size
+
+
+@njit(cache=True)
+def _poses(xy, row, cos, sin, sx, sy, units, out):
+    """Fill ``out`` (m, t, 12): the apexes ``(x + c sx - s sy, y + s sx + c sy)``
+    (:func:`geometry.to_world`, operation by operation) and the rows ``units[row]``.
+
+    ``xy`` (m, 4) holds the boxes' ``x`` and ``y`` bounds, ``cos`` and ``sin`` (n, 2) the
+    bounds per distinct heading, ``units`` (n, t, 8) the cone's unit vectors.
+    """
+    for k in range(out.shape[0]):
+        h = row[k]
+        cl, ch, sl, sh = cos[h, 0], cos[h, 1], sin[h, 0], sin[h, 1]
+        for i in range(out.shape[1]):
+            u_lo, u_hi = imul(cl, ch, sx[i], sx[i])
+            v_lo, v_hi = imul(sl, sh, sy[i], sy[i])
+            p_lo, p_hi = iadd(xy[k, 0], xy[k, 1], u_lo, u_hi)
+            out[k, i, _PX], out[k, i, _PX + 1] = isub(p_lo, p_hi, v_lo, v_hi)
+            u_lo, u_hi = imul(sl, sh, sx[i], sx[i])
+            v_lo, v_hi = imul(cl, ch, sy[i], sy[i])
+            p_lo, p_hi = iadd(xy[k, 2], xy[k, 3], u_lo, u_hi)
+            out[k, i, _PY], out[k, i, _PY + 1] = iadd(p_lo, p_hi, v_lo, v_hi)
+            for col in range(_POSE_COLUMNS - _RX):
+                out[k, i, _RX + col] = units[h, i, col]
 
 
 def _cone_cache(headings: int, t: int, walls: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
