@@ -8,14 +8,15 @@ in the same order with the same outward-rounded operations (:mod:`optbound.inter
 bit for bit those of the numpy interval layer), run in one compiled loop over boxes, sonars and
 walls. The tests check that the bounds equal those of the numpy evaluation.
 
-Only the sines and cosines of the heading and of the cone's edges are computed outside, by the
-interval layer (:func:`geometry.unit`, once per distinct heading); the walls' own quantities
-(``b - a``, length, inward normal) once per map. The determinants of the cone's edges with a wall's
-direction and normal depend on the heading only, not on the apex: they are computed once per
-distinct heading, sonar and wall (on first use) and read back for the other boxes of that
-heading (SIVIA's boxes share few headings). The q-relaxed test [KJWM00] counts, per box, the sonars
-whose range interval lies inside / outside their reading and stops at the first sonar that
-decides the box (the verdicts of :func:`optbound.interval.relaxed_test`).
+Only the sines and cosines of the heading and of the cone's edges are computed outside, by
+the interval layer (:func:`geometry.unit`, once per distinct heading); the walls' own
+quantities (``b - a``, length, inward normal) once per map. The determinants of the cone's
+edges with a wall's direction and normal depend on the heading only, not on the apex: they
+are computed once per distinct heading, sonar and wall (on first use) and read back for the
+other boxes of that heading (SIVIA's boxes share few headings). The q-relaxed test [KJWM00]
+counts, per box, the sonars whose range interval lies inside / outside their reading and
+stops at the first sonar that decides the box (the verdicts of
+:func:`optbound.interval.relaxed_test`).
 """
 
 from __future__ import annotations
@@ -104,11 +105,12 @@ def pose_table(
 
 @njit(cache=True)
 def _poses(xy, row, cos, sin, sx, sy, units, out):
-    """Fill ``out`` (m, t, 12): the apexes ``(x + c sx - s sy, y + s sx + c sy)``
-    (:func:`geometry.to_world`, operation by operation) and the rows ``units[row]``.
+    """Fill ``out`` (m, t, 12): each box's and sonar's apex and the cone's unit vectors.
 
-    ``xy`` (m, 4) holds the boxes' ``x`` and ``y`` bounds, ``cos`` and ``sin`` (n, 2) the
-    bounds per distinct heading, ``units`` (n, t, 8) the cone's unit vectors.
+    The apex is ``(x + c sx - s sy, y + s sx + c sy)``, operation by operation as in
+    :func:`geometry.to_world`; the unit vectors are the rows ``units[row]``. ``xy`` (m, 4)
+    holds the boxes' ``x`` and ``y`` bounds, ``cos`` and ``sin`` (n, 2) the bounds per
+    distinct heading, ``units`` (n, t, 8) the cone's unit vectors.
     """
     for k in range(out.shape[0]):
         h = row[k]
