@@ -13,12 +13,14 @@ checked by ``lint-imports`` with the contracts in ``pyproject.toml``, are ``_cor
   of the set protocol (written down in :mod:`optbound.sets.base`).
 - :mod:`~optbound._core.compiled_copy`: ``copy_into``, the array copy of compiled kernels
   (slice assignment would compile numba's string machinery for its error message).
+- :mod:`~optbound._core.linear_program`: ``solve_lp``, the float LPs of the zonotope types
+  and the estimators (HiGHS through highspy; callers certify what they return).
 - :mod:`~optbound._core.box`: ``Box`` and the validators of boxes (``as_box``, ``box_rows``)
   and of ``(m, n, 2)`` box arrays (``box_array``).
 
 Rules:
 
-1. ``_core`` imports nothing from the rest of optbound (numpy and numba only), except
+1. ``_core`` imports nothing from the rest of optbound (numpy, numba and highspy only), except
    :mod:`optbound._fresh`, first, because :mod:`~optbound._core.domain` and
    :mod:`~optbound._core.compiled_copy` define kernels.
 2. Other packages import these names from ``optbound._core`` (or its modules, e.g.

@@ -27,6 +27,7 @@ from itertools import combinations, islice
 import numpy as np
 
 from optbound._core import Box
+from optbound._core.linear_program import solve_lp
 from optbound.compare.exact import fractions, inverse
 from optbound.estimation.rational_polytope import dot, homogeneous, normal
 from optbound.sets.constrained_zonotope import ConstrainedZonotope
@@ -72,20 +73,19 @@ def _float_parameters(Z: ConstrainedZonotope, x: np.ndarray) -> list[np.ndarray]
     """Float candidates for ``xi``: the minimiser of ``|xi|_inf`` (interior when x is) and a
     basic feasible point of ``|xi| <= 1, G xi = x - c, A xi = b`` (dual simplex; at most
     n + nc parameters off the bounds)."""
-    from scipy.optimize import linprog
-
     from optbound.sets.zonotope_membership import min_norm_parameters
 
     c, G, A, b = Z.center, Z.generators, Z.A, Z.b
-    res = linprog(
+    basic = solve_lp(
         np.zeros(Z.n_generators),
         A_eq=np.vstack([G, A]),
         b_eq=np.concatenate([x - c, b]),
-        bounds=(-1.0, 1.0),
-        method="highs-ds",
-    )
+        lower=-1.0,
+        upper=1.0,
+        dual_simplex=True,
+    ).x
     sol = min_norm_parameters(c, G, A, b, x)
-    return [y for y in (sol, res.x if res.status == 0 else None) if y is not None]
+    return [y for y in (sol, basic) if y is not None]
 
 
 def _pivot_order(Mf: np.ndarray, cols: list[int], weights: np.ndarray) -> list[int]:
@@ -102,19 +102,13 @@ def _direction_columns(
 ) -> list[int] | None:
     """The support of a least-``l_1`` direction ``d`` with ``M d = e / |e|`` that moves no
     snapped parameter outward (``sign_j d_j <= 0``), by a float LP (HiGHS), or None."""
-    from scipy.optimize import linprog
-
     m = Mf.shape[1]
-    up = [(0.0, 0.0) if j in near and signs[j] > 0 else (0.0, None) for j in range(m)]
-    down = [(0.0, 0.0) if j in near and signs[j] < 0 else (0.0, None) for j in range(m)]
-    res = linprog(
-        np.ones(2 * m),
-        A_eq=np.hstack([Mf, -Mf]),
-        b_eq=e / np.max(np.abs(e)),
-        bounds=up + down,
-        method="highs",
+    up = [0.0 if j in near and signs[j] > 0 else np.inf for j in range(m)]
+    down = [0.0 if j in near and signs[j] < 0 else np.inf for j in range(m)]
+    res = solve_lp(
+        np.ones(2 * m), A_eq=np.hstack([Mf, -Mf]), b_eq=e / np.max(np.abs(e)), upper=up + down
     )
-    if res.status != 0:
+    if not res.optimal:
         return None
     d = res.x[:m] - res.x[m:]
     return [j for j in np.argsort(-np.abs(d), kind="stable") if abs(d[j]) > 1e-9]

@@ -29,6 +29,8 @@ from math import comb
 
 import numpy as np
 
+from optbound._core.linear_program import solve_lp
+
 MAX_SUBSETS = 20000
 GAINS = ("frobenius", "volume")
 
@@ -167,8 +169,6 @@ def volume_gain(G: np.ndarray, a: np.ndarray, s: float) -> np.ndarray:
     .. [1] T. Alamo, J. M. Bravo, E. F. Camacho, "Guaranteed state estimation by zonotopes",
        Automatica 41(6), 2005.
     """
-    from scipy.optimize import linprog
-
     n = G.shape[0]
     base, d = volume_terms(G)
     k = d.shape[0]
@@ -181,8 +181,8 @@ def volume_gain(G: np.ndarray, a: np.ndarray, s: float) -> np.ndarray:
         rows.append(np.concatenate([d[j], [0.0], -eye[j]]))
         rows.append(np.concatenate([-d[j], [0.0], -eye[j]]))
         rhs += [0.0, 0.0]
-    bounds = [(None, None)] * n + [(0.0, None)] * (k + 1)
-    res = linprog(cost, A_ub=np.array(rows), b_ub=np.array(rhs), bounds=bounds, method="highs")
-    if res.status != 0:
-        raise ValueError(f"the volume-gain LP failed: {res.message}")
+    lower = np.r_[np.full(n, -np.inf), np.zeros(k + 1)]
+    res = solve_lp(cost, A_ub=np.array(rows), b_ub=np.array(rhs), lower=lower)
+    if not res.optimal:
+        raise ValueError(f"the volume-gain LP failed: HiGHS reports {res.status!r}")
     return res.x[:n]

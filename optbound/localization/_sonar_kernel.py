@@ -8,14 +8,20 @@ in the same order with the same outward-rounded operations (:mod:`optbound.inter
 bit for bit those of the numpy interval layer), run in one compiled loop over boxes, sonars and
 walls. The tests check that the bounds equal those of the numpy evaluation.
 
-Only the heading's sines and cosines (per box and sonar) are computed outside, by the interval
-layer (:func:`geometry.to_world`, :func:`geometry.unit`); the walls' own quantities (``b - a``,
-length, inward normal) once per map. The q-relaxed test [KJWM00] counts, per box, the sonars
-whose range interval lies inside / outside their reading and stops at the first sonar that
-decides the box (the verdicts of :func:`optbound.interval.relaxed_test`).
+Only the sines and cosines of the heading and of the cone's edges are computed outside, by
+the interval layer (:func:`geometry.unit`, once per distinct heading); the walls' own
+quantities (``b - a``, length, inward normal) once per map. The determinants of the cone's
+edges with a wall's direction and normal depend on the heading only, not on the apex: they
+are computed once per distinct heading, sonar and wall (on first use) and read back for the
+other boxes of that heading (SIVIA's boxes share few headings). The q-relaxed test [KJWM00]
+counts, per box, the sonars whose range interval lies inside / outside their reading and
+stops at the first sonar that decides the box (the verdicts of
+:func:`optbound.interval.relaxed_test`).
 """
 
 from __future__ import annotations
+
+from itertools import repeat
 
 import numpy as np
 from numba import njit
@@ -32,9 +38,11 @@ _WALL_COLUMNS = 14
 # Columns of the per-(box, sonar) table (:func:`pose_table`): lo, hi of each quantity.
 _PX, _PY, _RX, _RY, _LX, _LY = 0, 2, 4, 6, 8, 10
 _POSE_COLUMNS = 12
+# Columns of the per-(heading, sonar, wall) cache (:func:`_cone`): lo, hi of each determinant.
+_CR, _CL, _TR, _TL = 0, 2, 4, 6
+_CONE_COLUMNS = 8
 #: Most boxes :func:`relaxed_tri`'s memo keeps (about 150 bytes each).
 MEMO_SIZE = 500_000
-_NEW = (0, 0, 0)  # counts of a box not tested yet
 
 
 def wall_table(world: np.ndarray) -> np.ndarray:
@@ -56,37 +64,80 @@ def wall_table(world: np.ndarray) -> np.ndarray:
     return out
 
 
-def pose_table(params: np.ndarray, x: Interval, y: Interval, theta: Interval) -> np.ndarray:
+def pose_table(
+    params: np.ndarray, x: Interval, y: Interval, theta: Interval
+) -> tuple[np.ndarray, np.ndarray, int]:
     """(m, t, 12) per box and sonar: the apex and the cone's right and left unit vectors.
 
     ``params`` is (t, 4): each sonar's mounting ``x, y``, orientation and half-aperture.
-    Computed by the interval layer exactly as :func:`sonar._ranges` computes them. The cone's
-    unit vectors depend on the heading only: they are computed once per distinct ``theta``
-    (SIVIA's boxes share a few; the interval functions act element by element).
+    The same bounds as the interval layer's in :func:`sonar._ranges`: the heading's sines
+    and cosines and the cone's unit vectors depend on the heading only, so the interval
+    functions (which act element by element) evaluate them once per distinct ``theta``
+    (SIVIA's boxes share a few), and :func:`_poses` forms the apexes with the same outward-
+    rounded operations as :func:`geometry.to_world`. Also returned: each box's distinct
+    heading (m,) and their number (for :func:`_cone`'s cache).
     """
-    x, y, theta = (Interval._make(c.lo[:, None], c.hi[:, None]) for c in (x, y, theta))
-    sx, sy, alpha, gamma = params.T
-    apex = g.to_world((x, y, theta), (sx, sy))
-    bounds = np.concatenate([theta.lo, theta.hi], axis=1)
+    sx, sy, alpha, gamma = (np.ascontiguousarray(c) for c in params.T)
+    bounds = np.stack([theta.lo, theta.hi], axis=1)
     _, first, row = np.unique(
         bounds.view(np.dtype((np.void, bounds.itemsize * 2))).ravel(),
         return_index=True,
         return_inverse=True,
     )
-    heading = theta[first] + alpha
-    right, left = (
-        tuple(v[row.ravel()] for v in g.unit(heading + turn)) for turn in (-gamma, gamma)
-    )
-    out = np.empty((*apex[0].shape, _POSE_COLUMNS))
-    for col, v in zip((_PX, _PY, _RX, _RY, _LX, _LY), (*apex, *right, *left), strict=True):
-        out[..., col], out[..., col + 1] = v.lo, v.hi
-    return out
+    n, t = first.size, len(sx)
+    heading = Interval._make(theta.lo[first, None], theta.hi[first, None])
+    # The heading and the cone's right and left edges in one array: one call of cos and sin.
+    angles = (heading, *(heading + alpha + turn for turn in (-gamma, gamma)))
+    lo, hi = (np.concatenate([getattr(a, b).ravel() for a in angles]) for b in ("lo", "hi"))
+    cos, sin = g.unit(Interval._make(lo, hi))
+    units = np.empty((n, t, _POSE_COLUMNS - _RX))
+    for j, cols in enumerate(((_RX, _RY), (_LX, _LY))):
+        part = slice(n + j * n * t, n + (j + 1) * n * t)
+        for col, v in zip(cols, (cos, sin), strict=True):
+            units[..., col - _RX] = v.lo[part].reshape(n, t)
+            units[..., col + 1 - _RX] = v.hi[part].reshape(n, t)
+    cos, sin = (np.stack([v.lo[:n], v.hi[:n]], axis=1) for v in (cos, sin))
+    out = np.empty((len(row), t, _POSE_COLUMNS))
+    xy = np.stack([x.lo, x.hi, y.lo, y.hi], axis=1)
+    _poses(xy, row.ravel(), cos, sin, sx, sy, units, out)
+    return out, row.ravel(), first.size
+
+
+@njit(cache=True)
+def _poses(xy, row, cos, sin, sx, sy, units, out):
+    """Fill ``out`` (m, t, 12): each box's and sonar's apex and the cone's unit vectors.
+
+    The apex is ``(x + c sx - s sy, y + s sx + c sy)``, operation by operation as in
+    :func:`geometry.to_world`; the unit vectors are the rows ``units[row]``. ``xy`` (m, 4)
+    holds the boxes' ``x`` and ``y`` bounds, ``cos`` and ``sin`` (n, 2) the bounds per
+    distinct heading, ``units`` (n, t, 8) the cone's unit vectors.
+    """
+    for k in range(out.shape[0]):
+        h = row[k]
+        cl, ch, sl, sh = cos[h, 0], cos[h, 1], sin[h, 0], sin[h, 1]
+        for i in range(out.shape[1]):
+            u_lo, u_hi = imul(cl, ch, sx[i], sx[i])
+            v_lo, v_hi = imul(sl, sh, sy[i], sy[i])
+            p_lo, p_hi = iadd(xy[k, 0], xy[k, 1], u_lo, u_hi)
+            out[k, i, _PX], out[k, i, _PX + 1] = isub(p_lo, p_hi, v_lo, v_hi)
+            u_lo, u_hi = imul(sl, sh, sx[i], sx[i])
+            v_lo, v_hi = imul(cl, ch, sy[i], sy[i])
+            p_lo, p_hi = iadd(xy[k, 2], xy[k, 3], u_lo, u_hi)
+            out[k, i, _PY], out[k, i, _PY + 1] = iadd(p_lo, p_hi, v_lo, v_hi)
+            for col in range(_POSE_COLUMNS - _RX):
+                out[k, i, _RX + col] = units[h, i, col]
+
+
+def _cone_cache(headings: int, t: int, walls: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """An empty cache of :func:`_cone` for ``headings`` distinct headings: values, filled."""
+    shape = (headings, t, walls.shape[0])
+    return np.empty((*shape, _CONE_COLUMNS)), np.zeros(shape, dtype=np.bool_)
 
 
 # ``_det`` and ``_norm`` (and the interval operations they call) are called, not inlined by
 # numba: inlined, their twelve and two uses in ``_range`` made one function that took numba
 # and LLVM ~36 s of CPU to compile, against ~2 s as calls, for the same bits and the same
-# speed (LLVM still inlines them, at -O3).
+# speed.
 @njit(cache=True)
 def _det(ul, uh, vl, vh, wl, wh, zl, zh):
     """``det(u, v, w, z) = u z - v w`` on intervals (:func:`geometry.det`)."""
@@ -104,8 +155,26 @@ def _norm(xl, xh, yl, yh):
     return isqrt(n_lo, n_hi)
 
 
+@njit(cache=True)
+def _cone(pose, w, c):
+    """Fill ``c`` (8,): the wall's inward normal n and direction e against the cone's edges.
+
+    ``det(right, n)``, ``det(n, left)`` (n in the cone), ``det(right, e)``, ``det(left, e)``
+    (an edge ray towards the wall's front). They depend on the heading, not on the apex:
+    :func:`_range` computes them once per distinct heading, sonar and wall.
+    """
+    r0l, r0h, r1l, r1h = pose[_RX], pose[_RX + 1], pose[_RY], pose[_RY + 1]
+    l0l, l0h, l1l, l1h = pose[_LX], pose[_LX + 1], pose[_LY], pose[_LY + 1]
+    nxl, nxh, nyl, nyh = w[_INX], w[_INX + 1], w[_INY], w[_INY + 1]
+    exl, exh, eyl, eyh = w[_EX], w[_EX + 1], w[_EY], w[_EY + 1]
+    c[_CR], c[_CR + 1] = _det(r0l, r0h, r1l, r1h, nxl, nxh, nyl, nyh)
+    c[_CL], c[_CL + 1] = _det(nxl, nxh, nyl, nyh, l0l, l0h, l1l, l1h)
+    c[_TR], c[_TR + 1] = _det(r0l, r0h, r1l, r1h, exl, exh, eyl, eyh)
+    c[_TL], c[_TL + 1] = _det(l0l, l0h, l1l, l1h, exl, exh, eyl, eyh)
+
+
 @njit(cache=True, error_model="numpy")
-def _range(pose, walls, far, y_lo, y_hi):
+def _range(pose, walls, far, y_lo, y_hi, cones, filled):
     """Enclosure ``(lo, hi)`` of one sonar's range on one box (:func:`nearest_in_cone`).
 
     Per wall, the candidates of :func:`geometry.cone_candidates`: a candidate's value lowers
@@ -116,9 +185,17 @@ def _range(pose, walls, far, y_lo, y_hi):
 
     With ``y_lo = -inf, y_hi = +inf`` the result is the enclosure, bit for bit. With a
     reading ``[y_lo, y_hi]`` only its comparisons with the reading are kept (the test's
-    Tri): a wall whose every candidate lies above ``y_hi`` (their least lower bound, the
-    minimum of the end points' distances and the perpendicular distance, exceeds it) changes
-    none of them and is skipped, and the walls stop once ``hi < y_lo`` (FALSE).
+    Tri), and a wall that cannot change the Tri is skipped: one whose every candidate lies
+    above ``y_hi`` (their least lower bound, the minimum of the end points' distances and
+    the perpendicular distance, exceeds it); and, once ``lo < y_lo`` (the Tri is then FALSE
+    if ``hi < y_lo`` at the end, else UNKNOWN), one that cannot bring ``hi`` below ``y_lo``:
+    not surely in front (no value for ``hi``), or every value for ``hi`` at least ``y_lo``
+    (the edge hits' exceed ``perp_hi``). The walls stop once ``hi < y_lo`` (FALSE). Each
+    skipped wall leaves the Tri unchanged whatever the walls after it do (``lo`` and ``hi``
+    only decrease), so the Tri is that of the enclosure.
+
+    ``cones`` (s, 8) and ``filled`` (s,) are this heading's and sonar's cache of
+    :func:`_cone`, per wall; a wall's row is filled on its first use.
     """
     lo = far
     hi = far
@@ -136,7 +213,8 @@ def _range(pose, walls, far, y_lo, y_hi):
         uy_lo, uy_hi = isub(pyl, pyh, a1, a1)
         s_lo, s_hi = _det(ux_lo, ux_hi, uy_lo, uy_hi, exl, exh, eyl, eyh)
         f_lo, f_hi = -s_hi, -s_lo
-        if not f_hi > 0.0:  # no candidate
+        sure_front = f_lo > 0.0
+        if not f_hi > 0.0 or (lo < y_lo and not sure_front):  # no candidate / none for hi
             continue
         perp_lo, perp_hi = idiv(f_lo, f_hi, w[_LEN], w[_LEN + 1])
         ax_lo, ax_hi = isub(a0, a0, pxl, pxh)
@@ -147,7 +225,8 @@ def _range(pose, walls, far, y_lo, y_hi):
         db_lo, db_hi = _norm(bx_lo, bx_hi, by_lo, by_hi)
         if min(min(da_lo, db_lo), perp_lo) > y_hi:
             continue
-        sure_front = f_lo > 0.0
+        if lo < y_lo and min(min(da_hi, db_hi), perp_hi) >= y_lo:
+            continue
         # In-cone determinants of the end points: det(right, p - apex), det(p - apex, left).
         ra_lo, ra_hi = _det(r0l, r0h, r1l, r1h, ax_lo, ax_hi, ay_lo, ay_hi)
         al_lo, al_hi = _det(ax_lo, ax_hi, ay_lo, ay_hi, l0l, l0h, l1l, l1h)
@@ -162,47 +241,54 @@ def _range(pose, walls, far, y_lo, y_hi):
             lo = min(lo, db_lo)
             if sure_front and min(rb_lo, bl_lo) >= 0.0:
                 hi = min(hi, db_hi)
-        # The foot of the perpendicular: dot(apex - a, e) >= 0, dot(b - apex, e) >= 0, and
-        # the inward normal in the cone.
-        p_lo, p_hi = imul(-ax_hi, -ax_lo, exl, exh)
-        q_lo, q_hi = imul(-ay_hi, -ay_lo, eyl, eyh)
-        t1_lo, t1_hi = iadd(p_lo, p_hi, q_lo, q_hi)
-        p_lo, p_hi = imul(bx_lo, bx_hi, exl, exh)
-        q_lo, q_hi = imul(by_lo, by_hi, eyl, eyh)
-        t2_lo, t2_hi = iadd(p_lo, p_hi, q_lo, q_hi)
-        if t1_hi >= 0.0 and t2_hi >= 0.0:
-            nx_lo, nx_hi, ny_lo, ny_hi = w[_INX], w[_INX + 1], w[_INY], w[_INY + 1]
-            cr_lo, cr_hi = _det(r0l, r0h, r1l, r1h, nx_lo, nx_hi, ny_lo, ny_hi)
-            cl_lo, cl_hi = _det(nx_lo, nx_hi, ny_lo, ny_hi, l0l, l0h, l1l, l1h)
-            if min(cr_hi, cl_hi) >= 0.0:
+        c = cones[j]
+        if not filled[j]:
+            _cone(pose, w, c)
+            filled[j] = True
+        # The foot of the perpendicular: the inward normal in the cone,
+        # dot(apex - a, e) >= 0 and dot(b - apex, e) >= 0.
+        cr_lo, cr_hi, cl_lo, cl_hi = c[_CR], c[_CR + 1], c[_CL], c[_CL + 1]
+        if min(cr_hi, cl_hi) >= 0.0:
+            p_lo, p_hi = imul(-ax_hi, -ax_lo, exl, exh)
+            q_lo, q_hi = imul(-ay_hi, -ay_lo, eyl, eyh)
+            t1_lo, t1_hi = iadd(p_lo, p_hi, q_lo, q_hi)
+            p_lo, p_hi = imul(bx_lo, bx_hi, exl, exh)
+            q_lo, q_hi = imul(by_lo, by_hi, eyl, eyh)
+            t2_lo, t2_hi = iadd(p_lo, p_hi, q_lo, q_hi)
+            if t1_hi >= 0.0 and t2_hi >= 0.0:
                 lo = min(lo, perp_lo)
                 if sure_front and t1_lo >= 0.0 and t2_lo >= 0.0 and min(cr_lo, cl_lo) >= 0.0:
                     hi = min(hi, perp_hi)
         # The hits of the cone's edge rays u: margins det(a - apex, u) and det(u, b - apex).
         for k in range(2):
             if k == 0:  # right: det(a, r) = -det(r, a); det(r, b)
-                u0l, u0h, u1l, u1h = r0l, r0h, r1l, r1h
+                to_lo, to_hi = c[_TR], c[_TR + 1]
                 m1_lo, m1_hi, m2_lo, m2_hi = -ra_hi, -ra_lo, rb_lo, rb_hi
             else:  # left: det(a, l); det(l, b) = -det(b, l)
-                u0l, u0h, u1l, u1h = l0l, l0h, l1l, l1h
+                to_lo, to_hi = c[_TL], c[_TL + 1]
                 m1_lo, m1_hi, m2_lo, m2_hi = al_lo, al_hi, -bl_hi, -bl_lo
-            if m1_hi >= 0.0 and m2_hi >= 0.0:
-                to_lo, to_hi = _det(u0l, u0h, u1l, u1h, exl, exh, eyl, eyh)
-                if to_hi > 0.0:
-                    q_lo, q_hi = idiv(f_lo, f_hi, to_lo, to_hi)
-                    if q_lo <= q_hi:  # not empty (toward = [0, 0])
-                        lo = min(lo, max(q_lo, perp_lo))
-                        if sure_front and to_lo > 0.0 and m1_lo >= 0.0 and m2_lo >= 0.0:
-                            hi = min(hi, max(q_hi, perp_hi))
+            if m1_hi >= 0.0 and m2_hi >= 0.0 and to_hi > 0.0:  # toward = det(u, e)
+                q_lo, q_hi = idiv(f_lo, f_hi, to_lo, to_hi)
+                if q_lo <= q_hi:  # not empty (toward = [0, 0])
+                    lo = min(lo, max(q_lo, perp_lo))
+                    if sure_front and to_lo > 0.0 and m1_lo >= 0.0 and m2_lo >= 0.0:
+                        hi = min(hi, max(q_hi, perp_hi))
     return lo, hi
 
 
 @njit(cache=True)
-def _ranges(poses, walls, far, out):
-    """Fill ``out`` (m, t, 2) with every box's and sonar's range enclosure."""
+def _ranges(poses, headings, walls, far, cones, filled, out):
+    """Fill ``out`` (m, t, 2) with every box's and sonar's range enclosure.
+
+    ``headings`` (m,) is each box's distinct heading, ``cones`` and ``filled`` the cache of
+    :func:`_cone` per distinct heading (:func:`_cone_cache`).
+    """
     for k in range(poses.shape[0]):
+        h = headings[k]
         for i in range(poses.shape[1]):
-            out[k, i, 0], out[k, i, 1] = _range(poses[k, i], walls, far, -np.inf, np.inf)
+            out[k, i, 0], out[k, i, 1] = _range(
+                poses[k, i], walls, far, -np.inf, np.inf, cones[h, i], filled[h, i]
+            )
 
 
 @njit(cache=True, inline="always")
@@ -232,20 +318,22 @@ def _pending(state, t, q, out):
 
 
 @njit(cache=True)
-def _relaxed(poses, walls, far, y_lo, y_hi, q, state, out):
+def _relaxed(poses, headings, walls, far, y_lo, y_hi, q, cones, filled, state, out):
     """Fill ``out`` (m,) with the Tri of "at most q sonars inconsistent" per box.
 
     ``state`` (m, 3) holds per box the numbers of TRUE and FALSE sonars among the first
     ``state[:, 2]`` (all 0 for a new box); the sonars are tested from there on, in order,
     until the box is decided (:func:`_decide`), and ``state`` is updated, so that a later
-    call with another ``q`` resumes where this one stopped.
+    call with another ``q`` resumes where this one stopped. ``headings``, ``cones`` and
+    ``filled`` as in :func:`_ranges`.
     """
     t = poses.shape[1]
     for k in range(poses.shape[0]):
+        h = headings[k]
         n_true, n_false, i = state[k, 0], state[k, 1], state[k, 2]
         verdict = _decide(n_true, n_false, t - i, t, q)
         while verdict < 0:
-            lo, hi = _range(poses[k, i], walls, far, y_lo[i], y_hi[i])
+            lo, hi = _range(poses[k, i], walls, far, y_lo[i], y_hi[i], cones[h, i], filled[h, i])
             if lo >= y_lo[i] and hi <= y_hi[i]:
                 n_true += 1
             elif hi < y_lo[i] or lo > y_hi[i]:
@@ -258,9 +346,9 @@ def _relaxed(poses, walls, far, y_lo, y_hi, q, state, out):
 
 def range_bounds(world_table, params, far, x, y, theta) -> Interval:
     """(m, t) range enclosures on 1-D coordinate intervals (the compiled ``range_inclusion``)."""
-    poses = pose_table(params, x, y, theta)
+    poses, headings, n = pose_table(params, x, y, theta)
     out = np.empty((*poses.shape[:2], 2))
-    _ranges(poses, world_table, far, out)
+    _ranges(poses, headings, world_table, far, *_cone_cache(n, len(params), world_table), out)
     return Interval._make(out[..., 0], out[..., 1])
 
 
@@ -271,14 +359,17 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
     calls, keyed by the box's bounds: a box tested again, at another ``q`` (``q = "auto"``
     paves the same tree for q = 0, 1, ...), resumes from its counts, and one whose counts
     already decide it is not tested again. The verdicts are those of a fresh evaluation
-    (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes.
+    (:func:`_decide`). The memo is emptied when it holds :data:`MEMO_SIZE` boxes. A box's
+    counts are kept as one integer, their digits in base ``t + 1`` (0 for a new box).
     """
     t, m = params.shape[0], len(x.lo)
+    digits = (t + 1) ** np.arange(2, -1, -1)  # n_true, n_false, sonars tested
     if memo is not None:
         boxes = np.stack([x.lo, x.hi, y.lo, y.hi, theta.lo, theta.hi], axis=1)
         keys = boxes.view(np.dtype((np.void, boxes.itemsize * 6))).ravel().tolist()
     if memo:
-        state = np.array([memo.get(key, _NEW) for key in keys], dtype=np.int64).reshape(-1, 3)
+        packed = np.fromiter(map(memo.get, keys, repeat(0)), dtype=np.int64, count=m)
+        state = packed[:, None] // digits % (t + 1)
     else:
         state = np.zeros((m, 3), dtype=np.int64)
     out = np.empty(m, dtype=np.int8)
@@ -286,15 +377,17 @@ def relaxed_tri(world_table, params, far, Y, q, x, y, theta, memo=None) -> np.nd
     todo = np.flatnonzero(out < 0)
     if todo.size:
         sub = todo if todo.size < m else slice(None)
-        poses = pose_table(params, x[sub], y[sub], theta[sub])
+        poses, headings, n = pose_table(params, x[sub], y[sub], theta[sub])
         part, verdicts = state[todo], np.empty(todo.size, dtype=np.int8)
-        _relaxed(poses, world_table, far, Y[:, 0].copy(), Y[:, 1].copy(), q, part, verdicts)
+        Y_lo, Y_hi = Y[:, 0].copy(), Y[:, 1].copy()
+        cache = _cone_cache(n, t, world_table)
+        _relaxed(poses, headings, world_table, far, Y_lo, Y_hi, q, *cache, part, verdicts)
         state[todo], out[todo] = part, verdicts
         if memo is not None:
             if len(memo) + todo.size > MEMO_SIZE:
                 memo.clear()
-            done = [keys[k] for k in todo.tolist()]
-            memo.update(zip(done, map(tuple, part.tolist()), strict=True))
+            done = map(keys.__getitem__, todo.tolist())
+            memo.update(zip(done, (part @ digits).tolist(), strict=True))
     return out
 
 

@@ -16,7 +16,7 @@ into the set itself:
 
 Linear programs are solved by HiGHS in floats and then *certified* by weak duality
 (:func:`max_bound`), evaluated in outward-rounded arithmetic, so a bound returned here holds
-for the exact set whatever the solver's accuracy. The interval package and scipy are
+for the exact set whatever the solver's accuracy. The interval package and HiGHS are
 imported on first use, so that ``import optbound`` stays light.
 """
 
@@ -309,15 +309,15 @@ def max_bound(f_iv: Interval, A: np.ndarray, b: np.ndarray) -> float:
     float
         The certified upper bound (``-inf`` if proven empty).
     """
-    from scipy.optimize import linprog
+    from optbound._core.linear_program import solve_lp
 
     nc = A.shape[0]
     if nc == 0:
         return float(row_sum_up(magnitude(f_iv)[None, :])[0])
     f = split(f_iv)[0]
-    res = linprog(-f, A_eq=A, b_eq=b, bounds=(-1.0, 1.0), method="highs")
-    if res.status == 0:
-        lam = -np.asarray(res.eqlin.marginals, dtype=float)
+    res = solve_lp(-f, A_eq=A, b_eq=b, lower=-1.0, upper=1.0)
+    if res.optimal:
+        lam = -res.eq_duals
     elif proven_empty(A, b):
         return -np.inf
     else:
@@ -348,7 +348,7 @@ def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
     bool
         True if a Farkas certificate proves emptiness; False means not proven.
     """
-    from scipy.optimize import linprog
+    from optbound._core.linear_program import solve_lp
 
     nc, m = A.shape
     if nc == 0:
@@ -357,18 +357,17 @@ def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
     cost[-1] = 1.0
     eye = np.eye(m)
     A_ub = np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]])
-    res = linprog(
+    res = solve_lp(
         cost,
         A_ub=A_ub,
         b_ub=np.zeros(2 * m),
         A_eq=np.column_stack([A, np.zeros(nc)]),
         b_eq=b,
-        bounds=[(None, None)] * m + [(0.0, None)],
-        method="highs",
+        lower=np.r_[np.full(m, -np.inf), 0.0],
     )
     candidates = []
-    if res.status == 0:
-        candidates.append(np.asarray(res.eqlin.marginals, dtype=float))
+    if res.optimal:
+        candidates.append(res.eq_duals)
     candidates.append(b - A @ np.linalg.lstsq(A, b, rcond=None)[0])
     zero = point(np.zeros(m))
     for lam in candidates:

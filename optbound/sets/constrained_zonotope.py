@@ -20,6 +20,7 @@ import numpy as np
 
 from optbound._core import Box, box_array, real_array
 from optbound._core import validate as v
+from optbound._core.linear_program import solve_lp
 from optbound.sets.base import ConvexSet, EmptySetError
 from optbound.sets.certified import (
     affine_image,
@@ -707,16 +708,14 @@ class ConstrainedZonotope(PolygonOutline, ConvexSet):
 
     def _support_xi(self, d: np.ndarray) -> np.ndarray | None:
         """The LP's ``xi`` maximising ``d^T G xi`` (float, not certified); None if it fails."""
-        from scipy.optimize import linprog
-
-        res = linprog(
+        res = solve_lp(
             -(self._G.T @ d),
             A_eq=self._A if self.n_constraints else None,
             b_eq=self._b if self.n_constraints else None,
-            bounds=(-1.0, 1.0),
-            method="highs",
+            lower=-1.0,
+            upper=1.0,
         )
-        return None if res.status != 0 else res.x
+        return res.x
 
 
 def _ccw_unique(pts: np.ndarray) -> np.ndarray:

@@ -30,6 +30,8 @@ from fractions import Fraction
 
 import numpy as np
 
+from optbound._core.linear_program import solve_lp
+
 Point = tuple[Fraction, Fraction]
 #: Relative margin of the float box tests (module docstring).
 MARGIN = 1e-12
@@ -292,20 +294,17 @@ def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
     ``z = xi_0 + t (xi - xi_0)`` is evaluated as ``c + G xi_0 + t G (xi - xi_0)``, the same
     rational numbers.
     """
-    from scipy.optimize import linprog
-
     m = cz.n_generators
     # xi_0: min t s.t. A xi = b, |xi_j| <= t (the least-infinity-norm solution).
-    res = linprog(
+    res = solve_lp(
         np.r_[np.zeros(m), 1.0],
         A_ub=np.block([[np.eye(m), -np.ones((m, 1))], [-np.eye(m), -np.ones((m, 1))]]),
         b_ub=np.zeros(2 * m),
         A_eq=np.column_stack([cz.A, np.zeros(cz.n_constraints)]) if cz.n_constraints else None,
         b_eq=cz.b if cz.n_constraints else None,
-        bounds=[(None, None)] * m + [(0.0, None)],
-        method="highs",
+        lower=np.r_[np.full(m, -np.inf), 0.0],
     )
-    if res.status != 0:
+    if not res.optimal:
         return []
     project = _projector(cz.A, cz.b)
     start = _repair(project, res.x[:m])

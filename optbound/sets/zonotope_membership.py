@@ -18,9 +18,9 @@ for any direction ``d``:
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import linprog
 
 from optbound._core import box_array
+from optbound._core.linear_program import solve_lp
 from optbound.interval import Interval
 from optbound.interval.tribool import from_masks
 from optbound.sets.certified import matmul, point
@@ -54,16 +54,14 @@ def min_norm_parameters(
     eye = np.eye(m)
     cost = np.zeros(m + 1)
     cost[-1] = 1.0
-    res = linprog(
+    return solve_lp(
         cost,
         A_ub=np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]]),
         b_ub=np.zeros(2 * m),
         A_eq=np.column_stack([np.vstack([G, A]), np.zeros(G.shape[0] + A.shape[0])]),
         b_eq=np.concatenate([x - c, b]),
-        bounds=[(None, None)] * m + [(0.0, None)],
-        method="highs",
-    )
-    return res.x if res.status == 0 else None
+        lower=np.r_[np.full(m, -np.inf), 0.0],
+    ).x
 
 
 def lp_contains(

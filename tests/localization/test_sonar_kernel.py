@@ -60,6 +60,16 @@ def test_compiled_enclosure_equals_the_interval_layer_on_the_belt_room():
     assert np.array_equal(got.lo, ref.lo) and np.array_equal(got.hi, ref.hi)
 
 
+def test_boxes_sharing_headings_get_the_interval_layers_bounds():
+    """A few headings for many boxes (as in SIVIA): the per-heading values serve every box."""
+    rng = np.random.default_rng(11)
+    world, belt = _world(rng), random_belt(rng, 5)
+    boxes = _boxes(rng, 400)
+    boxes[:, 2] = boxes[rng.integers(0, 4, 400), 2]  # four distinct headings
+    got, ref = range_inclusion(world, belt, boxes), _interval_layer(world, belt, boxes)
+    assert np.array_equal(got.lo, ref.lo) and np.array_equal(got.hi, ref.hi)
+
+
 @pytest.mark.parametrize("seed", range(3))
 def test_fused_relaxed_test_equals_the_plain_one(seed):
     """Every q: the compiled verdicts (with their skipped walls) are the numpy ones."""
