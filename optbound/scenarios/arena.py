@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from optbound.localization.environment import Environment
-from optbound.localization.geometry import segments_meet_polygons
+from optbound.localization.geometry import pack_polygons, segments_meet_packed
 from optbound.localization.visibility import measure
 
 SIZE = 10.0
@@ -208,19 +208,21 @@ def random_layout(seed: int) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
             continue
         if all(np.any((lo > q.max(axis=0) + 0.6) | (hi < q.min(axis=0) - 0.6)) for q in placed):
             placed.append(poly)
+    packed = pack_polygons(placed)
     starts: list[np.ndarray] = []
     while len(starts) < len(STARTS):
         p = rng.uniform(0.3, SIZE - 0.3, (1, 2))
-        if _free(p, placed, 0.3)[0]:
+        if _free(p, packed, 0.3)[0]:
             starts.append(p[0])
     return tuple(placed), np.array(starts)
 
 
-def _free(points: np.ndarray, obstacles, clearance: float = CLEARANCE) -> np.ndarray:
-    """Points at least ``clearance`` (in the sup norm) inside the room and off the obstacles."""
+def _free(points: np.ndarray, packed, clearance: float = CLEARANCE) -> np.ndarray:
+    """Points at least ``clearance`` (in the sup norm) inside the room and off the obstacles
+    (packed once by the caller, :func:`~optbound.localization.geometry.pack_polygons`)."""
     inside = np.all((points > clearance) & (points < SIZE - clearance), axis=1)
     boxes = np.stack([points - clearance, points + clearance], axis=-1)
-    return inside & (segments_meet_polygons(boxes, boxes, obstacles) == 0)
+    return inside & (segments_meet_packed(boxes, boxes, packed) == 0)
 
 
 def simulate(
@@ -278,6 +280,7 @@ def simulate(
     obstacles, starts = (OBSTACLES, STARTS) if setting.layout == "designed" else random_layout(seed)
     env = environment(n_obstacles, obstacles)
     rng = np.random.default_rng(seed)
+    packed = pack_polygons(env.exact)
     truth = np.empty((steps + 1, n_robots, 2))
     truth[0] = starts[:n_robots]
     theta = rng.uniform(-np.pi, np.pi, n_robots)
@@ -287,7 +290,7 @@ def simulate(
         d = rng.uniform(STEP - STEP_ERROR, STEP + STEP_ERROR, n_robots)
         nxt = truth[k] + d[:, None] * np.column_stack([np.cos(theta), np.sin(theta)])
         for _ in range(50):  # blocked robots draw a new heading
-            bad = ~_free(nxt, env.exact)
+            bad = ~_free(nxt, packed)
             if not bad.any():
                 break
             theta[bad] = rng.uniform(-np.pi, np.pi, bad.sum())

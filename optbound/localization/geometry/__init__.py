@@ -38,6 +38,7 @@ from optbound.localization.geometry.polygons import (
     point_in_polygon,
     polygon_inside,
     segment_pair_meets,
+    segments_meet_packed,
     segments_meet_polygons,
 )
 from optbound.localization.geometry.primitives import (
@@ -77,6 +78,7 @@ __all__ = [
     "polygon_inside",
     "segment_pair_meets",
     "segment_points",
+    "segments_meet_packed",
     "segments_meet_polygons",
     "side",
     "to_world",

@@ -302,6 +302,13 @@ def segment_pair_meets(b1, b2, verts, starts, bboxes) -> int:
     """
     res = 0
     for j in range(len(starts) - 1):
+        if (
+            max(b1[0, 1], b2[0, 1]) < bboxes[j, 0, 0]
+            or min(b1[0, 0], b2[0, 0]) > bboxes[j, 0, 1]
+            or max(b1[1, 1], b2[1, 1]) < bboxes[j, 1, 0]
+            or min(b1[1, 0], b2[1, 0]) > bboxes[j, 1, 1]
+        ):
+            continue
         r = _segments_meet_polygon(b1, b2, verts, starts[j], starts[j + 1], bboxes[j])
         if r == 2:
             return 2
@@ -373,8 +380,27 @@ def segments_meet_polygons(boxes1: np.ndarray, boxes2: np.ndarray, polygons: lis
     numpy.ndarray of int8, shape (m,)
         :class:`~optbound.interval.Tri` values [GLH12, eq. (5)].
     """
+    return segments_meet_packed(boxes1, boxes2, pack_polygons(polygons))
+
+
+def segments_meet_packed(boxes1: np.ndarray, boxes2: np.ndarray, packed) -> np.ndarray:
+    """:func:`segments_meet_polygons` with the polygons packed (:func:`pack_polygons`) once
+    by a caller that tests the same obstacles many times (e.g. a simulation, every step).
+
+    Parameters
+    ----------
+    boxes1, boxes2 : numpy.ndarray, shape (m, 2, 2)
+        Validated end-point boxes.
+    packed : tuple
+        ``(verts, starts, bboxes)`` of :func:`pack_polygons`.
+
+    Returns
+    -------
+    numpy.ndarray of int8, shape (m,)
+        As :func:`segments_meet_polygons`.
+    """
     out = np.zeros(len(boxes1), dtype=np.int8)
-    verts, starts, bboxes = pack_polygons(polygons)
+    verts, starts, bboxes = packed
     if len(starts) > 1 and len(out):
         _segments_meet_polygons(
             np.ascontiguousarray(boxes1), np.ascontiguousarray(boxes2), verts, starts, bboxes, out
@@ -441,5 +467,6 @@ __all__ = [
     "point_in_polygon",
     "polygon_inside",
     "segment_pair_meets",
+    "segments_meet_packed",
     "segments_meet_polygons",
 ]
