@@ -263,20 +263,15 @@ def _box_inside_polygon(b, verts, s, e, bb):
 def _segments_meet_polygon(b1, b2, verts, s, e, bb):
     """Does ``Seg([b1], [b2])`` meet the solid polygon? 2 every segment, 0 none, 1 unknown.
 
-    - 0 if the hull of the boxes misses the polygon's bounding box (exact comparisons), or if
-      ``intersect > 0`` on every edge (no segment touches the boundary, [GLH12, eq. (7)]) and
-      a corner of ``b1`` is certainly outside (so every segment is outside);
+    For boxes whose hull meets the polygon's bounding box (:func:`segment_pair_meets` tests
+    that first, for every polygon):
+
+    - 0 if ``intersect > 0`` on every edge (no segment touches the boundary, [GLH12, eq. (7)])
+      and a corner of ``b1`` is certainly outside (so every segment is outside);
     - 2 if ``intersect < 0`` on some edge (every segment crosses it, [GLH12, eq. (6)]), or if
       one of the boxes lies inside the polygon (every segment starts in the obstacle);
     - 1 otherwise.
     """
-    if (
-        max(b1[0, 1], b2[0, 1]) < bb[0, 0]
-        or min(b1[0, 0], b2[0, 0]) > bb[0, 1]
-        or max(b1[1, 1], b2[1, 1]) < bb[1, 0]
-        or min(b1[1, 0], b2[1, 0]) > bb[1, 1]
-    ):
-        return 0
     p1, p2 = _box(b1), _box(b2)
     clear = True
     for k in range(s, e):
@@ -299,6 +294,8 @@ def segment_pair_meets(b1, b2, verts, starts, bboxes) -> int:
     """Compiled: does some polygon meet ``Seg([b1], [b2])``? 2 every segment, 0 none, 1 unknown.
 
     For compiled loops (LUVIA); ``verts, starts, bboxes`` come from :func:`pack_polygons`.
+    A polygon whose bounding box the hull of the boxes misses (exact comparisons) meets no
+    segment; it is skipped here, before the call, which costs more than this test.
     """
     res = 0
     for j in range(len(starts) - 1):
