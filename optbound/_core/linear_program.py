@@ -110,7 +110,8 @@ def solve_lp(
     -------
     LPResult
         The solution if HiGHS finds it optimal; else ``optimal`` is False and ``status`` says
-        why.
+        why (HiGHS's model status, or non-finite data in ``c``, the rows or their right-hand
+        sides; bounds may be infinite).
     """
     c = np.asarray(c, dtype=float)
     n = c.shape[0]
@@ -122,16 +123,21 @@ def solve_lp(
     A = np.vstack([block for block, _ in blocks]) if blocks else np.zeros((0, n))
     n_ub = 0 if A_ub is None else blocks[0][0].shape[0]
     rhs = np.concatenate([b for _, b in blocks]) if blocks else np.zeros(0)
+    if not (np.isfinite(c).all() and np.isfinite(A).all() and np.isfinite(rhs).all()):
+        # HiGHS would reject some and silently read others (a NaN cost as a number).
+        return LPResult(False, "Non-finite problem data")
     lhs = rhs.copy()
     lhs[:n_ub] = -_INF
     starts, rows, values = _column_wise(A)
     h = _solver()
     h.setOptionValue("solver", "simplex" if dual_simplex else "choose")
-    h.passModel(
+    passed = h.passModel(
         n, A.shape[0], values.shape[0], 1, 1, 0.0,  # column-wise, minimise, no offset
         c, _bound(lower, n), _bound(upper, n), lhs, rhs,
         starts, rows, values, np.full(n, _CONTINUOUS, dtype=np.int32),
     )  # fmt: skip
+    if passed == highspy.HighsStatus.kError:
+        return LPResult(False, "Model rejected by HiGHS")
     h.run()
     status = h.getModelStatus()
     if status != highspy.HighsModelStatus.kOptimal:

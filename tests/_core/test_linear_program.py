@@ -67,6 +67,25 @@ def test_infeasible_problem_is_not_optimal_and_says_why():
     assert res.x is None and res.eq_duals is None
 
 
+@pytest.mark.parametrize(
+    "bad",
+    [
+        {"c": np.array([np.nan, 1.0])},
+        {"A_eq": np.array([[np.inf, 1.0]]), "b_eq": np.array([0.0])},
+        {"A_ub": np.ones((1, 2)), "b_ub": np.array([np.nan])},
+    ],
+)
+def test_non_finite_data_is_not_optimal_and_says_so(bad):
+    problem = {"c": np.ones(2), "lower": -1.0, "upper": 1.0} | bad
+    res = solve_lp(**problem)
+    assert not res.optimal and res.status == "Non-finite problem data" and res.x is None
+
+
+def test_a_model_highs_rejects_is_not_optimal_and_says_so():
+    res = solve_lp(np.ones(2), lower=np.array([np.nan, 0.0]), upper=1.0)  # a NaN bound
+    assert not res.optimal and res.status == "Model rejected by HiGHS" and res.x is None
+
+
 def test_dual_simplex_returns_a_basic_solution():
     """At most as many parameters off their bounds as there are rows (scipy's "highs-ds")."""
     for _, A, b in _problems(20, seed=2):
