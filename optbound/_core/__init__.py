@@ -13,8 +13,9 @@ checked by ``lint-imports`` with the contracts in ``pyproject.toml``, are ``_cor
   of the set protocol (written down in :mod:`optbound.sets.base`).
 - :mod:`~optbound._core.compiled_copy`: ``copy_into``, the array copy of compiled kernels
   (slice assignment would compile numba's string machinery for its error message).
-- :mod:`~optbound._core.linear_program`: ``solve_lp``, the float LPs of the zonotope types
-  and the estimators (HiGHS through highspy; callers certify what they return).
+- :mod:`~optbound._core.linear_program`: ``solve_lp`` and ``least_inf_norm``, the float LPs
+  of the zonotope types and the estimators (HiGHS through highspy; callers certify what they
+  return).
 - :mod:`~optbound._core.box`: ``Box`` and the validators of boxes (``as_box``, ``box_rows``)
   and of ``(m, n, 2)`` box arrays (``box_array``).
 

@@ -151,4 +151,32 @@ def solve_lp(
     )
 
 
-__all__ = ["LPResult", "solve_lp"]
+def least_inf_norm(M: np.ndarray, r: np.ndarray) -> LPResult:
+    """``min t`` subject to ``M xi = r``, ``|xi_j| <= t``: a least-infinity-norm solution.
+
+    Parameters
+    ----------
+    M : np.ndarray, shape (p, m)
+        Rows (``p`` may be 0).
+    r : np.ndarray, shape (p,)
+        Right-hand side.
+
+    Returns
+    -------
+    LPResult
+        ``x`` is ``(xi, t)``, shape (m + 1,); ``eq_duals`` the multipliers of ``M xi = r``
+        (a Farkas certificate candidate when the set ``|xi| <= 1`` misses the rows).
+    """
+    m = M.shape[1]
+    eye, ones = np.eye(m), np.ones((m, 1))
+    return solve_lp(
+        np.r_[np.zeros(m), 1.0],
+        A_ub=np.block([[eye, -ones], [-eye, -ones]]),
+        b_ub=np.zeros(2 * m),
+        A_eq=np.column_stack([M, np.zeros(M.shape[0])]),
+        b_eq=r,
+        lower=np.r_[np.full(m, -np.inf), 0.0],
+    )
+
+
+__all__ = ["LPResult", "least_inf_norm", "solve_lp"]

@@ -348,23 +348,12 @@ def proven_empty(A: np.ndarray, b: np.ndarray) -> bool:
     bool
         True if a Farkas certificate proves emptiness; False means not proven.
     """
-    from optbound._core.linear_program import solve_lp
+    from optbound._core.linear_program import least_inf_norm
 
     nc, m = A.shape
     if nc == 0:
         return False
-    cost = np.zeros(m + 1)
-    cost[-1] = 1.0
-    eye = np.eye(m)
-    A_ub = np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]])
-    res = solve_lp(
-        cost,
-        A_ub=A_ub,
-        b_ub=np.zeros(2 * m),
-        A_eq=np.column_stack([A, np.zeros(nc)]),
-        b_eq=b,
-        lower=np.r_[np.full(m, -np.inf), 0.0],
-    )
+    res = least_inf_norm(A, b)
     candidates = []
     if res.optimal:
         candidates.append(res.eq_duals)

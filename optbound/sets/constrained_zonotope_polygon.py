@@ -30,7 +30,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from optbound._core.linear_program import solve_lp
+from optbound._core.linear_program import least_inf_norm
 
 Point = tuple[Fraction, Fraction]
 #: Relative margin of the float box tests (module docstring).
@@ -296,14 +296,7 @@ def _inner(cz, xis: list[np.ndarray]) -> list[Point]:
     """
     m = cz.n_generators
     # xi_0: min t s.t. A xi = b, |xi_j| <= t (the least-infinity-norm solution).
-    res = solve_lp(
-        np.r_[np.zeros(m), 1.0],
-        A_ub=np.block([[np.eye(m), -np.ones((m, 1))], [-np.eye(m), -np.ones((m, 1))]]),
-        b_ub=np.zeros(2 * m),
-        A_eq=np.column_stack([cz.A, np.zeros(cz.n_constraints)]) if cz.n_constraints else None,
-        b_eq=cz.b if cz.n_constraints else None,
-        lower=np.r_[np.full(m, -np.inf), 0.0],
-    )
+    res = least_inf_norm(cz.A, cz.b)
     if not res.optimal:
         return []
     project = _projector(cz.A, cz.b)

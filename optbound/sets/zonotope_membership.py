@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound._core import box_array
-from optbound._core.linear_program import solve_lp
+from optbound._core.linear_program import least_inf_norm
 from optbound.interval import Interval
 from optbound.interval.tribool import from_masks
 from optbound.sets.certified import matmul, point
@@ -50,18 +50,7 @@ def min_norm_parameters(
     np.ndarray, shape (m + 1,), or None
         ``(xi, t)``, or None if the LP fails (e.g. infeasible).
     """
-    m = G.shape[1]
-    eye = np.eye(m)
-    cost = np.zeros(m + 1)
-    cost[-1] = 1.0
-    return solve_lp(
-        cost,
-        A_ub=np.block([[eye, -np.ones((m, 1))], [-eye, -np.ones((m, 1))]]),
-        b_ub=np.zeros(2 * m),
-        A_eq=np.column_stack([np.vstack([G, A]), np.zeros(G.shape[0] + A.shape[0])]),
-        b_eq=np.concatenate([x - c, b]),
-        lower=np.r_[np.full(m, -np.inf), 0.0],
-    ).x
+    return least_inf_norm(np.vstack([G, A]), np.concatenate([x - c, b])).x
 
 
 def lp_contains(
