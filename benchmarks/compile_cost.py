@@ -19,7 +19,10 @@ cold-cache warm-up (``optbound.bench.warmup``) and its pool of task workers, and
 of the run logs its compiles (``benchmarks/_compile_log/sitecustomize.py``, on the child's
 ``PYTHONPATH`` only). The report then gives the compile CPU per process, the dispatchers
 compiled in more than one process (the same work done twice), and the compiles left to the task
-workers and the parent (kernels no warm-up group covers).
+workers and the parent (kernels no warm-up group covers). It also measures, in another fresh
+process, numba's fixed cost of a compile whatever the code (set-up per process, a one-loop
+function with and without numba's wrappers) and prints the part of the run's compile CPU that
+fixed cost accounts for.
 
 Run: ``python -m benchmarks.compile_cost [--suite tiny|quick] [--jobs N]``.
 """
@@ -35,6 +38,8 @@ import sys
 import tempfile
 import time
 from collections import defaultdict
+
+import numpy as np
 
 from optbound.bench.target import numba_target
 
@@ -121,6 +126,69 @@ def measure_jobs(suite: str, jobs: int) -> dict:
     return {"events": events, "run_cpu": run_cpu, "run_wall": wall}
 
 
+def _loop():
+    """A new function object each call (numba compiles per function object): a loop over an
+    array, about the smallest thing a kernel is."""
+
+    def kernel(a, b):
+        s = 0.0
+        for k in range(a.shape[0]):
+            s += a[k] * b
+        return s
+
+    return kernel
+
+
+def _fixed(repeats: int) -> dict:
+    """numba's cost of compiling anything, here (run in a fresh process): the first compile's
+    extra CPU (numba's typing and LLVM set-up, paid once per process) and the median CPU of a
+    compile of :func:`_loop`'s function, with numba's Python and C wrappers (a kernel called
+    from Python) and without them (a callee compiled for another compiled function: numba's
+    own overloads, or ours with ``no_cpython_wrapper``), the latter as the median of a caller
+    and such a callee less the median of one function."""
+    from numba import njit
+
+    a = np.ones(3)
+
+    def compile_one() -> float:
+        start = _thread_cpu()
+        njit(_loop())(a, 2.0)
+        return _thread_cpu() - start
+
+    def compile_pair() -> float:
+        callee = njit(no_cpython_wrapper=True, no_cfunc_wrapper=True)(_loop())
+
+        def caller(a, b):
+            return callee(a, b) + 1.0
+
+        start = _thread_cpu()
+        njit(caller)(a, 2.0)
+        return _thread_cpu() - start
+
+    first = compile_one()
+    one = float(np.median([compile_one() for _ in range(repeats)]))
+    pair = float(np.median([compile_pair() for _ in range(repeats)]))
+    return {"setup": first - one, "with_wrappers": one, "without_wrappers": pair - one}
+
+
+def measure_fixed(repeats: int = 15) -> dict:
+    """:func:`_fixed` in a child process (a fresh numba)."""
+    code = f"import json, benchmarks.compile_cost as m; print(json.dumps(m._fixed({repeats})))"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def report_fixed(fixed: dict, processes: int, compiles: int, total: float) -> None:
+    """The part of a run's compile CPU that is numba's fixed cost, whatever the code."""
+    floor = processes * fixed["setup"] + compiles * fixed["without_wrappers"]
+    print(f"\nnumba's fixed cost, measured in a fresh process: {fixed['setup']:.2f} s to set up "
+          f"(once per process), {1e3 * fixed['with_wrappers']:.0f} ms per compile of a one-loop "
+          f"function called from Python, {1e3 * fixed['without_wrappers']:.0f} ms without "
+          f"numba's Python and C wrappers. For {processes} processes and {compiles} compiles "
+          f"that is at least {floor:.1f} s of the {total:.1f} s, whatever the kernels "
+          "hold.")  # fmt: skip
+
+
 def report_jobs(result: dict, suite: str, jobs: int, top: int) -> None:
     """Print the compile CPU per process and per module (the ``top`` largest), the duplicates
     and the compiles left to tasks."""
@@ -135,6 +203,8 @@ def report_jobs(result: dict, suite: str, jobs: int, top: int) -> None:
     print(f"bench --suite {suite} --jobs {jobs} with an empty numba cache: {total:.1f} s CPU "
           f"compiling in {len(procs)} processes ({len(events)} compiles); the whole run "
           f"{result['run_cpu']:.1f} s CPU, {result['run_wall']:.1f} s wall")  # fmt: skip
+    if "fixed" in result:
+        report_fixed(result["fixed"], len(procs), len(events), total)
     print("\n| process | role | compiles | compile CPU s |")
     print("|---|---|---|---|")
     for pid, p in sorted(procs.items(), key=lambda kv: -kv[1]["cpu"]):
@@ -184,7 +254,7 @@ def main(argv=None) -> None:
     args = parser.parse_args(argv)
     load = os.getloadavg()[0]
     if args.jobs > 1:
-        result = measure_jobs(args.suite, args.jobs)
+        result = {**measure_jobs(args.suite, args.jobs), "fixed": measure_fixed()}
         if args.json:
             with open(args.json, "w") as f:
                 json.dump(result, f, indent=1)
