@@ -1,5 +1,6 @@
 """``benchmarks.compile_cost``'s fixed-cost part: what it measures and the floor it prints."""
 
+import math
 import re
 
 from benchmarks import compile_cost
@@ -8,7 +9,8 @@ from benchmarks import compile_cost
 def test_fixed_cost_is_measured_per_process_and_per_compile():
     fixed = compile_cost._fixed(repeats=2)  # here: numba is already set up, setup may be ~0
     assert set(fixed) == {"setup", "with_wrappers", "without_wrappers"}
-    assert fixed["with_wrappers"] > 0.0 and fixed["without_wrappers"] > 0.0
+    assert all(math.isfinite(v) for v in fixed.values())
+    assert fixed["with_wrappers"] > 0.0  # a compile takes CPU; the rest are differences
 
 
 def test_floor_is_processes_times_setup_plus_compiles_times_the_cheapest(capsys):
