@@ -190,8 +190,9 @@ def report_fixed(fixed: dict, processes: int, compiles: int, total: float) -> No
 
 
 def report_jobs(result: dict, suite: str, jobs: int, top: int) -> None:
-    """Print the compile CPU per process and per module (the ``top`` largest), the duplicates
-    and the compiles left to tasks."""
+    """Print the compile CPU per process, numba's fixed part of it (``result["fixed"]``, from
+    :func:`measure_fixed`), per module (the ``top`` largest), the duplicates and the compiles
+    left to tasks."""
     events = result["events"]
     procs: dict = defaultdict(lambda: {"roles": set(), "cpu": 0.0, "n": 0})
     for e in events:
@@ -203,8 +204,7 @@ def report_jobs(result: dict, suite: str, jobs: int, top: int) -> None:
     print(f"bench --suite {suite} --jobs {jobs} with an empty numba cache: {total:.1f} s CPU "
           f"compiling in {len(procs)} processes ({len(events)} compiles); the whole run "
           f"{result['run_cpu']:.1f} s CPU, {result['run_wall']:.1f} s wall")  # fmt: skip
-    if "fixed" in result:
-        report_fixed(result["fixed"], len(procs), len(events), total)
+    report_fixed(result["fixed"], len(procs), len(events), total)
     print("\n| process | role | compiles | compile CPU s |")
     print("|---|---|---|---|")
     for pid, p in sorted(procs.items(), key=lambda kv: -kv[1]["cpu"]):
