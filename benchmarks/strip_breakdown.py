@@ -49,9 +49,9 @@ import time
 from functools import partial
 
 import numpy as np
-from numba import njit
 
 from optbound._core import MAG, check_ellipsoid
+from optbound._core.jit import njit
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
     W,

@@ -1,8 +1,6 @@
 """``python -m optbound`` is the ``optbound`` command (run from a source checkout's root, it
 also finds the families of the repository's ``benchmarks/`` folder)."""
 
-import sys
+from optbound.cli import run
 
-from optbound.cli import main
-
-sys.exit(main())
+run()

@@ -25,7 +25,7 @@ from numba.core import event
 ENV = "OPTBOUND_COMPILE_NOTICE"
 #: CPU seconds of a compile of every kernel ``optbound bench`` uses, rounded up, in all the
 #: run's processes, as measured by ``python -m benchmarks.compile_cost --suite quick --jobs 2``
-#: (47 s on the 2-core Intel Xeon test host at load 0.5-1.5, numba 0.68). With two or more
+#: (44-47 s on the 2-core Intel Xeon test host at load 0.0-1.5, numba 0.68). With two or more
 #: workers the warm-up (``optbound.bench.warmup``) splits it over two processes, so the first
 #: run waits about half of it longer than later runs (``python -m benchmarks.first_run``).
 COMPILE_CPU_SECONDS = 50

@@ -483,7 +483,15 @@ def run() -> None:
     temporary markers removed), Python's teardown of its modules (numba's and LLVM's, cvxpy's,
     matplotlib's objects) only frees memory that the operating system frees anyway, and takes
     about half a second the user would wait for; the process exits without it.
+
+    numba's error messages are plain text in the command's processes (set before numba is
+    imported, inherited by the workers): typing a kernel, numba tries the overload templates of
+    each operation in turn and formats, with terminal highlighting, the error of every template
+    that does not match (about 87 000 in the analytic kernels' compile alone); plain text
+    costs less (with ``optbound._core.jit``'s kernels without C wrappers, 1.9 s less compile
+    CPU in a first ``bench``: issue 23, ``benchmarks/compile_cost.md``).
     """
+    os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
     code = main()
     atexit._run_exitfuncs()  # what sys.exit would run, before the skipped teardown
     sys.stdout.flush()

@@ -4,6 +4,7 @@ The tiny suite runs the same families through the same code path as quick, only 
 """
 
 import json
+import os
 import subprocess
 import sys
 
@@ -231,6 +232,22 @@ def test_help_and_argument_errors_import_no_family_numba_scipy_or_cvxpy(argv):
         "assert not loaded, loaded\n"
     )
     subprocess.run([sys.executable, "-c", code], check=True, stdout=subprocess.DEVNULL)
+
+
+def test_the_command_makes_numba_errors_plain_text_before_numba_is_imported():
+    """``run`` (the console script) sets numba's switch before any import of numba, so that it
+    holds in the command's process and in the workers it starts (issue 23: compile CPU)."""
+    code = (
+        "import os, sys\n"
+        "from optbound import cli\n"
+        "switch = 'NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING'\n"
+        "cli.main = lambda: print(os.environ.get(switch), 'numba' in sys.modules) or 0\n"
+        "cli.run()\n"
+    )
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING"}
+    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["1", "False"]
 
 
 def test_every_registered_name_is_its_family_name():

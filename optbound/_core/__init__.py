@@ -11,6 +11,8 @@ checked by ``lint-imports`` with the contracts in ``pyproject.toml``, are ``_cor
   condition limits) and its compiled check ``check_ellipsoid`` / ``raise_for``.
 - :mod:`~optbound._core.convex`: ``ConvexSet`` and ``QuadraticDescription``, the required part
   of the set protocol (written down in :mod:`optbound.sets.base`).
+- :mod:`~optbound._core.jit`: ``njit``, numba's decorator with the options every kernel
+  shares (no C-callable wrapper, which no kernel uses and which cost compile time).
 - :mod:`~optbound._core.compiled_copy`: ``copy_into``, the array copy of compiled kernels
   (slice assignment would compile numba's string machinery for its error message).
 - :mod:`~optbound._core.linear_program`: ``solve_lp`` and ``least_inf_norm``, the float LPs

@@ -10,7 +10,8 @@ of ours can trigger. A loop over the elements compiles to the same copy without 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from optbound._core.jit import njit
 
 
 @njit(cache=True)

@@ -18,7 +18,8 @@ and 10 inside), so a recursion never leaves the domain.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from optbound._core.jit import njit
 
 MAG = 1e60
 MAX_DIAG, MIN_PIVOT = 1e120, 1e-120  # MAG^2 and 1 / MAG^2, as exact literals

@@ -17,9 +17,10 @@ from pathlib import Path
 from types import FunctionType
 
 import numpy as np
-from numba import njit, prange
+from numba import prange
 
 from optbound import _jit_cache
+from optbound._core.jit import njit
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_block, load_matrices

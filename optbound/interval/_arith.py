@@ -11,8 +11,9 @@ bounds ``(+inf, -inf)`` there.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, vectorize
+from numba import vectorize
 
+from optbound._core.jit import njit
 from optbound.interval._rounding import (
     TRANSCENDENTAL_ULPS,
     down,

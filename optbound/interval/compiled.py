@@ -19,8 +19,8 @@ LLVM inlines the calls anyway, so the machine code runs at the same speed.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from optbound._core.jit import njit
 from optbound.interval._rounding import _CAP, _EPS, _TINY, BASIC_ULPS
 
 _MAX = _CAP[BASIC_ULPS]

@@ -24,8 +24,8 @@ from __future__ import annotations
 from itertools import repeat
 
 import numpy as np
-from numba import njit
 
+from optbound._core.jit import njit
 from optbound.interval import Interval
 from optbound.interval.compiled import iadd, idiv, imul, isqr, isqrt, isub
 from optbound.interval.sivia import FALSE, TRUE, UNKNOWN

@@ -36,9 +36,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from optbound._core import validate as v
+from optbound._core.jit import njit
 from optbound.interval import Interval, Paving, Tri, atan2, intersection, pave, sqrt
 from optbound.sets import Box, Ellipsoid
 

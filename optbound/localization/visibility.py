@@ -15,10 +15,10 @@ contracts towards, the yardstick of how much a step could contract.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core import box_array, real_array
 from optbound._core.compiled_copy import copy_into
+from optbound._core.jit import njit
 from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.interval.compiled import iadd
 from optbound.localization.environment import Environment

@@ -17,9 +17,9 @@ quarter of this module's compile time (issue 23).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core import check_ellipsoid
+from optbound._core.jit import njit
 
 EPS = np.finfo(float).eps
 

@@ -29,8 +29,8 @@ by ``certify_points``), and its volume is within a factor ``(1 + tol)^{d/2}`` of
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from optbound._core.jit import njit
 from optbound.optimal.certify import certify_points
 from optbound.sets import Ellipsoid
 

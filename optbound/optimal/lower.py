@@ -70,10 +70,10 @@ from collections.abc import Callable, Sequence
 from math import lgamma, log, pi
 
 import numpy as np
-from numba import njit
 
 from optbound._core import validate as v
 from optbound._core.compiled_copy import copy_into
+from optbound._core.jit import njit
 from optbound.optimal.certify import EPS
 from optbound.optimal.enclosing import validated_points
 from optbound.optimal.khachiyan import _quad, core_set, covariance, khachiyan_weights

@@ -9,7 +9,8 @@ matrices here are the Cholesky factors of set shapes
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from optbound._core.jit import njit
 
 
 @njit(cache=True)

@@ -22,9 +22,9 @@ bearing measurements", IEEE Transactions on Robotics and Automation, 2004.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core import validate as v
+from optbound._core.jit import njit
 from optbound.sets._triangular import lower_inverse
 from optbound.sets.base import ConvexSet, EmptySetError, QuadraticDescription
 from optbound.sets.ellipsoid import Ellipsoid

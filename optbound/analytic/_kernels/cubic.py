@@ -18,7 +18,8 @@ is below ``IMAG_RTOL`` relative counts as one real candidate (a double root in r
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+
+from optbound._core.jit import njit
 
 # Leading coefficients below this (relative to the largest one) are dropped.
 LEAD_RTOL = 1e-10

@@ -20,7 +20,6 @@ negative as far as numba knows, and every such access then carries wraparound co
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core.domain import (
     ASYMMETRIC,
@@ -37,6 +36,7 @@ from optbound._core.domain import (
     SHAPE_RANGE,
     SYMMETRY_RTOL,
 )
+from optbound._core.jit import njit
 from optbound.analytic._kernels.midrad import (
     RADIUS_SAFETY,
     TINY,

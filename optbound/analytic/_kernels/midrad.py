@@ -27,10 +27,11 @@ operations underestimates by at most a factor (1 - U)^k, covered by ``RADIUS_SAF
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, types
+from numba import types
 from numba.extending import intrinsic
 
 from optbound._core import COND_OUT, MAG, MAX_DIAG, RATIO_OUT, cholesky
+from optbound._core.jit import njit
 
 U = 2.0**-53  # unit roundoff of binary64
 TINY = 1e-300  # absolute slack for the (harmless) underflow of radii terms

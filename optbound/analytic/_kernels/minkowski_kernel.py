@@ -42,8 +42,8 @@ The ``size_xy_psi`` p is the best root of the cubic [HS96, eqs. (15)-(17)]
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from optbound._core.jit import njit
 from optbound.analytic._kernels.cubic import real_roots
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,

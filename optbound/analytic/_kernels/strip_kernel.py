@@ -24,9 +24,9 @@ local frame of the ellipsoid's centre c:
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core import MAG, MAX_DIAG, check_ellipsoid
+from optbound._core.jit import njit
 from optbound.analytic._kernels import threads
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,

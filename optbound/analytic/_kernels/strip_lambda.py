@@ -14,9 +14,9 @@ itself) or any other stationary point.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from optbound._core import cholesky
+from optbound._core.jit import njit
 from optbound.analytic._kernels.cubic import real_roots
 
 

@@ -14,9 +14,9 @@ from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
-from numba import njit
 
 from optbound._core import real_array
+from optbound._core.jit import njit
 from optbound.interval.compiled import imul, isub
 from optbound.localization.geometry.primitives import intersect, side
 

@@ -1,0 +1,59 @@
+"""``optbound._core.jit.njit``: numba's ``njit`` without the C-callable wrapper, for all kernels."""
+
+import importlib
+
+import numpy as np
+import pytest
+from numba.core.registry import CPUDispatcher
+
+from optbound import _jit_cache
+from optbound._core.jit import njit
+
+
+def test_passes_numba_options_and_drops_the_cfunc_wrapper():
+    @njit(error_model="numpy")
+    def halve(x):
+        return x / 0.0
+
+    assert halve.targetoptions["no_cfunc_wrapper"] is True
+    assert halve.targetoptions["error_model"] == "numpy"
+    assert halve(1.0) == np.inf  # the numpy error model: no ZeroDivisionError
+
+
+def test_a_kernel_without_the_wrapper_is_still_called_from_python_and_from_kernels():
+    @njit()
+    def square(x):
+        return x * x
+
+    @njit()
+    def sum_squares(a):
+        total = 0.0
+        for v in a:
+            total += square(v)
+        return total
+
+    assert square(3.0) == 9.0
+    assert sum_squares(np.array([1.0, 2.0, 3.0])) == 14.0
+
+
+def test_no_cfunc_wrapper_is_not_for_callers():
+    with pytest.raises(TypeError, match="no_cfunc_wrapper"):
+        njit(no_cfunc_wrapper=False)
+
+
+def _module_name(path):
+    relative = path.relative_to(_jit_cache.ROOT.parent).with_suffix("")
+    return ".".join(relative.parts)
+
+
+def test_every_kernel_of_the_package_is_declared_with_it():
+    kernels = {}
+    for path in _jit_cache.kernel_sources():
+        module = importlib.import_module(_module_name(path))
+        kernels.update(
+            {f"{module.__name__}.{name}": obj for name, obj in vars(module).items()
+             if isinstance(obj, CPUDispatcher) and obj.__module__ == module.__name__}
+        )  # fmt: skip
+    assert len(kernels) > 100  # the scan found the package's kernels
+    plain = [name for name, k in kernels.items() if not k.targetoptions.get("no_cfunc_wrapper")]
+    assert plain == []
