@@ -386,12 +386,13 @@ def test_bench_into_a_pipe_writes_no_cursor_movements(piped_run):
 
 def test_printed_wall_time_is_the_commands_own(piped_run):
     """From process start (imports, compiling) to the report, not only the tasks; what it
-    misses is the interpreter's exit after the last line (~1-3 s with cvxpy and numba loaded)."""
+    misses is the process's exit after the last line (``cli.run`` skips the interpreter's
+    teardown), so the printed time, rounded to 0.1 s, is at most half a tenth above the outer."""
     import re
 
     run, outer, out = piped_run
     printed = float(re.search(r"wall time ([0-9.]+) s since the command started", run.stdout)[1])
-    assert 0.7 * outer < printed <= outer
+    assert 0.7 * outer < printed <= outer + 0.05
     header = (out / "report.md").read_text().split("\n\n")[1]
     meta = load_results(out)["meta"]
     assert meta["wall_time_s"] < meta["since_start_s"] <= printed
