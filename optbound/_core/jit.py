@@ -1,7 +1,8 @@
 """``njit``: numba's ``njit`` with the options every optbound kernel shares.
 
-Every compiled kernel of optbound (and of ``benchmarks/``) is declared with this decorator, so
-that what numba builds next to each kernel is decided once:
+Every compiled kernel of optbound and of the benchmarks' own kernels is declared with this
+decorator, so that what numba builds next to each kernel is decided once (only
+``benchmarks/compile_cost.py`` uses numba's ``njit`` directly: it measures numba's defaults):
 
 - numba compiles, beside a kernel's machine code, a C-callable wrapper that lets the kernel be
   passed around as a first-class function value (``numba.cfunc``-style). No optbound kernel is
