@@ -51,16 +51,21 @@ def test_a_self_refreshing_module_checks_its_caches_before_compiling(source):
     assert text.index("_jit_cache.refresh(") < text.index("njit(")
 
 
+def kernel_modules() -> list[str]:
+    """Dotted names of the package's modules that define kernels (``kernel_sources``)."""
+    return [
+        ".".join(("optbound", *p.relative_to(_jit_cache.ROOT).with_suffix("").parts))
+        for p in _jit_cache.kernel_sources()
+        if p.name != "_jit_cache.py"  # it names njit in its text and defines no kernel
+    ]
+
+
 @pytest.mark.parametrize("package", _jit_cache.KERNEL_PACKAGES)
 def test_the_check_runs_before_any_kernel_of_the_package_is_loaded(package):
     """Importing a kernel subpackage runs ``optbound._fresh`` (which runs ``refresh``) to
     completion before any module that defines kernels, those of other packages included
     (``sys.modules`` is in order of completed imports)."""
-    kernels = [
-        ".".join(("optbound", *p.relative_to(_jit_cache.ROOT).with_suffix("").parts))
-        for p in _jit_cache.kernel_sources()
-        if p.name != "_jit_cache.py"  # it names njit in its text and defines no kernel
-    ]
+    kernels = kernel_modules()
     own = [k for k in kernels if k.startswith(f"optbound.{package}.")]
     code = (
         "import importlib, sys\n"

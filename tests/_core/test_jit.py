@@ -6,18 +6,18 @@ import numpy as np
 import pytest
 from numba.core.registry import CPUDispatcher
 
-from optbound import _jit_cache
 from optbound._core.jit import njit
+from tests.test_jit_cache import kernel_modules
 
 
 def test_passes_numba_options_and_drops_the_cfunc_wrapper():
     @njit(error_model="numpy")
-    def halve(x):
+    def divide_by_zero(x):
         return x / 0.0
 
-    assert halve.targetoptions["no_cfunc_wrapper"] is True
-    assert halve.targetoptions["error_model"] == "numpy"
-    assert halve(1.0) == np.inf  # the numpy error model: no ZeroDivisionError
+    assert divide_by_zero.targetoptions["no_cfunc_wrapper"] is True
+    assert divide_by_zero.targetoptions["error_model"] == "numpy"
+    assert divide_by_zero(1.0) == np.inf  # the numpy error model: no ZeroDivisionError
 
 
 def test_a_kernel_without_the_wrapper_is_still_called_from_python_and_from_kernels():
@@ -41,15 +41,10 @@ def test_no_cfunc_wrapper_is_not_for_callers():
         njit(no_cfunc_wrapper=False)
 
 
-def _module_name(path):
-    relative = path.relative_to(_jit_cache.ROOT.parent).with_suffix("")
-    return ".".join(relative.parts)
-
-
 def test_every_kernel_of_the_package_is_declared_with_it():
     kernels = {}
-    for path in _jit_cache.kernel_sources():
-        module = importlib.import_module(_module_name(path))
+    for name in kernel_modules():
+        module = importlib.import_module(name)
         kernels.update(
             {f"{module.__name__}.{name}": obj for name, obj in vars(module).items()
              if isinstance(obj, CPUDispatcher) and obj.__module__ == module.__name__}
