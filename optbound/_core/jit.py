@@ -7,7 +7,7 @@ decorator, so that what numba builds next to each kernel is decided once (only
 - numba compiles, beside a kernel's machine code, a C-callable wrapper that lets the kernel be
   passed around as a first-class function value (``numba.cfunc``-style). No optbound kernel is
   used that way: compiled callers call each other directly or by address
-  (``optbound.analytic._kernels.native_call``), and Python calls go through the Python
+  (``optbound._core.native_call``), and Python calls go through the Python
   wrapper. Skipping it (``no_cfunc_wrapper=True``) changes no machine code of the kernels and,
   with the plain-text numba errors of ``optbound.cli.run``, takes 1.9 s off the 47 s of
   compile CPU of a first ``optbound bench`` (issue 23; ``benchmarks/compile_cost.md``).

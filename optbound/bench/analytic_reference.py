@@ -21,6 +21,7 @@ from numba import prange
 
 from optbound import _jit_cache
 from optbound._core.jit import njit
+from optbound._core.native_call import address, caller
 from optbound.analytic import reference
 from optbound.analytic._kernels import strip_kernel, threads
 from optbound.analytic._kernels.lanes import W, cholesky_block, load_matrices
@@ -30,7 +31,6 @@ from optbound.analytic._kernels.minkowski_kernel import (
     call_p_volume,
     thread_work,
 )
-from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.threads import ellipsoid_outputs, run_sliced
 
 # Cached on disk (each bench run would otherwise compile them again: seconds of CPU), with the

@@ -19,6 +19,7 @@ import numpy as np
 from optbound._core import box_array, real_array
 from optbound._core.compiled_copy import copy_into
 from optbound._core.jit import njit
+from optbound._core.native_call import address, caller
 from optbound.interval import Interval, Paving, Tri, pave, tri_not
 from optbound.interval.compiled import iadd
 from optbound.localization.environment import Environment
@@ -203,17 +204,34 @@ def _luvia_kernel(i, y, boxes, inner, outer, eps, max_depth, hull) -> None:
                     hull[k, 1] = max(hull[k, 1], box[k, 1])
 
 
+_call_luvia = caller(_luvia_kernel)
+
+
 @njit(cache=True)
-def _sweep_kernel(y, cur, inner, outer, eps, max_depth) -> int:
+def _sweep_kernel(y, cur, inner, outer, eps, max_depth, luvia) -> int:
     """One team sweep of :func:`track`: LUVIA for robot 0, 1, ... in turn, each box replaced
-    in ``cur`` by its hull as soon as it is found; -1, or the first robot refuted."""
+    in ``cur`` by its hull as soon as it is found; -1, or the first robot refuted.
+
+    ``luvia`` is the address of :func:`_luvia_kernel` (:func:`_sweep_address`): called by
+    address, the search is not linked into the sweep, where LLVM would optimize and emit it
+    and its predicates again (``_core.native_call``)."""
     hull = np.empty((2, 2))
     for i in range(len(cur)):
-        _luvia_kernel(i, y[i], cur, inner, outer, eps, max_depth, hull)
+        _call_luvia(luvia, (i, y[i], cur, inner, outer, eps, max_depth, hull))
         if hull[0, 0] > hull[0, 1]:
             return i
         copy_into(cur[i], hull)
     return -1
+
+
+def _sweep_address(env: Environment) -> int:
+    """The address of :func:`_luvia_kernel` compiled for the types of :func:`_sweep_kernel`'s
+    call: a row of a C-ordered bool array, C-ordered float boxes, ``env``'s packed obstacles,
+    a float eps and an int depth (the values do not matter, only their types)."""
+    rows, boxes, hull = np.zeros((1, 1), dtype=np.bool_), np.empty((1, 2, 2)), np.empty((2, 2))
+    return address(
+        _luvia_kernel, 0, rows[0], boxes, env.packed_inner, env.packed_outer, 0.0, 0, hull
+    )
 
 
 def _luvia(i: int, y: np.ndarray, boxes: np.ndarray, env: Environment, eps: float, max_depth: int):
@@ -452,7 +470,7 @@ def track(
     if th.ndim != 2 or th.shape[1] != m:
         raise ValueError(f"headings must have shape (K, {m}), got {th.shape}")
     steps = len(th)
-    vis = np.asarray(visibility)
+    vis = np.ascontiguousarray(visibility)  # C order: the type the sweep's search is compiled for
     if vis.dtype != np.bool_:
         raise TypeError(f"visibility must be booleans, got dtype {vis.dtype}")
     if vis.shape != (steps, m, m):
@@ -465,6 +483,7 @@ def track(
         raise ValueError(f"headings must be ({steps}, {m}) finite readings")
     dx, dy = _displacements(dist, th, _check_heading_error(heading_error))
     inner, outer = env.packed_inner, env.packed_outer
+    luvia = _sweep_address(env) if m > 1 else 0
     out = np.empty((steps + 1, m, 2, 2))
     out[0] = b
     for k in range(steps):
@@ -476,7 +495,7 @@ def track(
                 raise ValueError(f"step {k}: a robot's box misses region")
         for _ in range(passes if m > 1 else 0):
             before = cur.copy()
-            refuted = _sweep_kernel(vis[k], cur, inner, outer, eps, max_depth)
+            refuted = _sweep_kernel(vis[k], cur, inner, outer, eps, max_depth, luvia)
             if refuted >= 0:
                 raise ValueError(f"step {k}: every position of robot {refuted} is refuted")
             if np.array_equal(before, cur):

@@ -177,6 +177,17 @@ def test_track_keeps_the_truth_in_every_box(n_robots, n_obstacles, seed):
     assert np.all(area <= area_alone) and area.sum() < area_alone.sum()
 
 
+def test_track_takes_visibility_in_any_memory_order():
+    """The sweep calls LUVIA by address, compiled for C-ordered rows: a visibility array in
+    another memory order (here Fortran order) gives the same boxes."""
+    run = arena.simulate(4, 3, 10, 3)
+    common = (run.distance, run.headings, arena.HEADING_ERROR)
+    boxes = v.track(run.boxes0, *common, run.visibility, run.env, 0.01)
+    fortran = np.asfortranarray(run.visibility)
+    assert not fortran.flags.c_contiguous
+    assert np.array_equal(v.track(run.boxes0, *common, fortran, run.env, 0.01), boxes)
+
+
 def test_track_rejects_bad_input():
     run = arena.simulate(3, 2, 2, 0)
     args = (run.distance, run.headings, arena.HEADING_ERROR, run.visibility, run.env, 0.01)

@@ -9,8 +9,9 @@ what makes them fast and certified in floating point:
 - ``strip_kernel``, ``strip_lambda``, ``cubic``: ellipsoid ∩ strip [HS96, eqs. (24)-(30)];
 - ``minkowski_kernel``: the Schweppe family [HS96, eq. (14)] and its volume-optimal p;
 - ``midrad``: midpoint-radius arithmetic and the certified outward margin;
-- ``threads``: a batch sliced over the cores;
-- ``native_call``: calls of a compiled step by its address, without linking it in.
+- ``threads``: a batch sliced over the cores.
+
+Heavy steps are called by address (``optbound._core.native_call``), without linking them in.
 
 ``analytic._exact`` (the bounding update in exact rationals) is not here: it is the formula
 evaluated without rounding, not an acceleration.
@@ -44,7 +45,7 @@ it from Python as a batch of one. A compiled function calling another links the 
 code into its own and LLVM optimizes and emits it again: every compiled wrapper around the
 lane loop nests costs seconds of compile time on the first run, for nothing at run time. So
 the heavy steps called once per block (the strip's steps, ``lanes.check_ellipsoids``, the
-Minkowski p solver and ``lanes.inflate_lanes``) are called by address (``native_call``):
+Minkowski p solver and ``lanes.inflate_lanes``) are called by address (``_core.native_call``):
 each is compiled once, in its own library, and linked into no caller; their addresses come
 with the work space (``entry_points``). A step called by address takes the work space's
 arrays only, never the caller's inputs, whose types vary (read-only or not): one compiled

@@ -44,6 +44,7 @@ from __future__ import annotations
 import numpy as np
 
 from optbound._core.jit import njit
+from optbound._core.native_call import address, caller
 from optbound.analytic._kernels.cubic import real_roots
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
@@ -58,7 +59,6 @@ from optbound.analytic._kernels.lanes import (
     store_vectors,
 )
 from optbound.analytic._kernels.midrad import U, mr_add, mr_div, mr_mul
-from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.threads import workspace
 
 P_VOLUME, P_TRACE, P_GIVEN, P_XY_PSI = range(4)

@@ -27,6 +27,7 @@ import numpy as np
 
 from optbound._core import MAG, MAX_DIAG, check_ellipsoid
 from optbound._core.jit import njit
+from optbound._core.native_call import address, caller
 from optbound.analytic._kernels import threads
 from optbound.analytic._kernels.lanes import (
     CHECK_ROWS,
@@ -50,7 +51,6 @@ from optbound.analytic._kernels.midrad import (
     segment_scale,
     segment_term,
 )
-from optbound.analytic._kernels.native_call import address, caller
 from optbound.analytic._kernels.strip_lambda import lam_projection, lam_trace, lam_volume
 
 NO_REDUCTION, CONSISTENT, PARTIAL, INCONSISTENT = range(4)

@@ -4,8 +4,9 @@ When a compiled function calls another, numba links the callee's LLVM module int
 and LLVM optimizes and emits the callee's code again there (and again in every other caller):
 the lane loop nests of a heavy step cost their compile time once per caller. A call through an
 address does not link anything: the callee is compiled once, in its own library, and each
-caller holds only an indirect call. For a step called once per block of W lanes, the call
-costs nothing measurable at run time.
+caller holds only an indirect call. For a step called once per block of W lanes (the analytic
+kernels' steps) or a search called once per robot (the tracker's LUVIA), the call costs
+nothing measurable at run time.
 
 The address is a run-time value (never a constant of the caller's code, so that numba's
 on-disk cache stays valid across processes): :func:`address` compiles (or loads from the

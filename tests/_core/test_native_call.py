@@ -1,11 +1,11 @@
-"""Calls of a compiled step by its address (``analytic._kernels.native_call``)."""
+"""Calls of a compiled step by its address (``optbound._core.native_call``)."""
 
 import numpy as np
 import pytest
 from numba import njit
 from numba.core.errors import TypingError
 
-from optbound.analytic._kernels.native_call import address, caller
+from optbound._core.native_call import address, caller
 
 
 @njit
