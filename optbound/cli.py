@@ -487,9 +487,8 @@ def run() -> None:
     numba's error messages are plain text in the command's processes (set before numba is
     imported, inherited by the workers): typing a kernel, numba tries the overload templates of
     each operation in turn and formats, with terminal highlighting, the error of every template
-    that does not match (about 87 000 in the analytic kernels' compile alone); plain text
-    costs less (with ``optbound._core.jit``'s kernels without C wrappers, 1.9 s less compile
-    CPU in a first ``bench``: issue 23, ``benchmarks/compile_cost.md``).
+    that does not match (tens of thousands in the analytic kernels' compile); plain text
+    costs less (issue 23; measured in ``benchmarks/compile_cost.md``).
     """
     os.environ.setdefault("NUMBA_DISABLE_ERROR_MESSAGE_HIGHLIGHTING", "1")
     code = main()

@@ -8,9 +8,9 @@ decorator, so that what numba builds next to each kernel is decided once (only
   passed around as a first-class function value (``numba.cfunc``-style). No optbound kernel is
   used that way: compiled callers call each other directly or by address
   (``optbound._core.native_call``), and Python calls go through the Python
-  wrapper. Skipping it (``no_cfunc_wrapper=True``) changes no machine code of the kernels and,
-  with the plain-text numba errors of ``optbound.cli.run``, takes 1.9 s off the 47 s of
-  compile CPU of a first ``optbound bench`` (issue 23; ``benchmarks/compile_cost.md``).
+  wrapper. Skipping it (``no_cfunc_wrapper=True``) changes no machine code of the kernels and
+  shortens the compile of a first ``optbound bench`` (issue 23; the measurement is in
+  ``benchmarks/compile_cost.md``, the history in the CHANGELOG).
 
 The keyword arguments are numba's (``cache``, ``error_model``, ``inline``, ``_nrt``, ...).
 """

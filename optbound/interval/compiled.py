@@ -14,8 +14,8 @@ Every function here, the one-line helpers ``fmin`` ... ``up1`` included, is a co
 function that kernels call, not inlined by numba: numba inlines a callee by copying its IR into
 every call site and typing it there again, which made the sonar kernel's compile ~4 times
 longer, and the helpers' branches, copied into each operation, half of ``idiv``'s. LLVM inlines
-the calls anyway (no call is left in the kernels' machine code), so they run as fast: the sonar
-and tracker scripts within 3 % (``benchmarks/compile_cost.md``, eighth pass).
+the calls anyway (no call is left in the kernels' machine code), so the kernels run as fast
+(measured in ``benchmarks/compile_cost.md``).
 """
 
 from __future__ import annotations
